@@ -1,0 +1,9 @@
+"""contact: the impact of a ball on a flat plate (H-DD model) and closed-form contact mechanics.
+
+Knows nothing of meshes or wear. SI units throughout; angles in degrees from the plate normal.
+"""
+
+from .materials import Material, effective_modulus, effective_shear_modulus
+from .theory import yield_velocity
+
+__all__ = ["Material", "effective_modulus", "effective_shear_modulus", "yield_velocity"]

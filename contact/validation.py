@@ -1,0 +1,138 @@
+"""Input checks shared by the whole toolkit.
+
+Every public entry point validates its inputs with these helpers, so that a bad value fails
+early with one line that names the parameter, repeats the value it got and states the valid
+range with its SI unit, e.g.::
+
+    ValueError: E=210.0 is out of range: Young's modulus must be in [1e+05, 1e+13] Pa (give Pa, not GPa)
+
+`fem` and `wear` import from here too (the import direction contact <- fem <- wear allows it).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from typing import Any
+
+import numpy as np
+
+__all__ = ["check_number", "check_choice", "check_array", "check_bool", "fmt_value"]
+
+
+def fmt_value(value: Any) -> str:
+    """Short, unambiguous text of a value for an error message."""
+    if isinstance(value, str):
+        return repr(value)
+    if isinstance(value, float):
+        return f"{value:.6g}"
+    return repr(value)
+
+
+def _interval(low: float | None, high: float | None, low_open: bool, high_open: bool) -> str:
+    if low is not None and high is not None:
+        return f"in {'(' if low_open else '['}{low:g}, {high:g}{')' if high_open else ']'}"
+    if low is not None:
+        return f"{'>' if low_open else '>='} {low:g}"
+    if high is not None:
+        return f"{'<' if high_open else '<='} {high:g}"
+    return "finite"
+
+
+def check_number(
+    name: str,
+    value: Any,
+    *,
+    low: float | None = None,
+    high: float | None = None,
+    low_open: bool = False,
+    high_open: bool = False,
+    units: str = "",
+    what: str = "",
+    allow_inf: bool = False,
+    hint: str = "",
+) -> float:
+    """Return ``value`` as a float, or raise ``ValueError`` naming ``name``.
+
+    ``low``/``high`` bound the valid range (closed unless ``low_open``/``high_open``);
+    ``units`` is the SI unit shown in the message; ``what`` says what the quantity is;
+    ``hint`` is appended (e.g. "give Pa, not GPa"). NaN is always rejected; +inf only
+    with ``allow_inf`` (a rigid body's modulus).
+    """
+    label = f"{what} " if what else ""
+    unit = f" {units}" if units else ""
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+        raise ValueError(f"{name}={fmt_value(value)} is not a number: {label}must be a number{unit}")
+    x = float(value)
+    rng = _interval(low, high, low_open, high_open)
+    tail = f" ({hint})" if hint else ""
+    if math.isnan(x) or (math.isinf(x) and not (allow_inf and x > 0)):
+        raise ValueError(f"{name}={fmt_value(x)} is not finite: {label}must be {rng}{unit}{tail}")
+    if math.isinf(x):
+        return x
+    bad = (
+        (low is not None and (x < low or (low_open and x == low)))
+        or (high is not None and (x > high or (high_open and x == high)))
+    )
+    if bad:
+        raise ValueError(f"{name}={fmt_value(x)} is out of range: {label}must be {rng}{unit}{tail}")
+    return x
+
+
+def check_choice(name: str, value: Any, choices: Iterable[str]) -> str:
+    """Return ``value`` if it is one of ``choices``, else raise ``ValueError`` naming ``name``."""
+    options = tuple(choices)
+    if not isinstance(value, str) or value not in options:
+        listed = ", ".join(repr(c) for c in options)
+        raise ValueError(f"{name}={fmt_value(value)} is not a valid choice: must be one of {listed}")
+    return value
+
+
+def check_bool(name: str, value: Any) -> bool:
+    """Return ``value`` if it is a bool, else raise ``ValueError`` naming ``name``."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise ValueError(f"{name}={fmt_value(value)} is not a boolean: must be true or false")
+    return bool(value)
+
+
+def check_array(
+    name: str,
+    values: Any,
+    *,
+    low: float | None = None,
+    high: float | None = None,
+    low_open: bool = False,
+    units: str = "",
+    what: str = "",
+    ndim: int = 1,
+    min_size: int = 1,
+) -> np.ndarray:
+    """Return ``values`` as a float array of dimension ``ndim`` with every entry checked.
+
+    The message names the parameter, the first offending index and its value.
+    """
+    try:
+        arr = np.asarray(values, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} is not an array of numbers: {what or 'values'} in {units or 'SI units'}") from None
+    if arr.ndim == 0 and ndim == 1:
+        arr = arr.reshape(1)
+    if arr.ndim != ndim:
+        raise ValueError(f"{name} has {arr.ndim} dimension(s): must have {ndim}")
+    if arr.size < min_size:
+        raise ValueError(f"{name} has {arr.size} entries: must have at least {min_size}")
+    flat = arr.ravel()
+    bad = ~np.isfinite(flat)
+    if low is not None:
+        bad |= (flat <= low) if low_open else (flat < low)
+    if high is not None:
+        bad |= flat > high
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        rng = _interval(low, high, low_open, False)
+        unit = f" {units}" if units else ""
+        label = f"{what} " if what else ""
+        raise ValueError(
+            f"{name}[{i}]={fmt_value(float(flat[i]))} is out of range: {label}must be finite and {rng}{unit}"
+        )
+    return arr

@@ -1,0 +1,57 @@
+"""The ``impactwear`` command line.
+
+Each subcommand lives in its own module ``wear.app.cmd_<name>`` exposing ``HELP`` (one line),
+``configure(parser)`` and ``main(args) -> int``. Bad input (``ValueError``) is reported as one
+line naming the parameter, with exit status 2 and no traceback.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+#: Subcommands in the order ``--help`` lists them.
+COMMANDS = ("impact",)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="impactwear",
+        description="Impact, plate and wear of a ball hitting a flat plate (SI units; angles in degrees "
+        "from the plate normal).",
+    )
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        ver = version("impactwear")
+    except PackageNotFoundError:
+        ver = "unknown"
+    parser.add_argument("--version", action="version", version=f"impactwear {ver}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    for name in COMMANDS:
+        module = importlib.import_module(f"wear.app.cmd_{name}")
+        p = sub.add_parser(name, help=module.HELP, description=module.HELP)
+        module.configure(p)
+        p.set_defaults(_module=module)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    if getattr(args, "_module", None) is None:
+        parser.print_help()
+        return 2
+    try:
+        return int(args._module.main(args) or 0)
+    except ValueError as exc:
+        print(f"impactwear {args.command}: error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print(f"impactwear {args.command}: interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())
