@@ -4,6 +4,7 @@ Knows nothing of meshes or wear. SI units throughout; angles in degrees from the
 """
 
 from .materials import Material, effective_modulus, effective_shear_modulus
+from .tabulated import TabulatedLaw
 from .theory import yield_velocity
 
-__all__ = ["Material", "effective_modulus", "effective_shear_modulus", "yield_velocity"]
+__all__ = ["Material", "TabulatedLaw", "effective_modulus", "effective_shear_modulus", "yield_velocity"]

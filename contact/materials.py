@@ -43,12 +43,24 @@ class Material:
 
     def __post_init__(self) -> None:
         E = check_number(
-            "E", self.E, low=E_RANGE[0], high=E_RANGE[1], units="Pa", what="Young's modulus",
-            allow_inf=True, hint="give Pa, not GPa: steel is 210e9",
+            "E",
+            self.E,
+            low=E_RANGE[0],
+            high=E_RANGE[1],
+            units="Pa",
+            what="Young's modulus",
+            allow_inf=True,
+            hint="give Pa, not GPa: steel is 210e9",
         )
         nu = check_number("nu", self.nu, low=0.0, high=0.5, high_open=True, what="Poisson's ratio")
         density = check_number(
-            "density", self.density, low=0.0, low_open=True, high=1e5, units="kg/m^3", what="density",
+            "density",
+            self.density,
+            low=0.0,
+            low_open=True,
+            high=1e5,
+            units="kg/m^3",
+            what="density",
             allow_inf=math.isinf(E),
         )
         object.__setattr__(self, "E", E)
@@ -56,8 +68,13 @@ class Material:
         object.__setattr__(self, "density", density)
         if self.yield_strength is not None:
             Y = check_number(
-                "yield_strength", self.yield_strength, low=1e3, high=1e11, units="Pa",
-                what="yield strength", hint="give Pa, not MPa: mild steel is 250e6",
+                "yield_strength",
+                self.yield_strength,
+                low=1e3,
+                high=1e11,
+                units="Pa",
+                what="yield strength",
+                hint="give Pa, not MPa: mild steel is 250e6",
             )
             object.__setattr__(self, "yield_strength", Y)
         if not isinstance(self.name, str):

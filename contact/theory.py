@@ -214,15 +214,12 @@ def default_limiting_pressure(ball: Material, plate: Material) -> float:
     candidates = [yield_coefficient(m.nu) * m.yield_strength for m in (ball, plate) if m.yield_strength]
     if not candidates:
         raise ValueError(
-            "yield_strength=None for both ball and plate: give one a yield strength (Pa) "
-            "or pass limiting_pressure (Pa)"
+            "yield_strength=None for both ball and plate: give one a yield strength (Pa) or pass limiting_pressure (Pa)"
         )
     return min(candidates)
 
 
-def yield_velocity(
-    radius: float, ball: Material, plate: Material, limiting_pressure: float | None = None
-) -> float:
+def yield_velocity(radius: float, ball: Material, plate: Material, limiting_pressure: float | None = None) -> float:
     r"""Thornton's (1997) normal impact speed V_y (m/s) at which yield starts:
 
     .. math:: V_y = \sqrt{\frac{\pi^5}{30}\,\frac{R^3}{m}\,\frac{p_y^5}{E^{*4}}}

@@ -70,9 +70,8 @@ def check_number(
         raise ValueError(f"{name}={fmt_value(x)} is not finite: {label}must be {rng}{unit}{tail}")
     if math.isinf(x):
         return x
-    bad = (
-        (low is not None and (x < low or (low_open and x == low)))
-        or (high is not None and (x > high or (high_open and x == high)))
+    bad = (low is not None and (x < low or (low_open and x == low))) or (
+        high is not None and (x > high or (high_open and x == high))
     )
     if bad:
         raise ValueError(f"{name}={fmt_value(x)} is out of range: {label}must be {rng}{unit}{tail}")

@@ -1,7 +1,7 @@
 """The ``impactwear`` command line.
 
-Each subcommand lives in its own module ``wear.app.cmd_<name>`` exposing ``HELP`` (one line),
-``configure(parser)`` and ``main(args) -> int``. Bad input (``ValueError``) is reported as one
+Each subcommand lives in its own module ``wear.app.cmd_<name>`` (found automatically) exposing
+``HELP`` (one line), ``configure(parser)`` and ``main(args) -> int``. Bad input (``ValueError``) is reported as one
 line naming the parameter, with exit status 2 and no traceback.
 """
 
@@ -9,10 +9,15 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import pkgutil
 import sys
 
-#: Subcommands in the order ``--help`` lists them.
-COMMANDS = ("impact",)
+
+def _commands() -> list[str]:
+    """Names of the subcommands: every module ``wear/app/cmd_<name>.py``."""
+    import wear.app
+
+    return sorted(m.name[4:] for m in pkgutil.iter_modules(wear.app.__path__) if m.name.startswith("cmd_"))
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -29,7 +34,7 @@ def build_parser() -> argparse.ArgumentParser:
         ver = "unknown"
     parser.add_argument("--version", action="version", version=f"impactwear {ver}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
-    for name in COMMANDS:
+    for name in _commands():
         module = importlib.import_module(f"wear.app.cmd_{name}")
         p = sub.add_parser(name, help=module.HELP, description=module.HELP)
         module.configure(p)
