@@ -1,0 +1,1 @@
+"""Matplotlib figures and pyvista renders, one module per stage (SI units on every axis)."""
