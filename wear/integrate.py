@@ -1,0 +1,348 @@
+r"""Integration of the wear law (errata Eq. 15) over one impact on a 2-D grid of the plate surface.
+
+.. math:: w(x, y) = \int K\,p\big(\sqrt{(x - x_c(t))^2 + y^2},\,t\big)^{\alpha}\,v(t)^{\beta}\,dt
+
+x runs along the impact direction on the plate, y across it; x_c(t) is the contact centre
+(``PressureHistory.contact_x``). The time axis is the union of the pressure and speed samples, each
+interval cut into sub-steps so that the patch moves less than a quarter cell per sub-step; the
+integral is the trapezoidal rule over those sub-steps, with p interpolated linearly in time at fixed
+(x, y) and v linearly in time. The grid spacing is 2 a_max / ``points_across`` (a_max the largest
+loaded radius), ≥ 40 points across the largest contact diameter; the grid covers the whole scar.
+
+Accuracy (measured in tests/test_wear_integrate.py): the worn volume of any impact with α = 1, β = 0
+equals K × normal impulse within 0.1% at the default 64 points across; a steady Hertz track matches the
+closed form within 0.5% of its depth.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numba
+import numpy as np
+
+from contact.validation import check_number
+
+from .law import WearLaw
+from .pressure import PressureHistory, SlidingSpeed
+
+__all__ = [
+    "WearMap",
+    "SubSteps",
+    "surface_grid",
+    "wear_substeps",
+    "integrate_wear",
+    "integrate_wear_numpy",
+    "integrate_volume",
+    "axisymmetric_wear_depth",
+    "scar_extent",
+    "MIN_POINTS_ACROSS",
+]
+
+#: Smallest accepted number of grid points across the largest contact diameter.
+MIN_POINTS_ACROSS = 40
+DEFAULT_POINTS_ACROSS = 64
+#: Largest patch motion per sub-step, in grid cells.
+MAX_CELL_FRACTION = 0.25
+
+
+@dataclass(frozen=True, eq=False)
+class WearMap:
+    """Wear depth over the plate surface after an impact (SI units).
+
+    Attributes
+    ----------
+    x : (nx,) array, m
+        Uniform grid along the impact direction (same frame as ``contact_x``).
+    y : (ny,) array, m
+        Uniform grid across the impact direction, symmetric about 0 (y = 0 is a grid line).
+    depth : (ny, nx) array, m
+        Worn depth, positive into the plate.
+    volume_m3 : float
+        Worn volume ∫ w dA (m³), see :func:`integrate_volume`.
+    mass_kg : float
+        Worn mass = plate density × volume (kg).
+    max_depth_m : float
+        Largest depth (m).
+    scar_length_m, scar_width_m : float
+        Extent of the scar along x and across (y) where the depth exceeds ``scar_threshold`` × max depth (m),
+        see :func:`scar_extent`.
+    density : float
+        Plate density used for the mass (kg/m³).
+    """
+
+    x: np.ndarray
+    y: np.ndarray
+    depth: np.ndarray
+    volume_m3: float
+    mass_kg: float
+    max_depth_m: float
+    scar_length_m: float
+    scar_width_m: float
+    density: float
+
+    @property
+    def spacing(self) -> float:
+        """Grid spacing (m), equal in x and y."""
+        return float(self.x[1] - self.x[0])
+
+    def centreline(self) -> np.ndarray:
+        """Depth (m) along y = 0, shape (nx,)."""
+        return self.depth[int(np.argmin(np.abs(self.y)))]
+
+
+@dataclass(frozen=True, eq=False)
+class SubSteps:
+    """The time quadrature of one impact: per sub-step the contact centre ``contact_x`` (m), the pressure
+    sample ``step`` and time weight ``fraction`` (p = (1−f)·p[step] + f·p[step+1]), and ``weight`` = trapezoid
+    Δt × K v^β (units of K × s × (m/s)^β, so that weight × p^α is a depth in m)."""
+
+    contact_x: np.ndarray
+    step: np.ndarray
+    fraction: np.ndarray
+    weight: np.ndarray
+
+
+def surface_grid(
+    pressure: PressureHistory, points_across: int = DEFAULT_POINTS_ACROSS
+) -> tuple[np.ndarray, np.ndarray]:
+    """Grid (x, y) in m covering the whole scar of ``pressure``: spacing 2 a_max/``points_across``.
+
+    x starts on the first contact centre (so a normal impact is centred on a node) and spans
+    [min x_c − a_max, max x_c + a_max] plus two cells; y is symmetric about 0 with the same spacing.
+    """
+    n_across = int(check_number("points_across", points_across, low=MIN_POINTS_ACROSS, high=4096))
+    a_max = pressure.max_extent
+    if a_max <= 0.0:
+        raise ValueError("pressure has no contact (all extents are 0 m): nothing to integrate")
+    dx = 2.0 * a_max / n_across
+    x0 = float(pressure.contact_x[0])
+    lo = float(pressure.contact_x.min()) - a_max
+    hi = float(pressure.contact_x.max()) + a_max
+    i_lo = math.floor((lo - x0) / dx) - 2
+    i_hi = math.ceil((hi - x0) / dx) + 2
+    x = x0 + dx * np.arange(i_lo, i_hi + 1)
+    half = math.ceil(a_max / dx) + 2
+    y = dx * np.arange(-half, half + 1)
+    return x, y
+
+
+def wear_substeps(
+    pressure: PressureHistory,
+    speed: SlidingSpeed,
+    law: WearLaw,
+    spacing: float,
+    cell_fraction: float = MAX_CELL_FRACTION,
+) -> SubSteps:
+    """Sub-steps of the time integral for a grid of ``spacing`` (m); drops sub-steps that cannot wear."""
+    spacing = check_number("spacing", spacing, low=0.0, low_open=True, units="m")
+    tp = pressure.time
+    nodes = np.union1d(tp, speed.time[(speed.time > tp[0]) & (speed.time < tp[-1])])
+    xc = np.interp(nodes, tp, pressure.contact_x)
+    pieces = np.maximum(np.ceil(np.abs(np.diff(xc)) / (cell_fraction * spacing)), 1).astype(np.int64)
+    # sub-step times: each interval [t_k, t_k+1] cut into pieces[k] equal parts
+    starts = np.repeat(nodes[:-1], pieces)
+    widths = np.repeat(np.diff(nodes) / pieces, pieces)
+    offsets = np.arange(starts.size) - np.repeat(np.cumsum(pieces) - pieces, pieces)
+    tau = np.append(starts + offsets * widths, nodes[-1])
+    dt = np.diff(tau)
+    trap = np.zeros_like(tau)
+    trap[:-1] += 0.5 * dt
+    trap[1:] += 0.5 * dt
+    v = np.interp(tau, speed.time, speed.speed, left=0.0, right=0.0)
+    weight = trap * law.K * v**law.beta
+    step = np.clip(np.searchsorted(tp, tau, side="right") - 1, 0, tp.size - 2)
+    fraction = np.clip((tau - tp[step]) / (tp[step + 1] - tp[step]), 0.0, 1.0)
+    loaded = (pressure.extent[step] > 0.0) | (pressure.extent[step + 1] > 0.0)
+    keep = (weight > 0.0) & loaded
+    return SubSteps(
+        contact_x=np.ascontiguousarray(np.interp(tau, tp, pressure.contact_x)[keep]),
+        step=np.ascontiguousarray(step[keep]),
+        fraction=np.ascontiguousarray(fraction[keep]),
+        weight=np.ascontiguousarray(weight[keep]),
+    )
+
+
+@numba.njit(cache=True, inline="always")
+def _lookup(table, step, q, last):
+    # linear interpolation of table[step] at s = √q, q = 1 − r²/extent² ∈ (0, 1]
+    u = math.sqrt(q) * last
+    k = min(int(u), last - 1)
+    f = u - k
+    return table[step, k] * (1.0 - f) + table[step, k + 1] * f
+
+
+@numba.njit(cache=True, parallel=True, fastmath=True)
+def _accumulate(depth, x0, dx, y, sub_x, sub_step, sub_frac, sub_weight, extent, table, alpha):
+    ny, nx = depth.shape
+    last = table.shape[1] - 1
+    unit_alpha = alpha == 1.0
+    for j in numba.prange(ny):
+        y2 = y[j] * y[j]
+        row = depth[j]
+        for s in range(sub_x.size):
+            i0 = sub_step[s]
+            a0 = extent[i0]
+            a1 = extent[i0 + 1]
+            reach = max(a0, a1)
+            if y2 >= reach * reach:
+                continue
+            half = math.sqrt(reach * reach - y2)
+            xc = sub_x[s]
+            lo = max(0, int(math.ceil((xc - half - x0) / dx)))
+            hi = min(nx - 1, int(math.floor((xc + half - x0) / dx)))
+            w1 = sub_frac[s]
+            w0 = 1.0 - w1
+            inv0 = 1.0 / (a0 * a0) if a0 > 0.0 else 0.0
+            inv1 = 1.0 / (a1 * a1) if a1 > 0.0 else 0.0
+            weight = sub_weight[s]
+            for i in range(lo, hi + 1):
+                d = x0 + i * dx - xc
+                r2 = d * d + y2
+                p = 0.0
+                q0 = 1.0 - r2 * inv0
+                if q0 > 0.0 and a0 > 0.0:
+                    p += w0 * _lookup(table, i0, q0, last)
+                q1 = 1.0 - r2 * inv1
+                if q1 > 0.0 and a1 > 0.0:
+                    p += w1 * _lookup(table, i0 + 1, q1, last)
+                if p > 0.0:
+                    row[i] += weight * (p if unit_alpha else p**alpha)
+
+
+def _accumulate_numpy(depth, x0, dx, y, sub, extent, table, alpha):
+    """Plain numpy version of :func:`_accumulate` (same algorithm, one sub-step at a time): the reference."""
+    nx = depth.shape[1]
+    last = table.shape[1] - 1
+    x = x0 + dx * np.arange(nx)
+    for xc, i0, w1, weight in zip(sub.contact_x, sub.step, sub.fraction, sub.weight, strict=True):
+        reach = max(extent[i0], extent[i0 + 1])
+        lo = max(0, math.ceil((xc - reach - x0) / dx))
+        hi = min(nx - 1, math.floor((xc + reach - x0) / dx))
+        rows = np.flatnonzero(np.abs(y) < reach)
+        r = np.hypot(x[lo : hi + 1][None, :] - xc, y[rows][:, None])
+        p = np.zeros_like(r)
+        for step, w in ((i0, 1.0 - w1), (i0 + 1, w1)):
+            a = extent[step]
+            if a > 0.0:
+                inside = r < a
+                s = np.sqrt(1.0 - (r[inside] / a) ** 2)
+                p[inside] += w * np.interp(s, np.linspace(0.0, 1.0, last + 1), table[step])
+        if rows.size:
+            depth[rows[0] : rows[-1] + 1, lo : hi + 1] += weight * np.where(p > 0.0, p**alpha, 0.0)
+
+
+def integrate_volume(x, y, depth) -> float:
+    """Volume (m³) under ``depth`` (m, shape (ny, nx)) on the uniform grid ``x``, ``y`` (m): the trapezoidal
+    rule, which equals Σ w Δx Δy here because the depth vanishes on the grid border."""
+    return float(np.trapezoid(np.trapezoid(depth, x, axis=1), y))
+
+
+def scar_extent(coordinate, profile, threshold: float) -> float:
+    """Length (m) of the region where ``profile`` exceeds ``threshold``, edges interpolated linearly."""
+    above = np.flatnonzero(profile > threshold)
+    if above.size == 0:
+        return 0.0
+    first, last = above[0], above[-1]
+    c, p = coordinate, profile
+
+    def crossing(i_out, i_in):
+        if i_out < 0 or i_out >= p.size:
+            return c[i_in]
+        return c[i_out] + (threshold - p[i_out]) / (p[i_in] - p[i_out]) * (c[i_in] - c[i_out])
+
+    return float(crossing(last + 1, last) - crossing(first - 1, first))
+
+
+def _finish(x, y, depth, density, scar_threshold) -> WearMap:
+    max_depth = float(depth.max()) if depth.size else 0.0
+    thr = scar_threshold * max_depth
+    volume = integrate_volume(x, y, depth)
+    return WearMap(
+        x=x,
+        y=y,
+        depth=depth,
+        volume_m3=volume,
+        mass_kg=density * volume,
+        max_depth_m=max_depth,
+        scar_length_m=scar_extent(x, depth.max(axis=0), thr) if max_depth > 0.0 else 0.0,
+        scar_width_m=scar_extent(y, depth.max(axis=1), thr) if max_depth > 0.0 else 0.0,
+        density=density,
+    )
+
+
+def integrate_wear(
+    pressure: PressureHistory,
+    speed: SlidingSpeed,
+    law: WearLaw,
+    *,
+    density: float,
+    points_across: int = DEFAULT_POINTS_ACROSS,
+    on: WearMap | None = None,
+    scar_threshold: float = 0.01,
+    engine: str = "numba",
+) -> WearMap:
+    """Wear depth map of one impact (Eq. 15 integrated over the moving contact patch).
+
+    ``pressure``: p(r, t) about the contact centre (:func:`wear.pressure_history`); ``speed``: the sliding
+    speed (:func:`wear.sliding_speed`); ``law``: :class:`WearLaw`; ``density``: plate density (kg/m³) for
+    the worn mass; ``points_across``: grid points across the largest contact diameter (≥ 40).
+    ``on``: a previous :class:`WearMap` to add this impact to, on its grid (no geometry update: the
+    pressure is not changed by the wear). ``scar_threshold``: fraction of the max depth that bounds the
+    scar for its length and width. ``engine``: ``"numba"`` (parallel kernel) or ``"numpy"`` (reference).
+    """
+    density = check_number("density", density, low=0.0, low_open=True, high=1e5, units="kg/m^3", what="plate density")
+    scar_threshold = check_number("scar_threshold", scar_threshold, low=0.0, high=1.0, low_open=True, high_open=True)
+    if engine not in ("numba", "numpy"):
+        raise ValueError(f"engine={engine!r} is not a valid choice: must be one of 'numba', 'numpy'")
+    if on is None:
+        x, y = surface_grid(pressure, points_across)
+        depth = np.zeros((y.size, x.size))
+    else:
+        x, y, depth = on.x, on.y, on.depth.copy()
+        reach = pressure.max_extent
+        if pressure.contact_x.min() - reach < x[0] or pressure.contact_x.max() + reach > x[-1] or reach > y[-1]:
+            raise ValueError(
+                f"on= grid x in [{x[0]:.6g}, {x[-1]:.6g}] m, |y| <= {y[-1]:.6g} m does not cover this impact's "
+                f"contact (centre in [{pressure.contact_x.min():.6g}, {pressure.contact_x.max():.6g}] m, "
+                f"radius {reach:.6g} m)"
+            )
+    dx = float(x[1] - x[0])
+    sub = wear_substeps(pressure, speed, law, dx)
+    if sub.weight.size:
+        if engine == "numba":
+            _accumulate(
+                depth, float(x[0]), dx, y, sub.contact_x, sub.step, sub.fraction, sub.weight,
+                pressure.extent, pressure.pressure, float(law.alpha),
+            )  # fmt: skip
+        else:
+            _accumulate_numpy(depth, float(x[0]), dx, y, sub, pressure.extent, pressure.pressure, law.alpha)
+    return _finish(x, y, depth, density, scar_threshold)
+
+
+def integrate_wear_numpy(pressure: PressureHistory, speed: SlidingSpeed, law: WearLaw, **kwargs) -> WearMap:
+    """:func:`integrate_wear` with the plain numpy engine (the benchmark's reference)."""
+    return integrate_wear(pressure, speed, law, engine="numpy", **kwargs)
+
+
+def axisymmetric_wear_depth(pressure: PressureHistory, speed: SlidingSpeed, law: WearLaw, r) -> np.ndarray:
+    """Wear depth h(r) (m) of a normal impact at radii ``r`` (m) from the contact centre.
+
+    The same time quadrature as :func:`integrate_wear` evaluated on a radial line (for moving the FE surface
+    nodes). Raises ``ValueError`` if the contact centre moves by more than 1% of the largest contact radius.
+    """
+    r = np.abs(np.asarray(r, dtype=float))
+    reach = pressure.max_extent
+    travel = float(np.ptp(pressure.contact_x))
+    if travel > 0.01 * reach:
+        raise ValueError(
+            f"contact_x moves by {travel:.6g} m (> 1% of the contact radius {reach:.6g} m): "
+            "the axisymmetric wear profile needs a normal impact; use integrate_wear"
+        )
+    sub = wear_substeps(pressure, speed, law, max(reach, 1e-300))
+    h = np.zeros_like(r)
+    for i0, w1, weight in zip(sub.step, sub.fraction, sub.weight, strict=True):
+        p = (1.0 - w1) * pressure.at(i0, r) + w1 * pressure.at(i0 + 1, r)
+        h += weight * np.where(p > 0.0, p**law.alpha, 0.0)
+    return h
