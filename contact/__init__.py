@@ -3,8 +3,21 @@
 Knows nothing of meshes or wear. SI units throughout; angles in degrees from the plate normal.
 """
 
+from .impact import simulate_impact, simulate_impacts
 from .materials import Material, effective_modulus, effective_shear_modulus
+from .results import BatchResult, History, ImpactResult
 from .tabulated import TabulatedLaw
 from .theory import yield_velocity
 
-__all__ = ["Material", "TabulatedLaw", "effective_modulus", "effective_shear_modulus", "yield_velocity"]
+__all__ = [
+    "BatchResult",
+    "History",
+    "ImpactResult",
+    "Material",
+    "TabulatedLaw",
+    "effective_modulus",
+    "effective_shear_modulus",
+    "simulate_impact",
+    "simulate_impacts",
+    "yield_velocity",
+]

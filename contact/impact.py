@@ -1,0 +1,303 @@
+r"""Oblique impact of an elastic ball on a flat plate: :func:`simulate_impact` and :func:`simulate_impacts`.
+
+The H-DD model (errata Eqs. 3–9): Hertz normal force with an optional restitution dashpot (Eq. 6), or
+Thornton's (1997) elastic–perfectly plastic law, or a tabulated law from a finite-element plate; Di Renzo &
+Di Maio's integral tangential spring with Coulomb truncation; ball rotation with I = 2/5 m R². The plate is
+fixed and flat. SI units; angles in degrees from the plate normal.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from . import engine, laws, theory
+from .materials import Material, effective_modulus, effective_shear_modulus
+from .results import BatchResult, History, ImpactResult
+from .tabulated import TabulatedLaw
+from .validation import check_array, check_bool, check_choice, check_number
+
+__all__ = ["simulate_impact", "simulate_impacts", "NORMAL_MODELS", "TANGENTIAL_MODELS", "SCHEMES"]
+
+NORMAL_MODELS = {"hertz": laws.HERTZ, "thornton": laws.THORNTON, "tabulated": laws.TABULATED}
+TANGENTIAL_MODELS = {"hdd": 2.0 / 3.0, "mindlin": 1.0}
+SCHEMES = {"verlet": engine.VERLET, "paper": engine.PAPER}
+
+#: Default number of steps per Hertz contact time t_c (time step t_c/2000, the issue's default).
+STEPS_PER_CONTACT = 2000
+#: Safety stop: an impact may take at most this many default Hertz contact times (plastic contacts last longer).
+MAX_CONTACT_TIMES = 200.0
+
+
+def _check_material(name: str, value) -> Material:
+    if not isinstance(value, Material):
+        raise ValueError(
+            f"{name}={value!r} is not a contact.Material: build it with Material(E=..., nu=..., density=...)"
+        )
+    return value
+
+
+def _setup(radius, ball, plate, restitution, normal_model, tangential_model, limiting_pressure, force_law, scheme):
+    """Validated scalar inputs and the kernel parameter vector."""
+    radius = check_number("radius", radius, low=0.0, low_open=True, high=10.0, units="m", what="ball radius")
+    ball = _check_material("ball", ball)
+    plate = _check_material("plate", plate)
+    if math.isinf(ball.density):
+        raise ValueError("ball.density=inf: the ball needs a finite density (kg/m^3); only the plate may be rigid")
+    restitution = check_number(
+        "restitution", restitution, low=0.0, low_open=True, high=1.0, what="normal restitution coefficient"
+    )
+    model = check_choice("normal_model", normal_model, NORMAL_MODELS)
+    check_choice("tangential_model", tangential_model, TANGENTIAL_MODELS)
+    check_choice("scheme", scheme, SCHEMES)
+    if model != "hertz" and restitution != 1.0:
+        raise ValueError(
+            f"restitution={restitution:g} is not allowed with normal_model={model!r}: the dashpot is calibrated for "
+            "the Hertz law only; that law dissipates through plasticity (use restitution=1.0)"
+        )
+    if model != "thornton" and limiting_pressure is not None:
+        raise ValueError(f"limiting_pressure={limiting_pressure!r} is used only by normal_model='thornton'")
+    if model == "tabulated":
+        if not isinstance(force_law, TabulatedLaw):
+            raise ValueError(
+                f"force_law={force_law!r} is not a contact.TabulatedLaw: normal_model='tabulated' needs one"
+            )
+    elif force_law is not None:
+        raise ValueError("force_law is used only by normal_model='tabulated'")
+    e_star = effective_modulus(ball, plate)
+    g_star = effective_shear_modulus(ball, plate)
+    mass = theory.sphere_mass(radius, ball.density)
+    prm = np.zeros(laws.N_PARAMS)
+    prm[laws.P_RADIUS] = radius
+    prm[laws.P_HERTZ_K] = 4.0 / 3.0 * e_star * math.sqrt(radius)
+    prm[laws.P_ESTAR] = e_star
+    prm[laws.P_GSTAR] = g_star
+    prm[laws.P_MASS] = mass
+    prm[laws.P_INERTIA] = 0.4 * mass * radius**2
+    prm[laws.P_DAMP] = laws.dashpot_coefficient(restitution) * math.sqrt(2.0 * e_star * math.sqrt(radius) * mass)
+    p_y = None
+    if model == "thornton":
+        if limiting_pressure is None:
+            p_y = theory.default_limiting_pressure(ball, plate)
+        else:
+            p_y = check_number(
+                "limiting_pressure", limiting_pressure, low=1e3, high=1e12, units="Pa", what="limiting pressure"
+            )
+        d_y = (math.pi * p_y / (2.0 * e_star)) ** 2 * radius
+        prm[laws.P_PY] = p_y
+        prm[laws.P_DY] = d_y
+        prm[laws.P_FY] = prm[laws.P_HERTZ_K] * d_y**1.5
+    tab = laws.tabulated_arrays(force_law if model == "tabulated" else None)
+    return radius, ball, plate, restitution, model, e_star, mass, p_y, prm, tab
+
+
+_ERRORS = {
+    laws.ERR_LOADING_TABLE: "the overlap went beyond the loading curve of force_law (loading_overlap[-1]={load:.4g} m)",
+    laws.ERR_UNLOADING_TABLE: "unloading started beyond the last unloading curve of force_law "
+    "(unloading_max_overlap[-1]={unload:.4g} m)",
+    laws.ERR_MAX_STEPS: "the contact did not end within {steps} steps",
+}
+
+
+def simulate_impacts(
+    radius: float,
+    ball: Material,
+    plate: Material,
+    speed,
+    angle,
+    friction,
+    restitution: float = 1.0,
+    normal_model: str = "hertz",
+    tangential_model: str = "hdd",
+    limiting_pressure: float | None = None,
+    force_law: TabulatedLaw | None = None,
+    scheme: str = "verlet",
+    time_step: float | None = None,
+    histories: bool = False,
+    history_every: int = 1,
+) -> BatchResult:
+    r"""Simulate many impacts of the same ball on the same plate in one batched (numba, parallel) run.
+
+    Parameters
+    ----------
+    radius : ball radius R (m), in (0, 10].
+    ball, plate : :class:`contact.Material` (the plate may be ``Material.rigid()``).
+    speed : impact speed |v| (m/s), in (0, 1000]; scalar or array.
+    angle : impact angle θ from the plate normal (deg), in [0, 90); scalar or array.
+    friction : Coulomb friction coefficient μ, in [0, 10]; scalar or array.
+        ``speed``, ``angle`` and ``friction`` are broadcast together to the batch shape (flattened).
+    restitution : normal restitution e in (0, 1] that sets the Hertz dashpot (errata Eq. 6); 1 = no damping.
+    normal_model : ``"hertz"``, ``"thornton"`` (with ``limiting_pressure`` p_y in Pa, default C(ν)·Y of the body
+        that yields first) or ``"tabulated"`` (with ``force_law``, a :class:`contact.TabulatedLaw`).
+    tangential_model : ``"hdd"`` (F_t = −(2/3)·8G*a·ξ) or ``"mindlin"`` (without the 2/3).
+    scheme : ``"verlet"`` (second order, default) or ``"paper"`` (the paper's Eqs. 12–13, first order).
+    time_step : Δt (s); default: the Hertz contact time of each impact's normal speed / 2000.
+    histories : record a :class:`History` per impact; ``history_every`` k keeps every k-th step (and the last).
+
+    The tabulated law is not extrapolated: if an impact loads beyond ``force_law.loading_overlap[-1]`` or
+    starts unloading beyond ``force_law.unloading_max_overlap[-1]``, a ValueError names ``force_law``.
+    """
+    radius, ball, plate, restitution, model, e_star, mass, p_y, prm, tab = _setup(
+        radius, ball, plate, restitution, normal_model, tangential_model, limiting_pressure, force_law, scheme
+    )
+    speed = check_array("speed", speed, low=0.0, low_open=True, units="m/s", what="impact speed", ndim=np.ndim(speed))
+    if np.any(speed > 1000.0):
+        raise ValueError(f"speed={float(speed.max()):g} is out of range: impact speed must be in (0, 1000] m/s")
+    angle = check_array("angle", angle, low=0.0, units="deg", what="impact angle from the normal", ndim=np.ndim(angle))
+    if np.any(angle >= 90.0):
+        bad = float(angle[angle >= 90.0].flat[0])
+        raise ValueError(f"angle={bad:g} is out of range: impact angle from the normal must be in [0, 90) deg")
+    friction = check_array("friction", friction, low=0.0, what="friction coefficient", ndim=np.ndim(friction))
+    if np.any(friction > 10.0):
+        raise ValueError(f"friction={float(friction.max()):g} is out of range: friction coefficient must be in [0, 10]")
+    check_bool("histories", histories)
+    if isinstance(history_every, bool) or not isinstance(history_every, (int, np.integer)) or history_every < 1:
+        raise ValueError(f"history_every={history_every!r} is out of range: must be an integer >= 1 (steps)")
+    try:
+        speed, angle, friction = (
+            np.ascontiguousarray(np.ravel(a)) for a in np.broadcast_arrays(speed, angle, friction)
+        )
+    except ValueError:
+        raise ValueError(
+            f"speed, angle, friction have shapes {np.shape(speed)}, {np.shape(angle)}, {np.shape(friction)}: "
+            "they must broadcast together"
+        ) from None
+    theta = np.radians(angle)
+    vn0 = speed * np.cos(theta)
+    vt0 = speed * np.sin(theta)
+    if np.any(vn0 < 1e-9 * speed):
+        raise ValueError("angle is too close to 90 deg: the normal speed vanishes")
+    contact_time = (
+        theory.HERTZ_CONTACT_TIME_FACTOR * (15.0 * mass / (16.0 * e_star * math.sqrt(radius))) ** 0.4 * vn0**-0.2
+    )
+    if time_step is None:
+        dt = contact_time / STEPS_PER_CONTACT
+    else:
+        step = check_number("time_step", time_step, low=0.0, low_open=True, high=1.0, units="s", what="time step")
+        dt = np.full(speed.shape, step)
+        if np.any(contact_time / dt < 10.0):
+            raise ValueError(
+                f"time_step={step:g} is out of range: must be at most 1/10 of the Hertz contact time "
+                f"({float(contact_time.min()):.3g} s here)"
+            )
+    max_steps = np.ceil(MAX_CONTACT_TIMES * contact_time / dt).astype(np.int64) + 1000
+    code, factor, scheme_code = NORMAL_MODELS[model], TANGENTIAL_MODELS[tangential_model], SCHEMES[scheme]
+    out = engine.run_batch(scheme_code, code, factor, friction, dt, vn0, vt0, max_steps, prm, tab)
+    errors = out[:, -1].astype(int)
+    if np.any(errors):
+        i = int(np.flatnonzero(errors)[0])
+        why = _ERRORS[errors[i]].format(load=tab[0][0, -1], unload=tab[1][-1], steps=int(max_steps[i]))
+        name = "force_law" if errors[i] != laws.ERR_MAX_STEPS else "time_step"
+        raise ValueError(f"{name}: impact {i} (speed={speed[i]:g} m/s, angle={angle[i]:g} deg): {why}")
+    hist = None
+    if histories:
+        hist = []
+        for i in range(speed.size):
+            capacity = int(out[i, engine.OUT_FIELDS.index("steps")]) // history_every + 3
+            _, h = engine.run_history(
+                scheme_code,
+                code,
+                factor,
+                friction[i],
+                dt[i],
+                vn0[i],
+                vt0[i],
+                max_steps[i],
+                prm,
+                tab,
+                capacity,
+                history_every,
+            )
+            hist.append(_history(h))
+        hist = tuple(hist)
+    col = {name: out[:, k] for k, name in enumerate(engine.OUT_FIELDS)}
+    vn, vt, spin = col["normal_velocity"], col["tangential_velocity"], col["spin"]
+    inertia = 0.4 * mass * radius**2
+    with np.errstate(invalid="ignore", divide="ignore"):
+        tangential_restitution = np.where(vt0 > 0.0, vt / np.where(vt0 > 0.0, vt0, 1.0), np.nan)
+    return BatchResult(
+        radius=radius,
+        ball=ball,
+        plate=plate,
+        speed=speed,
+        angle=angle,
+        friction=friction,
+        restitution=restitution,
+        normal_model=model,
+        tangential_model=tangential_model,
+        scheme=scheme,
+        mass=mass,
+        limiting_pressure=p_y,
+        normal_restitution=-vn / vn0,
+        tangential_restitution=tangential_restitution,
+        rebound_angle=np.degrees(np.arctan2(vt, -vn)),
+        contact_point_rebound_angle=np.degrees(np.arctan2(vt - radius * spin, -vn)),
+        spin=spin,
+        rebound_normal_velocity=-vn,
+        rebound_tangential_velocity=vt,
+        contact_time=col["contact_time"],
+        sliding_time=col["sliding_time"],
+        max_force=col["max_force"],
+        max_overlap=col["max_overlap"],
+        max_contact_radius=col["max_contact_radius"],
+        max_peak_pressure=col["max_peak_pressure"],
+        max_tangential_force=col["max_tangential_force"],
+        energy_in=0.5 * mass * speed**2,
+        energy_out=0.5 * mass * (vn**2 + vt**2) + 0.5 * inertia * spin**2,
+        normal_work=col["normal_work"],
+        friction_work=col["friction_work"],
+        time_step=dt,
+        steps=col["steps"].astype(np.int64),
+        histories=hist,
+    )
+
+
+def _history(h: np.ndarray) -> History:
+    row = {name: np.ascontiguousarray(h[k]) for k, name in enumerate(engine.HISTORY_FIELDS)}
+    row["sliding"] = row["sliding"] > 0.5
+    row["contact_x"] = row["center_x"].copy()
+    return History(**row)
+
+
+def simulate_impact(
+    radius: float,
+    ball: Material,
+    plate: Material,
+    speed: float,
+    angle: float,
+    friction: float,
+    restitution: float = 1.0,
+    normal_model: str = "hertz",
+    tangential_model: str = "hdd",
+    limiting_pressure: float | None = None,
+    force_law: TabulatedLaw | None = None,
+    scheme: str = "verlet",
+    time_step: float | None = None,
+    history: bool = True,
+    history_every: int = 1,
+) -> ImpactResult:
+    """Simulate one impact (the batch of one of :func:`simulate_impacts`; same parameters, SI units, angles
+    in degrees from the plate normal). ``history`` records a :class:`History` (every ``history_every``-th
+    step and the last, at separation)."""
+    for name, value, units in (("speed", speed, "m/s"), ("angle", angle, "deg"), ("friction", friction, "")):
+        check_number(name, value, units=units)
+    check_bool("history", history)
+    batch = simulate_impacts(
+        radius,
+        ball,
+        plate,
+        speed,
+        angle,
+        friction,
+        restitution=restitution,
+        normal_model=normal_model,
+        tangential_model=tangential_model,
+        limiting_pressure=limiting_pressure,
+        force_law=force_law,
+        scheme=scheme,
+        time_step=time_step,
+        histories=history,
+        history_every=history_every,
+    )
+    return batch[0]
