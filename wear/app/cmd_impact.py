@@ -1,0 +1,118 @@
+"""``impactwear impact``: simulate one oblique impact (H-DD model) and print the results.
+
+With no arguments it runs the embedded default case (alumina ball, R 2.5 mm, on soda-lime glass at
+3.9 m/s, 30° from the normal, μ = 0.092; Kharaz, Gorham & Salman 2001). ``--config case.toml`` reads a
+case file; the options below override single keys; ``--set table.key=value`` overrides any key.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+
+from . import case as case_module
+
+HELP = "simulate one oblique ball-on-plate impact (H-DD model) and print rebound, forces and timings"
+
+# option -> case key (values are checked by the case schema, so errors name the key)
+_OPTIONS = {
+    "radius": ("ball.radius", float, "ball radius (m)"),
+    "speed": ("impact.speed", float, "impact speed (m/s)"),
+    "angle": ("impact.angle", float, "impact angle from the plate normal (deg)"),
+    "friction": ("impact.friction", float, "Coulomb friction coefficient"),
+    "restitution": ("impact.restitution", float, "normal restitution setting the Hertz dashpot"),
+    "normal_model": ("impact.normal_model", str, "hertz or thornton"),
+    "tangential_model": ("impact.tangential_model", str, "hdd or mindlin"),
+    "limiting_pressure": ("impact.limiting_pressure", float, "Thornton limiting pressure (Pa)"),
+    "scheme": ("impact.scheme", str, "verlet or paper"),
+    "time_step": ("impact.time_step", float, "time step (s); default Hertz contact time / 2000"),
+}
+
+# (label, attribute, unit, scale) rows of the human-readable table
+_ROWS = (
+    ("normal restitution", "normal_restitution", "", 1.0),
+    ("tangential restitution", "tangential_restitution", "", 1.0),
+    ("rebound angle (centre)", "rebound_angle", "deg", 1.0),
+    ("rebound angle (contact point)", "contact_point_rebound_angle", "deg", 1.0),
+    ("spin after impact", "spin", "rad/s", 1.0),
+    ("contact time", "contact_time", "us", 1e6),
+    ("sliding time", "sliding_time", "us", 1e6),
+    ("max normal force", "max_force", "N", 1.0),
+    ("max tangential force", "max_tangential_force", "N", 1.0),
+    ("max overlap", "max_overlap", "um", 1e6),
+    ("max contact radius", "max_contact_radius", "um", 1e6),
+    ("max peak pressure", "max_peak_pressure", "MPa", 1e-6),
+    ("kinetic energy in", "energy_in", "mJ", 1e3),
+    ("kinetic energy out", "energy_out", "mJ", 1e3),
+    ("normal work (dissipated)", "normal_work", "mJ", 1e3),
+    ("friction work", "friction_work", "mJ", 1e3),
+    ("time step", "time_step", "ns", 1e9),
+    ("steps in contact", "steps", "", 1.0),
+)
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--config", metavar="CASE.toml", help="case file (TOML: [ball], [plate], [impact])")
+    for name, (key, kind, doc) in _OPTIONS.items():
+        parser.add_argument(f"--{name.replace('_', '-')}", dest=name, type=kind, metavar="X", help=f"{doc} [{key}]")
+    parser.add_argument(
+        "--set",
+        dest="overrides",
+        action="append",
+        default=[],
+        metavar="TABLE.KEY=VALUE",
+        help="override any case key (value in TOML syntax, e.g. --set plate.rigid=true); repeatable",
+    )
+    parser.add_argument("--json", action="store_true", help="print JSON (case and results) instead of a table")
+    parser.add_argument("--print-defaults", action="store_true", help="print the documented default case (TOML)")
+
+
+def build_case(args: argparse.Namespace) -> dict:
+    """The checked case from ``--config``, the named options and ``--set`` (in that order of precedence)."""
+    case = case_module.load_case(args.config) if args.config else case_module.default_case()
+    for name, (key, _kind, _doc) in _OPTIONS.items():
+        value = getattr(args, name, None)
+        if value is not None:
+            case_module.set_value(case, key, value)
+    for item in args.overrides:
+        dotted, sep, text = item.partition("=")
+        if not sep:
+            raise ValueError(f"--set {item!r} is not TABLE.KEY=VALUE")
+        try:
+            value = case_module.tomllib.loads(f"v = {text}")["v"]
+        except case_module.tomllib.TOMLDecodeError:
+            value = text  # a bare word: a string value (e.g. --set impact.normal_model=thornton)
+        case_module.set_value(case, dotted.strip(), value)
+    return case
+
+
+def main(args: argparse.Namespace) -> int:
+    if args.print_defaults:
+        sys.stdout.write(case_module.dump_case(case_module.default_case(), comments=True))
+        return 0
+    case = build_case(args)
+    from contact import simulate_impact
+
+    result = simulate_impact(**case_module.impact_arguments(case), history=False)
+    if args.json:
+        out = {"case": case, "result": result.to_dict()}
+        print(json.dumps(out, indent=2, default=lambda v: None if isinstance(v, float) else str(v), allow_nan=False))
+        return 0
+    ball, plate, imp = case["ball"], case["plate"], case["impact"]
+    plate_text = "rigid" if plate["rigid"] else f"{plate['name']} (E {plate['E'] / 1e9:g} GPa, nu {plate['nu']:g})"
+    print(
+        f"impact: {ball['name']} ball R {ball['radius'] * 1e3:g} mm (E {ball['E'] / 1e9:g} GPa, nu {ball['nu']:g}) "
+        f"on {plate_text}"
+    )
+    print(
+        f"        {imp['speed']:g} m/s at {imp['angle']:g} deg from the normal, mu {imp['friction']:g}, "
+        f"e {imp['restitution']:g}, {imp['normal_model']} / {imp['tangential_model']}, {imp['scheme']} scheme"
+    )
+    width = max(len(r[0]) for r in _ROWS)
+    for label, attr, unit, scale in _ROWS:
+        value = getattr(result, attr)
+        text = "n/a" if isinstance(value, float) and math.isnan(value) else f"{value * scale:.6g}"
+        print(f"  {label:<{width}}  {text:>12} {unit}")
+    return 0
