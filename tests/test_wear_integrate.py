@@ -15,6 +15,7 @@ import pytest
 from scipy.integrate import quad, solve_ivp
 from scipy.special import gamma
 
+from contact import simulate_impact
 from contact.materials import Material, effective_modulus
 from contact.theory import sphere_mass
 from wear import (
@@ -33,11 +34,6 @@ from wear.pressure import SlidingSpeed
 BALL = Material(E=380e9, nu=0.23, density=4000.0, name="alumina")
 PLATE = Material(E=70e9, nu=0.25, density=2700.0, yield_strength=100e6, name="aluminium")
 RADIUS = 2.5e-3
-
-try:
-    from contact import simulate_impact
-except ImportError:  # the impact engine lands separately; the scipy reference model still runs
-    simulate_impact = None
 
 
 def reference_impact(speed=3.9, angle=0.0, damping=0.0, friction=0.092, samples=1501):
@@ -109,9 +105,6 @@ def engine_impact(speed=3.9, angle=0.0, restitution=1.0, friction=0.092, normal_
     )
 
 
-needs_engine = pytest.mark.skipif(simulate_impact is None, reason="contact.simulate_impact not in this tree yet")
-
-
 # ------------------------------------------------------------------------------- acceptance 1: steady track
 @pytest.mark.parametrize("alpha, beta", [(1.0, 0.0), (1.0, 0.3), (2.0, 1.0), (0.5, 0.0)])
 def test_steady_sliding_hertz_track_matches_closed_form(alpha, beta):
@@ -158,7 +151,6 @@ def _impulse_cases():
                 ),
                 source,
                 id=f"engine-{angle:g}deg-e{e:g}-{source}",
-                marks=needs_engine,
             )
         )
     return cases
@@ -205,7 +197,7 @@ def test_hertz_impact_profile_table_by_quadrature():
     "make",
     [
         pytest.param(lambda: reference_impact(), id="ref"),
-        pytest.param(lambda: engine_impact(), id="engine", marks=needs_engine),
+        pytest.param(lambda: engine_impact(), id="engine"),
     ],
 )
 def test_normal_hertz_impact_depth_profile(make):
@@ -230,7 +222,7 @@ def test_normal_hertz_impact_depth_profile(make):
     "make",
     [
         pytest.param(lambda: reference_impact(angle=0.0), id="ref"),
-        pytest.param(lambda: engine_impact(angle=0.0), id="engine", marks=needs_engine),
+        pytest.param(lambda: engine_impact(angle=0.0), id="engine"),
     ],
 )
 def test_normal_impact_with_sliding_speed_wears_nothing(make):
@@ -246,7 +238,7 @@ def test_normal_impact_with_sliding_speed_wears_nothing(make):
     "make",
     [
         pytest.param(lambda: reference_impact(angle=55.0), id="ref"),
-        pytest.param(lambda: engine_impact(angle=55.0), id="engine", marks=needs_engine),
+        pytest.param(lambda: engine_impact(angle=55.0), id="engine"),
     ],
 )
 def test_n_identical_impacts_wear_n_times_one(make):

@@ -173,18 +173,29 @@ def _lookup(table, step, q, last):
     return table[step, k] * (1.0 - f) + table[step, k + 1] * f
 
 
+def powered_table(pressure: PressureHistory, alpha: float) -> np.ndarray:
+    """p^α at the table entries (Pa^α), 0 where p = 0 (so α = 0 wears only where there is pressure)."""
+    p = pressure.pressure
+    if alpha == 1.0:
+        return p
+    return np.where(p > 0.0, np.maximum(p, 1e-300) ** alpha, 0.0)
+
+
 @numba.njit(cache=True, parallel=True, fastmath=True)
-def _accumulate(depth, x0, dx, y, sub_x, sub_step, sub_frac, sub_weight, extent, table, alpha):
+def _accumulate(depth, x0, dx, y, sub_x, sub_step, sub_frac, sub_weight, extent, table):
+    # table holds p^α: interpolating p^α rather than p keeps pow() out of the inner loop
     ny, nx = depth.shape
     last = table.shape[1] - 1
-    unit_alpha = alpha == 1.0
     for j in numba.prange(ny):
         y2 = y[j] * y[j]
         row = depth[j]
         for s in range(sub_x.size):
             i0 = sub_step[s]
-            a0 = extent[i0]
-            a1 = extent[i0 + 1]
+            w1 = sub_frac[s]
+            w0 = 1.0 - w1
+            # a sample that does not contribute (zero weight or no contact) is given radius 0
+            a0 = extent[i0] if w0 > 0.0 else 0.0
+            a1 = extent[i0 + 1] if w1 > 0.0 else 0.0
             reach = max(a0, a1)
             if y2 >= reach * reach:
                 continue
@@ -192,11 +203,18 @@ def _accumulate(depth, x0, dx, y, sub_x, sub_step, sub_frac, sub_weight, extent,
             xc = sub_x[s]
             lo = max(0, int(math.ceil((xc - half - x0) / dx)))
             hi = min(nx - 1, int(math.floor((xc + half - x0) / dx)))
-            w1 = sub_frac[s]
-            w0 = 1.0 - w1
-            inv0 = 1.0 / (a0 * a0) if a0 > 0.0 else 0.0
-            inv1 = 1.0 / (a1 * a1) if a1 > 0.0 else 0.0
             weight = sub_weight[s]
+            if a1 == 0.0:  # the common case: a sub-step on a sample
+                inv0 = 1.0 / (a0 * a0)
+                c0 = weight * w0
+                for i in range(lo, hi + 1):
+                    d = x0 + i * dx - xc
+                    q0 = 1.0 - (d * d + y2) * inv0
+                    if q0 > 0.0:
+                        row[i] += c0 * _lookup(table, i0, q0, last)
+                continue
+            inv0 = 1.0 / (a0 * a0) if a0 > 0.0 else 0.0
+            inv1 = 1.0 / (a1 * a1)
             for i in range(lo, hi + 1):
                 d = x0 + i * dx - xc
                 r2 = d * d + y2
@@ -205,13 +223,12 @@ def _accumulate(depth, x0, dx, y, sub_x, sub_step, sub_frac, sub_weight, extent,
                 if q0 > 0.0 and a0 > 0.0:
                     p += w0 * _lookup(table, i0, q0, last)
                 q1 = 1.0 - r2 * inv1
-                if q1 > 0.0 and a1 > 0.0:
+                if q1 > 0.0:
                     p += w1 * _lookup(table, i0 + 1, q1, last)
-                if p > 0.0:
-                    row[i] += weight * (p if unit_alpha else p**alpha)
+                row[i] += weight * p
 
 
-def _accumulate_numpy(depth, x0, dx, y, sub, extent, table, alpha):
+def _accumulate_numpy(depth, x0, dx, y, sub, extent, table):
     """Plain numpy version of :func:`_accumulate` (same algorithm, one sub-step at a time): the reference."""
     nx = depth.shape[1]
     last = table.shape[1] - 1
@@ -230,7 +247,7 @@ def _accumulate_numpy(depth, x0, dx, y, sub, extent, table, alpha):
                 s = np.sqrt(1.0 - (r[inside] / a) ** 2)
                 p[inside] += w * np.interp(s, np.linspace(0.0, 1.0, last + 1), table[step])
         if rows.size:
-            depth[rows[0] : rows[-1] + 1, lo : hi + 1] += weight * np.where(p > 0.0, p**alpha, 0.0)
+            depth[rows[0] : rows[-1] + 1, lo : hi + 1] += weight * p
 
 
 def integrate_volume(x, y, depth) -> float:
@@ -310,14 +327,14 @@ def integrate_wear(
             )
     dx = float(x[1] - x[0])
     sub = wear_substeps(pressure, speed, law, dx)
+    table = powered_table(pressure, law.alpha)
     if sub.weight.size:
         if engine == "numba":
             _accumulate(
-                depth, float(x[0]), dx, y, sub.contact_x, sub.step, sub.fraction, sub.weight,
-                pressure.extent, pressure.pressure, float(law.alpha),
-            )  # fmt: skip
+                depth, float(x[0]), dx, y, sub.contact_x, sub.step, sub.fraction, sub.weight, pressure.extent, table
+            )
         else:
-            _accumulate_numpy(depth, float(x[0]), dx, y, sub, pressure.extent, pressure.pressure, law.alpha)
+            _accumulate_numpy(depth, float(x[0]), dx, y, sub, pressure.extent, table)
     return _finish(x, y, depth, density, scar_threshold)
 
 
@@ -341,8 +358,8 @@ def axisymmetric_wear_depth(pressure: PressureHistory, speed: SlidingSpeed, law:
             "the axisymmetric wear profile needs a normal impact; use integrate_wear"
         )
     sub = wear_substeps(pressure, speed, law, max(reach, 1e-300))
+    powered = PressureHistory(pressure.time, pressure.contact_x, pressure.extent, powered_table(pressure, law.alpha))
     h = np.zeros_like(r)
     for i0, w1, weight in zip(sub.step, sub.fraction, sub.weight, strict=True):
-        p = (1.0 - w1) * pressure.at(i0, r) + w1 * pressure.at(i0 + 1, r)
-        h += weight * np.where(p > 0.0, p**law.alpha, 0.0)
+        h += weight * ((1.0 - w1) * powered.at(i0, r) + w1 * powered.at(i0 + 1, r))
     return h

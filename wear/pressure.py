@@ -182,8 +182,7 @@ def _truncated_hertz_rows(s, contact_radius, force, limiting_pressure) -> np.nda
         # F/(πa²p_y) = 1 − q²/3, q = p_y/p₀ ∈ [0, 1)
         ratio = mean[truncated] / limiting_pressure
         q = np.sqrt(np.maximum(3.0 * (1.0 - ratio), 0.0))
-        with np.errstate(divide="ignore"):
-            p0_t = np.where(q > 0.0, limiting_pressure / np.maximum(q, 1e-300), np.inf)
+        p0_t = limiting_pressure / np.maximum(q, 1e-12)  # q = 0 rows are uniform, set below
         trunc_rows = np.minimum(p0_t[:, None] * shape[None, :], limiting_pressure)
         uniform = ratio >= 1.0  # cannot be carried below p_y: keep the force, uniform pressure
         trunc_rows[uniform] = mean[truncated][uniform, None]
