@@ -8,6 +8,7 @@ Wear of one impact (SI units; errata Eq. 15, w a depth)::
     v = sliding_speed(impact, "sliding")                   # or "kinematic"
     wm = integrate_wear(p, v, law, density=impact.plate.density)
     wm.volume_m3, wm.mass_kg, wm.max_depth_m, wm.scar_length_m, wm.scar_width_m, wm.depth
+    wm = wear_from_impact(impact, law, pressure="fe", fe=indentation)   # the same in one call
 """
 
 from .integrate import (
@@ -16,6 +17,7 @@ from .integrate import (
     integrate_volume,
     integrate_wear,
     surface_grid,
+    wear_from_impact,
 )
 from .law import WearLaw, wear_coefficient_units
 from .pressure import (
@@ -47,4 +49,5 @@ __all__ = [
     "sliding_speed",
     "surface_grid",
     "wear_coefficient_units",
+    "wear_from_impact",
 ]

@@ -9,9 +9,13 @@ integral is the trapezoidal rule over those sub-steps, with p interpolated linea
 (x, y) and v linearly in time. The grid spacing is 2 a_max / ``points_across`` (a_max the largest
 loaded radius), ≥ 40 points across the largest contact diameter; the grid covers the whole scar.
 
-Accuracy (measured in tests/test_wear_integrate.py): the worn volume of any impact with α = 1, β = 0
-equals K × normal impulse within 0.1% at the default 64 points across; a steady Hertz track matches the
-closed form within 0.5% of its depth.
+Accuracy (measured in tests/test_wear_integrate.py, default 64 points across, 257-entry pressure tables):
+the worn volume of an impact with α = 1, β = 0 equals K × normal impulse = K m V_n (1 + e) within 0.05%
+(any source, any angle); a steady Hertz track matches its closed-form depth within 0.03% of the maximum
+depth for α ≥ 1 and 0.1% for α = 0.5; h(r)/h(0) of a normal Hertz impact matches the quadrature within
+3e-4. To keep pow() out of the inner loop the kernel interpolates p^α (tabulated once per sample), not p,
+in s and in time: on dense impact histories the two differ by < 1e-5 of the volume, with a coarse 40-step
+FE table by < 0.7% (α = 0.5) — the same order as the time interpolation itself.
 """
 
 from __future__ import annotations
@@ -25,7 +29,7 @@ import numpy as np
 from contact.validation import check_number
 
 from .law import WearLaw
-from .pressure import PressureHistory, SlidingSpeed
+from .pressure import PressureHistory, SlidingSpeed, pressure_history, sliding_speed
 
 __all__ = [
     "WearMap",
@@ -34,6 +38,7 @@ __all__ = [
     "wear_substeps",
     "integrate_wear",
     "integrate_wear_numpy",
+    "wear_from_impact",
     "integrate_volume",
     "axisymmetric_wear_depth",
     "scar_extent",
@@ -363,3 +368,34 @@ def axisymmetric_wear_depth(pressure: PressureHistory, speed: SlidingSpeed, law:
     for i0, w1, weight in zip(sub.step, sub.fraction, sub.weight, strict=True):
         h += weight * ((1.0 - w1) * powered.at(i0, r) + w1 * powered.at(i0 + 1, r))
     return h
+
+
+def wear_from_impact(
+    impact,
+    law: WearLaw,
+    *,
+    pressure: str = "fe",
+    speed: str = "sliding",
+    fe=None,
+    points_across: int = DEFAULT_POINTS_ACROSS,
+    scar_threshold: float = 0.01,
+    **pressure_options,
+) -> WearMap:
+    """Wear map of one ``impact`` (a ``contact.ImpactResult`` with its history) in one call.
+
+    ``pressure``: source name of :func:`wear.pressure_history` (``"fe"`` needs ``fe``: the FE pressure table,
+    e.g. ``fem.indent_impact``'s result); ``speed``: ``"sliding"`` or ``"kinematic"``; ``pressure_options``
+    (``limiting_pressure`` Pa, ``yield_force`` N, ``loading_after_yield``, ``points``) go to
+    :func:`wear.pressure_history`. The worn mass uses the plate density ``impact.plate.density`` (kg/m³).
+    """
+    if getattr(impact, "history", None) is None:
+        raise ValueError("impact.history=None: simulate the impact with history=True to integrate its wear")
+    ph = pressure_history(impact, pressure, fe=fe, **pressure_options)
+    return integrate_wear(
+        ph,
+        sliding_speed(impact, speed),
+        law,
+        density=impact.plate.density,
+        points_across=points_across,
+        scar_threshold=scar_threshold,
+    )
