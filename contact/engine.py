@@ -200,29 +200,24 @@ def _impact(scheme, model, factor, friction, dt, vn0, vt0, max_steps, prm, tab, 
         vs = vt - radius * om
         wn += 0.5 * dt * (pn + fn * vn)
         wt -= 0.5 * dt * (pt + ft * vs)
-        done = fn <= 0.0 and vn < 0.0
-        if done:
-            sliding = False
+        ended = fn <= 0.0 and vn < 0.0
+        done = ended or e != OK or steps >= max_steps
+        err = e if e != OK else (OK if ended or not done else ERR_MAX_STEPS)
+        sliding = sliding and not done
         if sliding:
             t_slide += dt
         fmax = max(fmax, fn)
         amax = max(amax, a)
         pmax = max(pmax, p)
         ftmax = max(ftmax, abs(ft))
-        if e != OK:
-            err = e
-            done = True
-        elif steps >= max_steps:
-            err = ERR_MAX_STEPS
-            done = True
         if every > 0 and (done or steps % every == 0):
             hist[0, row] = t
             hist[1, row] = max(delta, 0.0) if not done else 0.0
             hist[2, row] = fn
             hist[3, row] = ft
             hist[4, row] = xi if not done else 0.0
-            hist[5, row] = a
-            hist[6, row] = p
+            hist[5, row] = a if not done else 0.0
+            hist[6, row] = p if not done else 0.0
             hist[7, row] = vs
             hist[8, row] = 1.0 if sliding else 0.0
             hist[9, row] = x

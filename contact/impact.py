@@ -135,8 +135,17 @@ def simulate_impacts(
     time_step : Δt (s); default: the Hertz contact time of each impact's normal speed / 2000.
     histories : record a :class:`History` per impact; ``history_every`` k keeps every k-th step (and the last).
 
-    The tabulated law is not extrapolated: if an impact loads beyond ``force_law.loading_overlap[-1]`` or
-    starts unloading beyond ``force_law.unloading_max_overlap[-1]``, a ValueError names ``force_law``.
+    Tabulated law: loading follows F(δ), a(δ) of the table; once δ decreases, unloading (and any reloading up to
+    δ*) follows the unloading curve of the reached δ*, interpolated linearly in δ* between the tabulated curves in
+    the normalised coordinate s = (δ − δ_p)/(δ* − δ_p), with F and a normalised by their values at δ* (so unloading
+    starts exactly on the loading branch); δ_p is interpolated linearly in δ*. Below the smallest tabulated δ*
+    the first curve's normalised shape is used with δ_p scaled in proportion to δ*. The table is not
+    extrapolated: if an impact loads beyond ``force_law.loading_overlap[-1]`` or starts unloading beyond
+    ``force_law.unloading_max_overlap[-1]``, a ValueError names ``force_law``. The default time step then still
+    uses the Hertz contact time of ``ball`` and ``plate``, and k_t = 8G*a uses the tabulated a.
+
+    Hertz contact time: see :func:`contact.theory.hertz_impact`. Contact ends at the first step end where F_n = 0
+    while the ball moves away (located within one step). Only ``normal_model="hertz"`` takes ``restitution`` < 1.
     """
     radius, ball, plate, restitution, model, e_star, mass, p_y, prm, tab = _setup(
         radius, ball, plate, restitution, normal_model, tangential_model, limiting_pressure, force_law, scheme
