@@ -78,6 +78,13 @@ OUTPUT_UNITS = {
 }
 
 
+def _json_float(x: float) -> float | str | None:
+    """JSON has no inf/NaN: +inf (rigid body) -> "inf", NaN (undefined, e.g. e_t at angle 0) -> None."""
+    if math.isnan(x):
+        return None
+    return x if math.isfinite(x) else ("inf" if x > 0 else "-inf")
+
+
 @dataclass(frozen=True, eq=False)
 class ImpactResult:
     """One impact. Inputs are repeated (``radius`` m, ``ball``, ``plate``, ``speed`` m/s, ``angle`` deg,
@@ -129,7 +136,7 @@ class ImpactResult:
     history: History | None = None
 
     def to_dict(self) -> dict:
-        """Plain-JSON dict of inputs and outputs (NaN → None; materials as dicts; no history)."""
+        """Plain-JSON dict of inputs and outputs (NaN → None, inf → "inf"; materials as dicts; no history)."""
         d: dict = {}
         for f in fields(self):
             v = getattr(self, f.name)
@@ -137,9 +144,9 @@ class ImpactResult:
                 continue
             if isinstance(v, Material):
                 v = {"E": v.E, "nu": v.nu, "density": v.density, "yield_strength": v.yield_strength, "name": v.name}
-                v = {k: (None if isinstance(x, float) and not math.isfinite(x) else x) for k, x in v.items()}
+                v = {k: _json_float(x) if isinstance(x, float) else x for k, x in v.items()}
             elif isinstance(v, (float, np.floating)):
-                v = float(v) if math.isfinite(v) else None
+                v = _json_float(float(v))
             elif isinstance(v, np.integer):
                 v = int(v)
             d[f.name] = v

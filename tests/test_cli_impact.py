@@ -63,3 +63,10 @@ def test_console_script_subprocess():
     )
     assert proc.returncode == 2
     assert proc.stderr.strip().count("\n") == 0 and "impact.angle=120" in proc.stderr
+
+
+def test_json_with_rigid_plate_is_valid_json(capsys):
+    # JSON has no inf: a rigid plate's E is written as "inf" in both the case and the result.
+    assert main(["impact", "--json", "--set", "plate.rigid=true", "--set", "plate.E=inf"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["case"]["plate"]["E"] == "inf" and data["result"]["plate"]["E"] == "inf"

@@ -88,6 +88,15 @@ def build_case(args: argparse.Namespace) -> dict:
     return case
 
 
+def _finite(value):
+    """JSON-safe copy: non-finite floats (a rigid plate's E = inf) become the string "inf" / None for NaN."""
+    if isinstance(value, dict):
+        return {k: _finite(v) for k, v in value.items()}
+    if isinstance(value, float) and not math.isfinite(value):
+        return None if math.isnan(value) else ("inf" if value > 0 else "-inf")
+    return value
+
+
 def main(args: argparse.Namespace) -> int:
     if args.print_defaults:
         sys.stdout.write(case_module.dump_case(case_module.default_case(), comments=True))
@@ -97,8 +106,8 @@ def main(args: argparse.Namespace) -> int:
 
     result = simulate_impact(**case_module.impact_arguments(case), history=False)
     if args.json:
-        out = {"case": case, "result": result.to_dict()}
-        print(json.dumps(out, indent=2, default=lambda v: None if isinstance(v, float) else str(v), allow_nan=False))
+        out = {"case": _finite(case), "result": result.to_dict()}
+        print(json.dumps(out, indent=2, allow_nan=False))
         return 0
     ball, plate, imp = case["ball"], case["plate"], case["impact"]
     plate_text = "rigid" if plate["rigid"] else f"{plate['name']} (E {plate['E'] / 1e9:g} GPa, nu {plate['nu']:g})"
