@@ -18,7 +18,8 @@ __all__ = ["History", "ImpactResult", "BatchResult"]
 @dataclass(frozen=True, eq=False)
 class History:
     """Time histories of one impact, sampled at every ``every``-th engine step from first contact (t = 0) to
-    separation (always the last sample, where the overlap and forces are 0). Read-only numpy arrays:
+    separation (always the last sample, where overlap, forces, ξ, contact radius and pressure are 0, also for a
+    plastic contact that leaves a residual dent). Read-only numpy arrays:
 
     ``t`` (s); ``overlap`` δ (m); ``normal_force`` F_n (N); ``tangential_force`` F_t (N, on the ball along the
     impact direction); ``tangential_displacement`` ξ (m, the H-DD spring); ``contact_radius`` a (m);

@@ -91,3 +91,21 @@ def test_sliding_fraction_and_history_consistency():
     np.testing.assert_array_equal(h.contact_x, h.center_x)
     assert 0 < r.sliding_time < r.contact_time
     assert math.isclose(h.overlap.max(), r.max_overlap, rel_tol=1e-12)
+
+
+def test_history_hertz_relations():
+    # Johnson (1985) / errata Eqs. 4, 17: undamped Hertz contact a = sqrt(R delta), F = 4/3 E* sqrt(R) delta^1.5,
+    # p0 = (6 F E*^2 / (pi^3 R^2))^(1/3), sampled along the history.
+    from contact import effective_modulus, theory
+
+    plate = Material(E=70e9, nu=0.25, density=2500.0)
+    r = simulate_impact(R, AL_OXIDE, plate, 3.9, 30.0, MU)
+    h = r.history
+    e_star = effective_modulus(AL_OXIDE, plate)
+    inside = slice(1, -1)
+    np.testing.assert_allclose(h.contact_radius[inside], np.sqrt(R * h.overlap[inside]), rtol=1e-12)
+    np.testing.assert_allclose(h.normal_force[inside], theory.hertz_force(h.overlap[inside], R, e_star), rtol=1e-12)
+    np.testing.assert_allclose(
+        h.peak_pressure[inside], theory.hertz_peak_pressure(h.normal_force[inside], R, e_star), rtol=1e-9
+    )
+    assert h.contact_radius[-1] == 0.0 and h.peak_pressure[-1] == 0.0 and not h.sliding[-1]
