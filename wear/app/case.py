@@ -192,7 +192,13 @@ def _toml_value(value: Any) -> str:
     if isinstance(value, str):
         return '"' + value.replace("\\", "\\\\").replace('"', '\\"') + '"'
     if isinstance(value, float):
-        return "inf" if math.isinf(value) else repr(value)
+        if math.isinf(value):
+            return "inf" if value > 0 else "-inf"
+        text = repr(value)
+        if value != 0.0 and not 1e-3 <= abs(value) < 1e6 and "e" not in text:
+            mantissa, exponent = f"{value:.15e}".split("e")
+            text = f"{mantissa.rstrip('0').rstrip('.')}e{int(exponent)}"  # 3.8e11, not 380000000000.0
+        return text
     return str(value)
 
 
