@@ -1,0 +1,275 @@
+"""Figures of ``impactwear reproduce``: the paper's figures redrawn from our computations (matplotlib, Agg).
+
+Every function takes plain numpy arrays (SI units, angles in degrees from the plate normal), draws one figure
+with the reference it is compared with, names the source on the figure, and writes a PNG atomically
+(temporary file in the same folder, then ``os.replace``). The computations live in :mod:`wear.app.reproduce`.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+
+__all__ = [
+    "save_figure",
+    "plot_peak_force",
+    "plot_rebound_angles",
+    "plot_spin",
+    "plot_wear_mass",
+    "plot_sliding_duration",
+    "plot_yield_onset",
+    "plot_pressure_regimes",
+    "plot_regime_map",
+    "plot_restitution",
+]
+
+DPI = 100
+COLORS = ("C0", "C1", "C2", "C3", "C4", "C5", "C6", "C7")
+
+
+def _pyplot():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def save_figure(fig, path: str | os.PathLike, source: str) -> Path:
+    """Write ``fig`` to ``path`` (PNG) atomically with ``source`` printed at its bottom; close it."""
+    path = Path(path)
+    fig.text(0.01, 0.005, "Source: " + source, fontsize=7, color="0.3", ha="left", va="bottom", wrap=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=".png", dir=path.parent)
+    os.close(fd)
+    try:
+        fig.savefig(tmp, dpi=DPI)
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    finally:
+        _pyplot().close(fig)
+    return path
+
+
+def plot_peak_force(angles, speeds, model_force, hertz_force, path, source: str) -> Path:
+    """Peak normal force (N) against impact angle (deg), one line per speed (m/s), with the Hertz closed form
+    F_max(v cos θ) as dashed lines. ``model_force`` and ``hertz_force`` have shape (speeds, angles)."""
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(7, 4.6))
+    for k, v in enumerate(speeds):
+        c = COLORS[k % len(COLORS)]
+        ax.plot(angles, model_force[k], "o", ms=3.5, color=c, label=f"H-DD model, {v * 1e3:g} mm/s")
+        ax.plot(angles, hertz_force[k], "-", lw=1, color=c, alpha=0.7)
+    ax.plot([], [], "k-", lw=1, label="Hertz closed form $F_{max}(v\\cos\\theta)$")
+    ax.set_xlabel("impact angle from the normal θ (deg)")
+    ax.set_ylabel("peak normal force (N)")
+    ax.set_title("Fig. 4: peak normal force vs impact angle")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.subplots_adjust(bottom=0.16)
+    return save_figure(fig, path, source)
+
+
+def plot_rebound_angles(angles, centre, contact_point, data_angles, data_centre, path, source: str, note="") -> Path:
+    """Rebound angle (deg from the normal) of the centre and of the contact point against impact angle (deg),
+    with the measured centre rebound angles."""
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(7, 4.6))
+    ax.plot(angles, centre, "-", color="C0", label="model: centre of mass")
+    ax.plot(angles, contact_point, "-", color="C1", label="model: contact point")
+    ax.plot(data_angles, data_centre, "s", color="C0", mfc="none", label="Kharaz et al. 2001: centre of mass")
+    ax.axhline(0.0, color="0.5", lw=0.6)
+    ax.plot(angles, angles, ":", color="0.5", lw=0.8, label="specular (θ_r = θ)")
+    ax.set_xlabel("impact angle from the normal θ (deg)")
+    ax.set_ylabel("rebound angle from the normal (deg)")
+    ax.set_title("Fig. 5: rebound angles" + (f" ({note})" if note else ""))
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.subplots_adjust(bottom=0.16)
+    return save_figure(fig, path, source)
+
+
+def plot_spin(angles, spin, data_angles, data_spin, et, data_et_angles, data_et, path, source: str, note="") -> Path:
+    """Spin after impact (rad/s) and tangential restitution against impact angle (deg), with measured points."""
+    plt = _pyplot()
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(9, 4.2))
+    ax.plot(angles, spin, "-", color="C2", label="model")
+    ax.plot(data_angles, data_spin, "s", color="C2", mfc="none", label="Kharaz et al. 2001")
+    ax.set_xlabel("impact angle θ (deg)")
+    ax.set_ylabel("spin after impact ω (rad/s)")
+    ax.set_title("Fig. 6: spin" + (f" ({note})" if note else ""), fontsize=10)
+    ax2.plot(angles, et, "-", color="C3", label="model")
+    ax2.plot(data_et_angles, data_et, "s", color="C3", mfc="none", label="Kharaz et al. 2001")
+    ax2.set_xlabel("impact angle θ (deg)")
+    ax2.set_ylabel("tangential restitution $v_{t,out}/v_{t,in}$")
+    ax2.set_title("tangential restitution (extra)", fontsize=10)
+    for a in (ax, ax2):
+        a.grid(alpha=0.3)
+        a.legend(fontsize=8)
+    fig.subplots_adjust(bottom=0.18, wspace=0.3)
+    return save_figure(fig, path, source)
+
+
+def plot_wear_mass(series: Sequence[dict], path, source: str) -> Path:
+    """Worn mass (kg) against impact angle (deg), one panel per series (each dict: ``label``, ``angles``,
+    ``mass``), the angle of maximum wear marked."""
+    plt = _pyplot()
+    n = len(series)
+    fig, axes = plt.subplots(1, n, figsize=(4.6 * n, 4.2), squeeze=False)
+    for k, (ax, s) in enumerate(zip(axes[0], series, strict=True)):
+        angles, mass = np.asarray(s["angles"]), np.asarray(s["mass"])
+        c = COLORS[k % len(COLORS)]
+        ax.plot(angles, mass, "o-", ms=3.5, color=c)
+        i = int(np.argmax(mass))
+        ax.plot(angles[i], mass[i], "*", ms=13, color="k", label=f"max at {angles[i]:g}°")
+        ax.axvline(angles[i], color="k", lw=0.6, ls=":")
+        ax.set_title(s["label"], fontsize=9)
+        ax.set_xlabel("impact angle from the normal θ (deg)")
+        ax.set_ylabel("worn mass per impact (kg)")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle("Fig. 9: worn mass vs impact angle, α = 1, β = 0.3", fontsize=11)
+    fig.subplots_adjust(bottom=0.2, top=0.82, wspace=0.35)
+    return save_figure(fig, path, source)
+
+
+def plot_sliding_duration(angles, speeds, ratio, path, source: str, rigid_body=None) -> Path:
+    """Sliding time / contact time against impact angle (deg), one line per speed (m/s); ``ratio`` has shape
+    (speeds, angles). ``rigid_body``: optional (angle of the rigid-body onset of sliding throughout, label)."""
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(7, 4.6))
+    markers = ("o", "s", "^", "v", "D", "x")
+    for k, v in enumerate(speeds):
+        ax.plot(angles, ratio[k], markers[k % len(markers)] + "-", ms=3.5, lw=0.8, label=f"{v:g} m/s", alpha=0.8)
+    if rigid_body is not None:
+        ax.axvline(rigid_body[0], color="k", lw=0.8, ls="--", label=rigid_body[1])
+    ax.set_xlabel("impact angle from the normal θ (deg)")
+    ax.set_ylabel("sliding time / contact time $t_s/t^*$")
+    ax.set_title("Fig. 11: dimensionless sliding duration")
+    ax.set_ylim(-0.02, 1.05)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.subplots_adjust(bottom=0.16)
+    return save_figure(fig, path, source)
+
+
+def plot_yield_onset(rows: Sequence[dict], path, source: str) -> Path:
+    """FE first-yield force over F_c of Eq. 18 with the exact C(ν) (and with C = 1.6), one point per case.
+
+    Each row: ``label`` (case text), ``fe`` (N), ``exact`` (N, C(ν)), ``paper`` (N, C = 1.6)."""
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(8, 4.6))
+    x = np.arange(len(rows))
+    fe = np.array([r["fe"] for r in rows])
+    exact = np.array([r["exact"] for r in rows])
+    paper = np.array([r["paper"] for r in rows])
+    ax.plot(x, fe / exact, "o", color="C0", label="FE first yield / $F_c$ (exact C(ν))")
+    ax.plot(x, paper / exact, "_", ms=14, mew=2, color="C3", label="Eq. 18 with C = 1.6 / $F_c$ (exact C(ν))")
+    ax.axhline(1.0, color="k", lw=0.8)
+    ax.axhspan(0.97, 1.03, color="0.85", alpha=0.6, label="±3%")
+    ax.set_xticks(x)
+    ax.set_xticklabels([r["label"] for r in rows], rotation=30, ha="right", fontsize=7)
+    ax.set_ylabel("first-yield force / $F_c$")
+    ax.set_title("First yield: FE against Eq. 18 (C = 1.6 and exact C(ν))")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.subplots_adjust(bottom=0.32)
+    return save_figure(fig, path, source)
+
+
+def plot_pressure_regimes(loading: Sequence[dict], unloading: Sequence[dict], path, source: str) -> Path:
+    """FE pressure profiles (left: loading at w = δ/δ_c, against Hertz Eq. 16 at the same force; right:
+    unloading from the deepest load, against Mesarovic-Johnson Eq. 19 from the FE's p*, a*).
+
+    Each dict: ``label``, ``r`` (m), ``p`` (Pa), ``ref_r`` (m), ``ref_p`` (Pa); axes normalised by ``scale_r``
+    (m) and ``scale_p`` (Pa) given in each dict."""
+    plt = _pyplot()
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4.4))
+    for k, s in enumerate(loading):
+        c = COLORS[k % len(COLORS)]
+        ax1.plot(s["r"] / s["scale_r"], s["p"] / s["scale_p"], "-", color=c, label=s["label"])
+        ax1.plot(s["ref_r"] / s["scale_r"], s["ref_p"] / s["scale_p"], ":", color=c, lw=1)
+    ax1.plot([], [], "k:", lw=1, label="Hertz, Eq. 16 (same F)")
+    ax1.set_xlabel("r / a (FE contact radius)")
+    ax1.set_ylabel("p / p_mean (FE)")
+    ax1.set_title("loading, w = δ/δ_c", fontsize=10)
+    for k, s in enumerate(unloading):
+        c = COLORS[k % len(COLORS)]
+        ax2.plot(s["r"] / s["scale_r"], s["p"] / s["scale_p"], "-", color=c, label=s["label"])
+        ax2.plot(s["ref_r"] / s["scale_r"], s["ref_p"] / s["scale_p"], ":", color=c, lw=1)
+    ax2.plot([], [], "k:", lw=1, label="Mesarovic-Johnson, Eq. 19")
+    ax2.set_xlabel("r / a*")
+    ax2.set_ylabel("p / p*")
+    ax2.set_title("unloading from the deepest load", fontsize=10)
+    for a in (ax1, ax2):
+        a.set_xlim(0, 1.3)
+        a.set_ylim(bottom=0)
+        a.grid(alpha=0.3)
+        a.legend(fontsize=7)
+    fig.subplots_adjust(bottom=0.18, wspace=0.25)
+    return save_figure(fig, path, source)
+
+
+REGIMES = ("elastic", "contained", "surface-plastic", "fully-plastic")
+
+
+def plot_regime_map(speeds, yields, regime, ratio, e_fe, e_thornton, path, source: str) -> Path:
+    """Maps over impact speed (m/s, x) and plate yield strength (Pa, y): regime (index into :data:`REGIMES`),
+    p_max/p_mean, and the coupled-FE normal restitution against Thornton 1997. Arrays have shape (yields, speeds)."""
+    plt = _pyplot()
+    from matplotlib.colors import BoundaryNorm, ListedColormap
+
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4.3))
+    sx, sy = np.asarray(speeds), np.asarray(yields) / 1e6
+    cmap = ListedColormap(["#4c72b0", "#55a868", "#dd8452", "#c44e52"])
+    im = axes[0].pcolormesh(sx, sy, regime, cmap=cmap, norm=BoundaryNorm(np.arange(-0.5, 4.5), 4), shading="nearest")
+    cb = fig.colorbar(im, ax=axes[0], ticks=range(4))
+    cb.ax.set_yticklabels(REGIMES, fontsize=7)
+    axes[0].set_title("regime at maximum overlap", fontsize=10)
+    im = axes[1].pcolormesh(sx, sy, ratio, shading="nearest", cmap="viridis")
+    fig.colorbar(im, ax=axes[1])
+    axes[1].set_title("$p_{max}/p_{mean}$ at maximum overlap (Hertz: 1.5)", fontsize=10)
+    diff = np.asarray(e_fe) / np.asarray(e_thornton) - 1.0
+    lim = max(float(np.nanmax(np.abs(diff))), 1e-3)
+    im = axes[2].pcolormesh(sx, sy, diff * 100, shading="nearest", cmap="RdBu_r", vmin=-lim * 100, vmax=lim * 100)
+    fig.colorbar(im, ax=axes[2], label="%")
+    axes[2].set_title("$e_{FE}/e_{Thornton} - 1$", fontsize=10)
+    for i in range(len(sy)):
+        for j in range(len(sx)):
+            axes[2].text(sx[j], sy[i], f"{e_fe[i][j]:.2f}", ha="center", va="center", fontsize=6)
+    for a in axes:
+        a.set_xscale("log")
+        a.set_yscale("log")
+        a.set_xlabel("impact speed (m/s)")
+        a.set_ylabel("plate yield strength (MPa)")
+    fig.subplots_adjust(bottom=0.18, wspace=0.35, left=0.06, right=0.97)
+    return save_figure(fig, path, source)
+
+
+def plot_restitution(ratio, e_fe, ratio_curve, e_thornton, path, source: str, note="") -> Path:
+    """Normal restitution against V/V_y: coupled FE points against Thornton's (1997) closed form."""
+    plt = _pyplot()
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(10, 4.3), gridspec_kw={"width_ratios": [3, 2]})
+    ax.semilogx(ratio_curve, e_thornton, "-", color="k", lw=1, label="Thornton 1997 (closed form)")
+    ax.semilogx(ratio, e_fe, "o", color="C0", label="coupled FE (this toolkit)")
+    ax.set_xlabel("impact speed / yield velocity $V/V_y$")
+    ax.set_ylabel("normal restitution e")
+    ax.set_title("Normal restitution" + (f" ({note})" if note else ""), fontsize=10)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    from contact.theory import thornton_restitution
+
+    ax2.semilogx(ratio, (np.asarray(e_fe) / thornton_restitution(ratio) - 1) * 100, "o-", color="C0")
+    ax2.axhline(0, color="k", lw=0.8)
+    ax2.set_xlabel("$V/V_y$")
+    ax2.set_ylabel("$e_{FE}/e_{Thornton} - 1$ (%)")
+    ax2.grid(alpha=0.3, which="both")
+    fig.subplots_adjust(bottom=0.16, wspace=0.3)
+    return save_figure(fig, path, source)
