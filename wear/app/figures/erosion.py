@@ -1,0 +1,108 @@
+"""Figures of a particle-stream erosion (matplotlib, Agg; SI units on every axis, written atomically).
+
+``erosion.png``: mass loss (kg) and cumulative erosion rate (kg of plate per kg of particles) against time.
+``surface.png``: the eroded surface depth map (µm) with the stream direction. ``erosion_vs_angle.png``:
+erosion rate and mass loss against the stream angle (deg from the plate normal).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["plot_time_series", "plot_surface", "plot_angles"]
+
+
+def _pyplot():
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def _save(fig, path: str | os.PathLike) -> Path:
+    p = Path(path)
+    fd, tmp = tempfile.mkstemp(prefix=f".{p.name}.", suffix=".png", dir=p.parent)
+    os.close(fd)
+    try:
+        fig.savefig(tmp, dpi=120, format="png")
+        os.replace(tmp, p)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    finally:
+        _pyplot().close(fig)
+    return p
+
+
+def plot_time_series(time, mass_loss_kg, erosion_rate, path: str | os.PathLike, title: str = "") -> Path:
+    """Mass loss (kg) and cumulative erosion rate (kg/kg) against exposure time (s) into ``path``."""
+    plt = _pyplot()
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
+    t = np.asarray(time)
+    ax1.plot(t, np.asarray(mass_loss_kg), "-")
+    ax1.set_xlabel("exposure time (s)")
+    ax1.set_ylabel("mass loss of the patch (kg)")
+    ax1.grid(alpha=0.3)
+    rate = np.asarray(erosion_rate)
+    ax2.plot(t[1:], rate[1:], "-")
+    ax2.set_xlabel("exposure time (s)")
+    ax2.set_ylabel("erosion rate (kg/kg of particles)")
+    ax2.set_ylim(bottom=0.0)
+    ax2.grid(alpha=0.3)
+    if title:
+        fig.suptitle(title)
+    fig.tight_layout()
+    return _save(fig, path)
+
+
+def plot_surface(x, y, depth, path: str | os.PathLike, azimuth_deg: float = 0.0, title: str = "") -> Path:
+    """Depth map (µm, into the plate) over the patch (x, y in mm) with an arrow along the stream azimuth."""
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(6, 5))
+    x, y = np.asarray(x), np.asarray(y)
+    extent = (x[0] * 1e3, x[-1] * 1e3, y[0] * 1e3, y[-1] * 1e3)
+    im = ax.imshow(np.asarray(depth) * 1e6, origin="lower", extent=extent, cmap="viridis", interpolation="nearest")
+    fig.colorbar(im, ax=ax, label="depth (µm)")
+    span = 0.15 * (extent[1] - extent[0])
+    cx, cy = 0.5 * (extent[0] + extent[1]), 0.5 * (extent[2] + extent[3])
+    psi = math.radians(azimuth_deg)
+    ax.annotate(
+        "stream",
+        xy=(cx + span * math.cos(psi), cy + span * math.sin(psi)),
+        xytext=(cx - span * math.cos(psi), cy - span * math.sin(psi)),
+        arrowprops=dict(arrowstyle="->", color="white"),
+        color="white",
+    )
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("y (mm)")
+    if title:
+        ax.set_title(title)
+    fig.tight_layout()
+    return _save(fig, path)
+
+
+def plot_angles(angles_deg, erosion_rate, mass_loss_kg, path: str | os.PathLike, title: str = "") -> Path:
+    """Erosion rate (kg/kg) and mass loss (kg) against the stream angle (deg from the plate normal)."""
+    plt = _pyplot()
+    fig, ax1 = plt.subplots(figsize=(6, 4))
+    a = np.asarray(angles_deg, dtype=float)
+    ax1.plot(a, np.asarray(erosion_rate), "o-", color="C0")
+    ax1.set_xlabel("stream angle from the plate normal (deg)")
+    ax1.set_ylabel("erosion rate (kg/kg of particles)", color="C0")
+    ax1.set_ylim(bottom=0.0)
+    ax1.grid(alpha=0.3)
+    ax2 = ax1.twinx()
+    ax2.plot(a, np.asarray(mass_loss_kg), "s--", color="C1")
+    ax2.set_ylabel("mass loss of the patch (kg)", color="C1")
+    ax2.set_ylim(bottom=0.0)
+    if title:
+        ax1.set_title(title)
+    fig.tight_layout()
+    return _save(fig, path)
