@@ -243,3 +243,66 @@ def closed_forms(quick: bool) -> list[Check]:
                  "Mesarovic & Johnson 2000: F/F* = (2/π)[asin x − x√(1−x²)]", f_mj, 1e-6, "N")
     )  # fmt: skip
     return out
+
+
+def _thornton_table(e_star, p_y, radius, dmax_table, n_curves=30, n_points=200):
+    """Thornton (1997) loading (F = F_y + πp_yR(δ − δ_y) past δ_y) and Hertz-with-R_p unloading, as a table."""
+    from contact import TabulatedLaw
+
+    dy = (math.pi * p_y / (2 * e_star)) ** 2 * radius
+    k = 4 / 3 * e_star * math.sqrt(radius)
+    fy = k * dy**1.5
+
+    def load(d):
+        return np.where(d <= dy, k * d**1.5, fy + math.pi * p_y * radius * (d - dy))
+
+    lo = np.linspace(0.0, dmax_table, 2000)
+    curves = np.geomspace(dmax_table / 200, dmax_table, n_curves)
+    uo, uf, ua = [], [], []
+    for ds in curves:
+        fp = float(load(ds))
+        ap2 = (2 * fp + fy) / (2 * math.pi * p_y) if ds > dy else radius * ds
+        rp = 4 * e_star * ap2**1.5 / (3 * fp)
+        dp = max(ds - ap2 / rp, 0.0)
+        d = np.linspace(ds, dp, n_points)
+        uo.append(d)
+        uf.append(4 / 3 * e_star * math.sqrt(rp) * np.maximum(d - dp, 0) ** 1.5)
+        ua.append(np.sqrt(rp * np.maximum(d - dp, 0)))
+    return TabulatedLaw(lo, load(lo), np.sqrt(radius * lo), curves, np.array(uo), np.array(uf), np.array(ua))
+
+
+@register("contact")
+def tabulated_law(quick: bool) -> list[Check]:
+    """The tabulated normal law (the FE → impact path of the two-way coupling) with tables written from closed
+    forms: a Hertz table reproduces the Hertz impact closed form (errata Eqs. 10-11, 0.2%); a table of
+    Thornton's curves reproduces Thornton's restitution (0.5%: interpolation between unloading curves)."""
+    from contact import TabulatedLaw
+
+    steel = Material(E=210e9, nu=0.3, density=7800.0)
+    radius = 5e-3
+    e_star = effective_modulus(steel, RIGID)
+    h = theory.hertz_impact(theory.sphere_mass(radius, 7800.0), radius, e_star, 2.0)
+    lo = np.linspace(0, 2 * h.max_overlap, 3000)
+    um = np.linspace(0.05, 2.0, 40) * h.max_overlap
+    uo = np.array([np.linspace(d, 0.0, 400) for d in um])
+    law = TabulatedLaw(lo, theory.hertz_force(lo, radius, e_star), np.sqrt(radius * lo), um, uo,
+                       theory.hertz_force(uo, radius, e_star), np.sqrt(radius * uo))  # fmt: skip
+    speed = 2.0 / math.cos(math.radians(30))
+    t = simulate_impact(radius, steel, RIGID, speed, 30.0, 0.3, normal_model="tabulated", force_law=law, history=False)
+    case = "steel R 5 mm on rigid, Hertz table, v_n 2 m/s, 30°"
+    src = "Hertz impact closed form (errata Eqs. 10-11)"
+    out = [
+        relative("contact", "max overlap, tabulated law", case, h.max_overlap, src, t.max_overlap, 2e-3, "m"),
+        relative("contact", "max force, tabulated law", case, h.max_force, src, t.max_force, 2e-3, "N"),
+        relative("contact", "contact time, tabulated law", case, h.contact_time, src, t.contact_time, 2e-3, "s"),
+    ]
+    ball = Material(E=70e9, nu=0.3, density=2700.0, yield_strength=100e6)
+    e_star = effective_modulus(ball, RIGID)
+    law = _thornton_table(e_star, theory.default_limiting_pressure(ball, RIGID), radius, dmax_table=3e-6)
+    vy = yield_velocity(radius, ball, RIGID)
+    b = simulate_impacts(radius, ball, RIGID, 5.0 * vy, 0.0, 0.0, normal_model="tabulated", force_law=law)
+    out.append(
+        relative("contact", "normal restitution, table of Thornton's curves", "Al ball R 5 mm, Y 100 MPa, V/V_y = 5",
+                 float(theory.thornton_restitution(5.0)), "Thornton 1997 closed form", b.normal_restitution[0], 5e-3)
+    )  # fmt: skip
+    return out

@@ -158,3 +158,28 @@ def sliding_and_additivity(quick: bool) -> list[Check]:
                  law1.K * archard.friction_work / archard.friction, "Archard: V = K W_f / μ", wm1.volume_m3, 5e-3,
                  "m³"),
     ]  # fmt: skip
+
+
+@register("wear")
+def fe_table_source(quick: bool) -> list[Check]:
+    """The ``"fe"`` pressure source fed with a nodal table of the Hertz profile (Eq. 16 sampled on 80 graded
+    surface nodes at 60 steps, as an FE result would be) gives the wear of the ``"hertz"`` source (1%)."""
+    imp = _impact(speed=3.9, angle=40.0)
+    h = imp.history
+    hertz = pressure_history(imp, "hertz")
+    steps = np.linspace(0.0, h.t[-1], 60)
+    a = np.interp(steps, h.t, h.contact_radius)
+    force = np.interp(steps, h.t, h.normal_force)
+    nodes = 1.5 * hertz.max_extent * np.linspace(0.0, 1.0, 80) ** 1.3
+    p0 = np.where(a > 0, 1.5 * force / (math.pi * np.maximum(a, 1e-30) ** 2), 0.0)
+    table = p0[:, None] * np.sqrt(np.clip(1 - (nodes[None, :] / np.maximum(a[:, None], 1e-30)) ** 2, 0, None))
+    law = WearLaw(1e-12, 1.0, 0.3)
+    v = sliding_speed(imp, "kinematic")
+    ref = integrate_wear(hertz, v, law, density=PLATE.density)
+    got = integrate_wear(pressure_history(imp, "fe", fe=(steps, nodes, table)), v, law, density=PLATE.density)
+    case = f"{CASE}, 3.9 m/s, 40°, Hertz table on 80 nodes × 60 steps"
+    src = '"hertz" source (Eq. 16 from the impact history)'
+    return [
+        relative("wear", 'worn volume, "fe" source', case, ref.volume_m3, src, got.volume_m3, 0.01, "m³"),
+        relative("wear", 'max wear depth, "fe" source', case, ref.max_depth_m, src, got.max_depth_m, 0.01, "m"),
+    ]
