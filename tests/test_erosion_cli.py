@@ -31,7 +31,7 @@ def test_erode_writes_series_surface_and_table(tmp_path, capsys):
     assert len(rows) == 6
     assert list(rows[0]) == [
         "time_s", "impacts", "particle_mass_kg", "mass_loss_kg", "mass_loss_per_area_kg_m2", "erosion_rate",
-        "max_depth_m", "rms_slope",
+        "interval_erosion_rate", "max_depth_m", "rms_slope",
     ]  # fmt: skip
     mass = np.array([float(r["mass_loss_kg"]) for r in rows])
     assert mass[0] == 0.0 and np.all(np.diff(mass) > 0)

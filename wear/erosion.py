@@ -115,9 +115,10 @@ class ErosionResult:
     """Result of :func:`erode` (SI units).
 
     ``x``, ``y`` (n,) node coordinates (m); ``wear`` (n, n) worn depth (m); ``dent`` (n, n) or None;
+    ``initial`` (n, n) the initial surface depth (m) or None;
     ``time`` (k,) s, ``impacts`` (k,), ``particle_mass_kg`` (k,) particles delivered, ``mass_loss_kg`` (k,)
     = ρ h² Σ w, ``erosion_rate`` (k,) kg/kg (cumulative), ``max_depth_m`` (k,), ``rms_slope`` (k,) of the
-    surface, sampled along the run; ``frame_time`` (f,) s and ``frames`` (f, n, n) the surface w + d at saved
+    surface, sampled along the run; ``frame_time`` (f,) s and ``frames`` (f, n, n) the surface at saved
     times; counts ``n_impacts``, ``shadowed`` (did not hit: local angle ≥ 89°) and ``clamped`` (local normal
     speed or angle outside the table, clamped to it); ``removed_m3`` Σ of the stamped volumes (m³).
     """
@@ -126,6 +127,7 @@ class ErosionResult:
     y: np.ndarray
     wear: np.ndarray
     dent: np.ndarray | None
+    initial: np.ndarray | None
     time: np.ndarray
     impacts: np.ndarray
     particle_mass_kg: np.ndarray
@@ -155,8 +157,22 @@ class ErosionResult:
 
     @property
     def surface(self) -> np.ndarray:
-        """Surface depth w + d (m, into the plate), shape (n, n)."""
-        return self.wear if self.dent is None else self.wear + self.dent
+        """Surface depth (m, into the plate) = initial + wear + dent, shape (n, n)."""
+        out = self.wear.copy()
+        for part in (self.initial, self.dent):
+            if part is not None:
+                out += part
+        return out
+
+    @property
+    def interval_erosion_rate(self) -> np.ndarray:
+        """Erosion rate between successive samples (kg/kg; first entry 0): shows how the surface feedback
+        changes the rate as the surface roughens."""
+        dm = np.diff(self.mass_loss_kg)
+        dp = np.diff(self.particle_mass_kg)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            rate = np.where(dp > 0, dm / np.where(dp > 0, dp, 1.0), 0.0)
+        return np.concatenate([[0.0], rate])
 
     @property
     def final_erosion_rate(self) -> float:
@@ -184,6 +200,7 @@ def erode(
     engine: str = "numba",
     progress: bool = False,
     max_impacts: int = MAX_IMPACTS,
+    initial: np.ndarray | None = None,
 ) -> ErosionResult:
     """Erode a periodic ``grid`` × ``grid`` patch by ``stream`` with footprints from ``table`` (see module
     docstring; SI units, degrees).
@@ -193,6 +210,8 @@ def erode(
     ``frames``: surfaces kept for the time series (≥ 1, the last at the end); ``samples``: rows of the
     mass-loss time series. ``slope_cells``: radius (nodes) of the slope-fit disc, default one contact radius.
     ``engine``: ``"numba"`` or ``"numpy"`` (the reference, slow). ``progress``: tqdm bar on stderr.
+    ``initial``: initial surface depth (m, shape (grid, grid), positive into the plate; default flat), e.g. the
+    surface of a previous run (its worn mass is not counted again).
     Raises ValueError naming the parameter for an impossible stream (``concentration``/``mass_flux`` denser
     than close-packed particles), a patch smaller than a particle or a footprint (``patch_size``), a grid
     that does not resolve the contact (``grid``/``patch_size``), or too many impacts (``exposure_time``).
@@ -211,7 +230,18 @@ def erode(
         raise ValueError(f"seed={seed!r} is out of range: must be an integer >= 0")
     stream.check_packing(table.particle_mass / (4.0 / 3.0 * math.pi * table.particle_radius**3))
     theta = math.radians(stream.angle)
-    _, _, l_nominal = table.interpolate(stream.speed * math.cos(theta), stream.angle)
+    vn_nominal = stream.speed * math.cos(theta)
+    tol = 1e-9 * stream.speed
+    if not (
+        table.normal_speed[0] - tol <= vn_nominal <= table.normal_speed[-1] + tol
+        and table.angle[0] - 1e-9 <= stream.angle <= table.angle[-1] + 1e-9
+    ):
+        raise ValueError(
+            f"table does not cover the stream: its normal speed {vn_nominal:.6g} m/s and angle {stream.angle:g} deg "
+            f"must lie in [{table.normal_speed[0]:.6g}, {table.normal_speed[-1]:.6g}] m/s x "
+            f"[{table.angle[0]:g}, {table.angle[-1]:g}] deg (build it with table_axes(speed, angle))"
+        )
+    _, _, l_nominal = table.interpolate(vn_nominal, stream.angle)
     if patch_size is None:
         patch_size = n * l_nominal / cells_per_radius
     patch_size = check_number("patch_size", patch_size, low=0.0, low_open=True, high=10.0, units="m")
@@ -249,24 +279,16 @@ def erode(
         check_number("slope_cells", slope_cells, low=1, high=n // 4, what="radius of the slope-fit disc (nodes)")
     )
 
-    k = np.arange(-slope_cells, slope_cells + 1)
-    pp, qq = np.meshgrid(k, k)
-    inside = pp**2 + qq**2 <= slope_cells**2
-    disc = np.ascontiguousarray(np.column_stack([pp[inside], qq[inside]]).astype(np.int64))
-    disc_norm = 1.0 / (h * float(np.sum(disc[:, 0] ** 2)))
-    psi = math.radians(stream.azimuth)
-    direction = np.array(
-        [
-            math.sin(theta) * math.cos(psi),
-            math.sin(theta) * math.sin(psi),
-            math.cos(theta),
-            math.cos(psi),
-            math.sin(psi),
-        ]
-    )
+    disc, disc_norm = _slope_disc(slope_cells, h)
+    direction = _direction(stream.angle, stream.azimuth)
     wear = np.zeros((n, n))
     has_dent = table.dent is not None
-    dent = np.zeros((n, n)) if has_dent else np.zeros((0, 0))
+    if initial is not None:
+        initial = np.array(initial, dtype=float)
+        if initial.shape != (n, n) or not np.all(np.isfinite(initial)):
+            raise ValueError(f"initial has shape {initial.shape}: must be a finite ({n}, {n}) depth field (m)")
+    # relief: everything of the surface that is not worn (initial shape + dents); the slope sees wear + relief
+    relief = np.zeros((n, n)) if initial is None else initial.copy()
     dent_table = np.ascontiguousarray(table.dent) if has_dent else np.zeros((0, 0, 0, 0))
     side = int(math.ceil(footprint / h)) + 4
     scratch = np.zeros(side * side)
@@ -297,14 +319,14 @@ def erode(
             count = int(stop) - done
             positions = rng.random((count, 2)) * patch_size
             kernel(
-                wear, dent, positions, h, disc, disc_norm, direction, stream.speed, table.normal_speed, table.angle,
+                wear, relief, positions, h, disc, disc_norm, direction, stream.speed, table.normal_speed, table.angle,
                 shape, table.volume_m3, table.length_scale, dent_table, float(table.u[0]), float(table.v[0]), du,
                 scratch, dent_scratch, counts, removed,
             )  # fmt: skip
             done = int(stop)
             if bar is not None:
                 bar.update(count)
-            surface = wear + dent if has_dent else wear
+            surface = wear + relief
             if done in sample_set:
                 rows["impacts"].append(done)
                 rows["mass"].append(table.plate_density * h * h * float(wear.sum()))
@@ -327,7 +349,8 @@ def erode(
         x=x,
         y=x.copy(),
         wear=wear,
-        dent=dent if has_dent else None,
+        dent=(relief - initial if initial is not None else relief) if has_dent else None,
+        initial=initial,
         time=impacts * per_impact,
         impacts=impacts,
         particle_mass_kg=delivered,
@@ -347,6 +370,24 @@ def erode(
     )
 
 
+def _slope_disc(slope_cells: int, h: float) -> tuple[np.ndarray, float]:
+    """Node offsets (p, q) of the disc p² + q² ≤ slope_cells² and 1/(h Σ p²): the least-squares slope weights."""
+    k = np.arange(-slope_cells, slope_cells + 1)
+    pp, qq = np.meshgrid(k, k)
+    inside = pp**2 + qq**2 <= slope_cells**2
+    disc = np.ascontiguousarray(np.column_stack([pp[inside], qq[inside]]).astype(np.int64))
+    return disc, 1.0 / (h * float(np.sum(disc[:, 0] ** 2)))
+
+
+def _direction(angle: float, azimuth: float) -> np.ndarray:
+    """(sin θ cos ψ, sin θ sin ψ, cos θ, cos ψ, sin ψ) of a particle at ``angle`` θ and ``azimuth`` ψ (deg)."""
+    theta, psi = math.radians(angle), math.radians(azimuth)
+    return np.array(
+        [math.sin(theta) * math.cos(psi), math.sin(theta) * math.sin(psi), math.cos(theta), math.cos(psi),
+         math.sin(psi)]
+    )  # fmt: skip
+
+
 def footprint_on_grid(
     table: ResponseTable,
     speed: float,
@@ -356,34 +397,35 @@ def footprint_on_grid(
     point: tuple[float, float] = (0.0, 0.0),
     grid: int = 128,
     patch_size: float,
+    surface: np.ndarray | None = None,
+    slope_cells: int | None = None,
     engine: str = "numba",
 ) -> np.ndarray:
     """Worn depth (m, shape (grid, grid), periodic) of one particle at ``speed`` (m/s), ``angle`` and
-    ``azimuth`` (deg) hitting the flat patch at ``point`` (m): the update :func:`erode` applies per impact."""
+    ``azimuth`` (deg) hitting the patch at ``point`` (m): the update :func:`erode` applies per impact.
+    ``surface``: the depth field (m) it meets (default flat); ``slope_cells``: radius of the slope-fit disc
+    (nodes; default one contact radius of the nominal impact)."""
     speed = check_number("speed", speed, low=0.0, low_open=True, high=1000.0, units="m/s")
     angle = check_number("angle", angle, low=0.0, high=85.0, units="deg")
-    psi = math.radians(check_number("azimuth", azimuth, low=-360.0, high=360.0, units="deg"))
+    check_number("azimuth", azimuth, low=-360.0, high=360.0, units="deg")
     n = int(check_number("grid", grid, low=16, high=8192))
     h = check_number("patch_size", patch_size, low=0.0, low_open=True, high=10.0, units="m") / n
     check_choice("engine", engine, ("numba", "numpy"))
-    theta = math.radians(angle)
-    direction = np.array(
-        [
-            math.sin(theta) * math.cos(psi),
-            math.sin(theta) * math.sin(psi),
-            math.cos(theta),
-            math.cos(psi),
-            math.sin(psi),
-        ]
-    )
+    relief = np.zeros((n, n)) if surface is None else np.array(surface, dtype=float)
+    if relief.shape != (n, n):
+        raise ValueError(f"surface has shape {relief.shape}: must be ({n}, {n}) (m)")
+    if slope_cells is None:
+        _, _, length = table.interpolate(speed * math.cos(math.radians(angle)), angle)
+        slope_cells = max(1, round(length / h))
+    disc, disc_norm = _slope_disc(int(check_number("slope_cells", slope_cells, low=1, high=n // 4)), h)
     wear = np.zeros((n, n))
     footprint = 2.0 * (max(abs(table.u[0]), abs(table.u[-1])) + abs(table.v[-1])) * float(table.length_scale.max())
     side = int(math.ceil(footprint / h)) + 4
     kernel = stamp_impacts if engine == "numba" else stamp_impacts_numpy
     kernel(
-        wear, np.zeros((0, 0)), np.array([point], dtype=float), h, np.zeros((1, 2), dtype=np.int64), 0.0, direction,
-        speed, table.normal_speed, table.angle, np.ascontiguousarray(table.shape), table.volume_m3,
-        table.length_scale, np.zeros((0, 0, 0, 0)), float(table.u[0]), float(table.v[0]),
-        float(table.u[1] - table.u[0]), np.zeros(side * side), np.zeros(1), np.zeros(2, dtype=np.int64), np.zeros(1),
+        wear, relief, np.array([point], dtype=float), h, disc, disc_norm, _direction(angle, azimuth), speed,
+        table.normal_speed, table.angle, np.ascontiguousarray(table.shape), table.volume_m3, table.length_scale,
+        np.zeros((0, 0, 0, 0)), float(table.u[0]), float(table.v[0]), float(table.u[1] - table.u[0]),
+        np.zeros(side * side), np.zeros(1), np.zeros(2, dtype=np.int64), np.zeros(1),
     )  # fmt: skip
     return wear

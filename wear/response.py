@@ -89,6 +89,16 @@ class Footprint:
         """Worn volume (m³) = sliding + deformation parts."""
         return self.sliding_volume_m3 + self.deformation_volume_m3
 
+    @classmethod
+    def from_wear_map(cls, wear_map, length_scale: float, dent=None) -> Footprint:
+        """A footprint from a :class:`wear.WearMap` (x along the impact direction, y across; m) and the
+        largest contact radius ``length_scale`` (m); ``dent`` (same grid, m) optional — e.g. from the coupled
+        pipeline's result, to plug the FE pressure and the residual dent into the stream erosion."""
+        return cls(
+            x=wear_map.x, y=wear_map.y, wear=wear_map.depth, length_scale=float(length_scale),
+            sliding_volume_m3=float(wear_map.volume_m3), dent=dent,
+        )  # fmt: skip
+
 
 def bitter_threshold_velocity(ball: Material, plate: Material) -> float:
     """Bitter's (1963) elastic-limit normal speed K_B (m/s) of a ``ball`` (the particle) on the ``plate``

@@ -1,15 +1,20 @@
 r"""The per-impact height-field update of the stream erosion (:func:`wear.erosion.erode`), two engines.
 
-:func:`stamp_impacts` (numba, ``cache=True``) and :func:`stamp_impacts_numpy` (plain numpy, vectorised over the
-nodes of one footprint: the benchmark's reference) apply the same update to the worn depth ``wear`` (m) and the
-dent ``dent`` (m, or a (0, 0) array) of a periodic grid of spacing ``h`` (m), one impact after the other, for the
-impact points ``positions`` (k, 2) (m). Per impact (see :mod:`wear.erosion`): the least-squares slope over the
-node offsets ``disc`` (scaled by ``disc_norm`` = 1/(h Σ p²)); the local angle and normal speed of the particle
-``direction`` = (sin θ cos ψ, sin θ sin ψ, cos θ, cos ψ, sin ψ) at ``speed`` (m/s); bilinear interpolation of the
-table (``vn_axis`` m/s, ``angle_axis`` deg, ``shape``, ``volume`` m³, ``length`` m, ``dent_table``; footprint
-grid origin ``u0``, ``v0`` and spacing ``du`` in units of L); the rotated footprint sampled at the nodes,
-rescaled to the interpolated volume, and added. ``scratch``/``dent_scratch`` are work arrays;
-``counts`` [shadowed, clamped] and ``removed`` [m³] are accumulated in place.
+:func:`stamp_impacts` (numba, ``cache=True``) and :func:`stamp_impacts_numpy` (plain numpy, vectorised over
+the nodes of one footprint: the benchmark's reference) apply the same update, one impact after the other, to
+the worn depth ``wear`` (m) and the ``relief`` (m: initial surface depth plus dents; surface = wear + relief)
+of a periodic grid of spacing ``h`` (m), for the impact points ``positions`` (k, 2) (m). Per impact (see
+:mod:`wear.erosion`):
+
+- the least-squares slope over the node offsets ``disc``, scaled by ``disc_norm`` = 1/(h Σ p²);
+- the local angle and normal speed of the particle ``direction`` = (sin θ cos ψ, sin θ sin ψ, cos θ, cos ψ,
+  sin ψ) at ``speed`` (m/s);
+- bilinear interpolation in the table (``vn_axis`` m/s, ``angle_axis`` deg, ``shape``, ``volume`` m³,
+  ``length`` m, ``dent_table``; footprint grid origin ``u0``, ``v0`` and spacing ``du`` in units of L);
+- the rotated footprint sampled at the nodes, rescaled to the interpolated volume, and added.
+
+``scratch``/``dent_scratch`` are work arrays; ``counts`` [shadowed, clamped] and ``removed`` [m³] are
+accumulated in place.
 """
 
 from __future__ import annotations
@@ -40,7 +45,7 @@ def _bracket(axis, value):
 
 @numba.njit(cache=True)
 def stamp_impacts(
-    wear, dent, positions, h, disc, disc_norm, direction, speed, vn_axis, angle_axis, shape, volume, length,
+    wear, relief, positions, h, disc, disc_norm, direction, speed, vn_axis, angle_axis, shape, volume, length,
     dent_table, u0, v0, du, scratch, dent_scratch, counts, removed,
 ):  # fmt: skip
     ny, nx = wear.shape
@@ -62,9 +67,7 @@ def stamp_impacts(
             q = disc[m, 1]
             row = (j0 + q) % ny
             col = (i0 + p) % nx
-            z = wear[row, col]
-            if has_dent:
-                z += dent[row, col]
+            z = wear[row, col] + relief[row, col]
             sx += p * z
             sy += q * z
         sx *= disc_norm
@@ -165,11 +168,11 @@ def stamp_impacts(
             for jj in range(jlo, jhi + 1):
                 row = jj % ny
                 for ii in range(ilo, ihi + 1):
-                    dent[row, ii % nx] += dent_scratch[(jj - jlo) * width + (ii - ilo)]
+                    relief[row, ii % nx] += dent_scratch[(jj - jlo) * width + (ii - ilo)]
 
 
 def stamp_impacts_numpy(
-    wear, dent, positions, h, disc, disc_norm, direction, speed, vn_axis, angle_axis, shape, volume, length,
+    wear, relief, positions, h, disc, disc_norm, direction, speed, vn_axis, angle_axis, shape, volume, length,
     dent_table, u0, v0, du, scratch, dent_scratch, counts, removed,
 ):  # fmt: skip
     """Plain numpy version of :func:`stamp_impacts` (same algorithm, vectorised over the nodes of one
@@ -183,7 +186,7 @@ def stamp_impacts_numpy(
     for x0, y0 in positions:
         i0, j0 = int(math.floor(x0 / h + 0.5)) % nx, int(math.floor(y0 / h + 0.5)) % ny
         rows, cols = (j0 + disc[:, 1]) % ny, (i0 + disc[:, 0]) % nx
-        z = wear[rows, cols] + dent[rows, cols] if has_dent else wear[rows, cols]
+        z = wear[rows, cols] + relief[rows, cols]
         sx, sy = float(disc[:, 0] @ z) * disc_norm, float(disc[:, 1] @ z) * disc_norm
         n = np.array([sx, sy, 1.0]) / math.sqrt(1.0 + sx * sx + sy * sy)
         cos_l = -(d[0] * n[0] + d[1] * n[1] - d[2] * n[2])
@@ -245,4 +248,4 @@ def stamp_impacts_numpy(
             np.add.at(wear, (rows, cols), vol / (total * h * h) * val)
             removed[0] += vol
         if has_dent:
-            np.add.at(dent, (rows, cols), np.where(inside, dval, 0.0))
+            np.add.at(relief, (rows, cols), np.where(inside, dval, 0.0))

@@ -6,7 +6,8 @@ registers an ``[erosion]`` table (stream concentration or mass flux, exposure, w
 resolution, seed). Output folder (every file written atomically: temporary file, then ``os.replace``):
 
 - ``erosion.csv``: time_s, impacts, particle_mass_kg, mass_loss_kg, mass_loss_per_area_kg_m2, erosion_rate
-  (kg/kg, cumulative), max_depth_m, rms_slope; ``erosion.png`` (mass loss and rate against time);
+  (kg/kg, cumulative), interval_erosion_rate (kg/kg since the previous row), max_depth_m, rms_slope;
+  ``erosion.png`` (mass loss and rates against time);
 - ``surface.vtu`` (final surface: a structured quad grid, z = −depth, point data ``depth``, ``wear`` in m),
   ``frames/surface_NNNN.vtu`` and ``erosion.pvd`` (the series, time in s; open in ParaView); ``surface.png``;
 - ``response_table.csv`` (the footprint table: normal speed, local angle, volumes, contact radius) and
@@ -329,6 +330,7 @@ def run_case(
         result.mass_loss_kg,
         result.mass_loss_kg / area,
         result.erosion_rate,
+        result.interval_erosion_rate,
         result.max_depth_m,
         result.rms_slope,
         strict=True,
@@ -342,6 +344,7 @@ def run_case(
             "mass_loss_kg",
             "mass_loss_per_area_kg_m2",
             "erosion_rate",
+            "interval_erosion_rate",
             "max_depth_m",
             "rms_slope",
         ],
@@ -370,7 +373,14 @@ def run_case(
             entries.append((float(t), name))
         write_pvd(out / "erosion.pvd", entries)
         title = f"{stream.speed:g} m/s at {stream.angle:g} deg"
-        fig.plot_time_series(result.time, result.mass_loss_kg, result.erosion_rate, out / "erosion.png", title)
+        fig.plot_time_series(
+            result.time,
+            result.mass_loss_kg,
+            result.erosion_rate,
+            out / "erosion.png",
+            title,
+            interval_rate=result.interval_erosion_rate,
+        )
         fig.plot_surface(result.x, result.y, result.surface, out / "surface.png", stream.azimuth, title)
     summary = _summary(
         case,

@@ -1,6 +1,7 @@
 """Figures of a particle-stream erosion (matplotlib, Agg; SI units on every axis, written atomically).
 
-``erosion.png``: mass loss (kg) and cumulative erosion rate (kg of plate per kg of particles) against time.
+``erosion.png``: mass loss (kg) and erosion rate (kg of plate per kg of particles: cumulative and between
+samples) against time.
 ``surface.png``: the eroded surface depth map (µm) with the stream direction. ``erosion_vs_angle.png``:
 erosion rate and mass loss against the stream angle (deg from the plate normal).
 """
@@ -41,8 +42,11 @@ def _save(fig, path: str | os.PathLike) -> Path:
     return p
 
 
-def plot_time_series(time, mass_loss_kg, erosion_rate, path: str | os.PathLike, title: str = "") -> Path:
-    """Mass loss (kg) and cumulative erosion rate (kg/kg) against exposure time (s) into ``path``."""
+def plot_time_series(
+    time, mass_loss_kg, erosion_rate, path: str | os.PathLike, title: str = "", interval_rate=None
+) -> Path:
+    """Mass loss (kg) and cumulative erosion rate (kg/kg; with ``interval_rate`` also the rate between samples)
+    against exposure time (s) into ``path``."""
     plt = _pyplot()
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
     t = np.asarray(time)
@@ -51,7 +55,10 @@ def plot_time_series(time, mass_loss_kg, erosion_rate, path: str | os.PathLike, 
     ax1.set_ylabel("mass loss of the patch (kg)")
     ax1.grid(alpha=0.3)
     rate = np.asarray(erosion_rate)
-    ax2.plot(t[1:], rate[1:], "-")
+    ax2.plot(t[1:], rate[1:], "-", label="cumulative")
+    if interval_rate is not None:
+        ax2.plot(t[1:], np.asarray(interval_rate)[1:], ".", ms=3, label="between samples")
+        ax2.legend()
     ax2.set_xlabel("exposure time (s)")
     ax2.set_ylabel("erosion rate (kg/kg of particles)")
     ax2.set_ylim(bottom=0.0)
