@@ -249,3 +249,23 @@ def test_continuing_from_an_initial_surface(table):
         erode(tab, stream, grid=96, initial=np.zeros((4, 4)))
     with pytest.raises(ValueError, match=r"^table does not cover the stream"):
         erode(tab, Stream(SPEED, 70.0, 1.0, concentration=CONC), grid=96)
+
+
+def test_erosion_rate_converges_with_the_grid(rough_table):
+    """The default grid (4 nodes per contact radius) against twice as fine on the same patch, on the rough
+    surface (rms slope ≈ 0.9, feedback −1.7%): the erosion rates agree within 3 standard errors of their
+    difference over 5 seeds (measured: 0.983 vs 0.982 of the flat rate, standard error 0.3%)."""
+    length = rough_table.interpolate(SPEED * math.cos(math.radians(ANGLE)), ANGLE)[2]
+    patch = 128 * length / 4.0
+    stream = Stream(SPEED, ANGLE, 100.0, concentration=CONC)
+    rates = [
+        np.array(
+            [
+                erode(rough_table, stream, grid=g, patch_size=patch, seed=s, samples=2, frames=1).final_erosion_rate
+                for s in range(5)
+            ]
+        )  # fmt: skip
+        for g in (128, 256)
+    ]
+    se = math.sqrt(sum(r.var(ddof=1) / r.size for r in rates))
+    assert abs(rates[1].mean() - rates[0].mean()) < 3 * se, (rates[0].mean(), rates[1].mean(), se)
