@@ -364,11 +364,16 @@ FIGURES: dict[str, Callable[[Path, bool], FigureReport]] = {
 }
 
 
-def _register_fe_figures() -> None:
-    """Add the figures that need the FE plate (:mod:`wear.app.reproduce_fe`) if that stage is available."""
-    from . import reproduce_fe
-
+def _register_fe_figures() -> dict[str, str]:
+    """Add the figures that need the FE plate (:mod:`wear.app.reproduce_fe`); return name → why missing for the
+    FE figures that this build cannot produce."""
+    try:
+        from . import reproduce_fe
+    except ImportError as exc:
+        why = f"needs the FE plate (fem.indent), not available in this build ({exc})"
+        return {name: why for name in FE_FIGURE_NAMES}
     FIGURES.update(reproduce_fe.FIGURES)
+    return {name: reproduce_fe.MISSING.get(name, "not produced") for name in FE_FIGURE_NAMES if name not in FIGURES}
 
 
 def _write_text(path: Path, text: str) -> None:
@@ -422,15 +427,10 @@ def render_markdown(reports: list[FigureReport], quick: bool = False) -> str:
 def reproduce(out: str | os.PathLike, *, quick: bool = False, only=None, progress=None) -> list[FigureReport]:
     """Compute every figure of :data:`FIGURES` (or those named in ``only``) into ``out/figures/`` and write
     ``out/reproduce.md``. ``progress(name)`` is called before each figure. Returns the reports."""
-    try:
-        _register_fe_figures()
-    except ImportError as exc:
-        missing_fe = f"needs the FE plate (fem.indent) and the coupled pipeline, not available in this build ({exc})"
-    else:
-        missing_fe = None
+    missing = _register_fe_figures()
     out = Path(out)
     (out / "figures").mkdir(parents=True, exist_ok=True)
-    names = list(FIGURES) + ([n for n in FE_FIGURE_NAMES if n not in FIGURES] if missing_fe else [])
+    names = list(FIGURES) + list(missing)
     if only:
         unknown = [n for n in only if n not in names]
         if unknown:
@@ -441,7 +441,7 @@ def reproduce(out: str | os.PathLike, *, quick: bool = False, only=None, progres
         if progress is not None:
             progress(name)
         if name not in FIGURES:
-            reports.append(FigureReport(name, name, missing=missing_fe))
+            reports.append(FigureReport(name, name, missing=missing[name]))
             continue
         start = time.perf_counter()
         rep = FIGURES[name](out / "figures", quick)

@@ -105,14 +105,22 @@ def register(area: str, name: str | None = None):
     return wrap
 
 
+#: module → why it was not loaded (its stage is not in this build), filled by :func:`load_groups`.
+SKIPPED: dict[str, str] = {}
+
+
 def load_groups() -> dict[str, Group]:
-    """Import every module of :data:`CHECK_MODULES` that exists (registering its groups); return :data:`GROUPS`."""
+    """Import every module of :data:`CHECK_MODULES` that exists (registering its groups); return :data:`GROUPS`.
+
+    A module that raises ``ModuleNotFoundError`` naming itself (its stage is missing) is recorded in
+    :data:`SKIPPED` and reported."""
     for module in CHECK_MODULES:
         try:
             importlib.import_module(module)
         except ModuleNotFoundError as exc:
             if exc.name != module:
                 raise
+            SKIPPED[module] = str(exc)
     return GROUPS
 
 
@@ -197,6 +205,10 @@ def render_report(result: Validation, command: str = "impactwear validate") -> s
         "number, a closed form evaluated separately, or a conservation law. Error and tolerance use the stated "
         "measure (relative unless units are given). SI units; angles in degrees from the plate normal.",
         "",
+    ]
+    if SKIPPED:
+        lines += [f"**Not run:** `{m}` ({why})." for m, why in SKIPPED.items()] + [""]
+    lines += [
         "| area | checks | passed | time (s) |",
         "|---|---|---|---|",
     ]
