@@ -183,3 +183,31 @@ def fe_table_source(quick: bool) -> list[Check]:
         relative("wear", 'worn volume, "fe" source', case, ref.volume_m3, src, got.volume_m3, 0.01, "m³"),
         relative("wear", 'max wear depth, "fe" source', case, ref.max_depth_m, src, got.max_depth_m, 0.01, "m"),
     ]
+
+
+@register("wear")
+def erosion_flux_balance(quick: bool) -> list[Check]:
+    """Particle-stream erosion on a still-flat plate: the number of impacts is the flux balance
+    N = c V cos θ A T / m_p, and the mass loss is N × (one impact's worn volume from the single-impact chain
+    contact.simulate_impact → wear.wear_from_impact, not the response table) × plate density (0.5%)."""
+    from wear.erosion import Stream, erode
+    from wear.response import ImpactResponse, build_response_table, table_axes
+
+    sand = Material(E=94e9, nu=0.17, density=2650.0, name="silica")
+    steel = Material(E=200e9, nu=0.3, density=7850.0, yield_strength=350e6, name="steel")
+    radius, speed, angle, mu, conc, exposure = 100e-6, 20.0, 45.0, 0.3, 0.464, 20.0
+    law = WearLaw(K=1e-11, alpha=1.0, beta=0.3)
+    response = ImpactResponse(radius, sand, steel, mu, law, pressure="hertz", points_across=48)
+    vn, angles = table_axes(speed, angle, angle_margin=10.0, angle_step=5.0, speeds=3)
+    table = build_response_table(response, vn, angles, points_per_length=8)
+    single = wear_from_impact(simulate_impact(radius, sand, steel, speed, angle, mu), law, pressure="hertz")
+    result = erode(table, Stream(speed, angle, exposure, concentration=conc), grid=64 if quick else 128, seed=3)
+    m_p = 4.0 / 3.0 * math.pi * radius**3 * sand.density
+    n_expected = conc * speed * math.cos(math.radians(angle)) * result.patch_size**2 * exposure / m_p
+    case = "silica R 100 µm on steel, 20 m/s, 45°, c 0.464 kg/m³, 20 s"
+    return [
+        absolute("wear", "number of impacts on the patch", case, round(n_expected), "flux balance c V cos θ A T / m_p",
+                 result.n_impacts, 0.0),
+        relative("wear", "eroded mass (flat plate)", case, result.n_impacts * single.volume_m3 * steel.density,
+                 "N × single-impact chain × density", float(result.mass_loss_kg[-1]), 5e-3, "kg"),
+    ]  # fmt: skip
