@@ -1,0 +1,149 @@
+"""Two-way impact ⇄ plate coupling (wear/coupling.py; issue 4 acceptance 5).
+
+The coupling machinery (loading once, unloading from the converged maximum, the tabulated law, the FE pressure
+placed on the impact's time axis) is first checked with stand-in "plates" whose force laws are closed forms
+(Hertz 1882; Thornton 1997), so the coupled impact must reproduce those closed forms. The same checks on the
+real FE plate (fem.indent) run when fem is available.
+"""
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import pytest
+
+from contact import Material, TabulatedLaw, effective_modulus
+from contact.theory import hertz_force, hertz_impact, sphere_mass, thornton_restitution, yield_velocity
+from wear import coupling
+from wear.pipeline import Case
+
+BALL = Material(E=210e9, nu=0.3, density=7850.0, name="steel")
+
+
+@dataclass
+class ClosedFormPlate:
+    """A stand-in FE result on a path of overlaps: Hertz loading (elastic) or Thornton (1997) elastic-perfectly
+    plastic loading F = F_y + π p_y R (δ − δ_y), with Thornton's elastic unloading of enlarged radius R_p."""
+
+    overlap: np.ndarray
+    force: np.ndarray
+    contact_radius: np.ndarray
+    surface_r: np.ndarray
+    pressure: np.ndarray
+    residual_depth: np.ndarray
+    first_yield: object = None
+    regime: tuple = ()
+
+    def force_law(self):
+        k = int(np.argmax(self.overlap))
+        d, f, a = self.overlap[: k + 1], self.force[: k + 1], self.contact_radius[: k + 1]
+        ud, uf, ua = self.overlap[k:], self.force[k:], self.contact_radius[k:]
+        zero = np.flatnonzero(uf <= 0.0)
+        n = zero[0] + 1 if zero.size else ud.size
+        return TabulatedLaw(
+            np.concatenate([[0.0], d]),
+            np.concatenate([[0.0], f]),
+            np.concatenate([[0.0], a]),
+            np.array([d[-1]]),
+            ud[None, :n],
+            uf[None, :n],
+            ua[None, :n],
+        )
+
+
+def closed_form_indent(radius, e_star, p_y=None):
+    """indent(case, ball, plate, overlaps) for the stand-in plate (dense unloading from each path's maximum)."""
+
+    def indent(case, ball, plate, overlaps):
+        overlaps = np.asarray(overlaps, float)
+        k = int(np.argmax(overlaps))
+        d_star = overlaps[k]
+        if k < overlaps.size - 1:  # replace the unloading by a dense one so the table resolves the curve
+            overlaps = np.concatenate([overlaps[: k + 1], d_star * (1 - np.linspace(0, 1, 400)[1:] ** 1.2)])
+        F = np.zeros_like(overlaps)
+        a = np.zeros_like(overlaps)
+        if p_y is None:
+            F = hertz_force(overlaps, radius, e_star)
+            a = np.sqrt(radius * overlaps)
+            f_star, d_p, r_p = float(hertz_force(d_star, radius, e_star)), 0.0, radius
+        else:
+            d_y = (math.pi * p_y / (2 * e_star)) ** 2 * radius
+            f_y = float(hertz_force(d_y, radius, e_star))
+            load = overlaps[: k + 1]
+            F[: k + 1] = np.where(
+                load <= d_y, hertz_force(load, radius, e_star), f_y + math.pi * p_y * radius * (load - d_y)
+            )
+            a[: k + 1] = np.sqrt(radius * load)
+            f_star = float(F[k])
+            if d_star <= d_y:
+                d_p, r_p = 0.0, radius
+            else:
+                r_p = 4 * e_star / (3 * f_star) * ((2 * f_star + f_y) / (2 * math.pi * p_y)) ** 1.5
+                d_p = d_star - (3 * f_star / (4 * e_star * math.sqrt(r_p))) ** (2 / 3)
+        un = overlaps[k + 1 :]
+        F[k + 1 :] = 4 / 3 * e_star * math.sqrt(r_p) * np.maximum(un - d_p, 0) ** 1.5
+        a[k + 1 :] = np.sqrt(r_p * np.maximum(un - d_p, 0))
+        a_max = a.max()
+        r = np.linspace(0, 3 * a_max, 121)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            p0 = np.where(a > 0, 3 * F / (2 * math.pi * np.maximum(a, 1e-300) ** 2), 0.0)
+        ratio = np.divide(r[None, :], a[:, None], out=np.full((a.size, r.size), 2.0), where=a[:, None] > 0)
+        p = p0[:, None] * np.sqrt(np.maximum(1 - ratio**2, 0))
+        return ClosedFormPlate(overlaps, F, a, r, p, np.zeros_like(r))
+
+    return indent
+
+
+def _case(plate: Material, speed: float, angle: float = 0.0, **fem):
+    return Case.from_dict(
+        {
+            "ball": {"radius": 5e-3, "E": BALL.E, "nu": BALL.nu, "density": BALL.density, "name": "steel"},
+            "plate": {"E": plate.E, "nu": plate.nu, "density": plate.density, "yield_strength": plate.yield_strength},
+            "impact": {"speed": speed, "angle": angle, "friction": 0.3, "normal_model": "thornton"},
+            "fem": fem,
+        }
+    )
+
+
+def _couple(case, indent):
+    ball, plate = case.ball.material(), case.plate.material()
+    from wear.pipeline import _impact
+
+    estimate = _impact(case, ball, plate)
+    fe_load = coupling.load_plate(case, ball, plate, estimate, indent=indent)
+    return coupling.couple(case, ball, plate, fe_load, estimate, indent=indent)
+
+
+def test_coupling_on_hertz_plate_reproduces_hertz_impact():
+    """Stand-in elastic plate (Hertz law tabulated): the coupled impact's max force and contact time equal the
+    closed-form Hertz impact (errata Eqs. 4, 10–11) within 1%, e_n = 1 within 1%; converges in ≤ 3 impact runs."""
+    plate = Material(E=210e9, nu=0.3, density=7850.0)
+    case = _case(plate, 1.0, angle=30.0)
+    e_star = effective_modulus(BALL, plate)
+    res = _couple(case, closed_form_indent(5e-3, e_star))
+    ref = hertz_impact(sphere_mass(5e-3, BALL.density), 5e-3, e_star, math.cos(math.radians(30.0)))
+    assert res.converged and res.iterations <= 3 and res.change < 0.005
+    assert res.impact.max_force == pytest.approx(ref.max_force, rel=0.01)
+    assert res.impact.contact_time == pytest.approx(ref.contact_time, rel=0.01)
+    assert res.impact.normal_restitution == pytest.approx(1.0, rel=0.01)
+    # FE pressure placed on the impact time axis: its peak force history integrates back to max force
+    t, r, p = res.pressure_table
+    assert np.all(np.diff(t) > 0)
+    force = 2 * math.pi * np.trapezoid(p * r, r, axis=1)
+    assert force.max() == pytest.approx(ref.max_force, rel=0.02)
+
+
+@pytest.mark.parametrize("ratio", [1.5, 2.0, 5.0])
+def test_coupling_on_thornton_plate_reproduces_thornton_restitution(ratio):
+    """Stand-in elastic-perfectly plastic plate with Thornton's (1997) loading/unloading laws: the coupled normal
+    restitution equals Thornton's closed form e(V/V_y) (contact.theory.thornton_restitution) within 1%."""
+    plate = Material(E=210e9, nu=0.3, density=7850.0, yield_strength=400e6)
+    e_star = effective_modulus(BALL, plate)
+    v_y = yield_velocity(5e-3, BALL, plate)
+    from contact.theory import default_limiting_pressure
+
+    p_y = default_limiting_pressure(BALL, plate)
+    case = _case(plate, ratio * v_y)
+    res = _couple(case, closed_form_indent(5e-3, e_star, p_y))
+    assert res.converged
+    assert res.impact.normal_restitution == pytest.approx(float(thornton_restitution(ratio)), rel=0.01)
