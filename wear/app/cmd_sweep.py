@@ -39,13 +39,17 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def main(args: argparse.Namespace) -> int:
-    from .sweep import failed_lines, run_sweep, summary_line
+    from .sweep import SweepAborted, failed_lines, run_sweep, summary_line
     from .sweep_spec import load_sweep
 
     spec = load_sweep(args.sweep)
-    outcome = run_sweep(
-        spec, args.out, workers=args.workers, dask_local=args.dask_local, scheduler=args.scheduler, quiet=args.quiet
-    )
+    try:
+        outcome = run_sweep(
+            spec, args.out, workers=args.workers, dask_local=args.dask_local, scheduler=args.scheduler, quiet=args.quiet
+        )
+    except SweepAborted as exc:
+        print(f"impactwear sweep: error: {exc}", file=sys.stderr)
+        return 1
     if outcome.failed:
         for line in failed_lines(outcome):
             print(f"failed {line}", file=sys.stderr)

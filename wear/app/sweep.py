@@ -39,7 +39,7 @@ from pathlib import Path
 from .sweep_spec import SweepCase, SweepSpec, flatten
 from .sweep_stages import execute_case
 
-__all__ = ["SweepOutcome", "run_sweep", "results_table", "MAX_ATTEMPTS"]
+__all__ = ["SweepOutcome", "SweepAborted", "run_sweep", "results_table", "MAX_ATTEMPTS"]
 
 #: A case is recorded as failed after the worker running it died this many times.
 MAX_ATTEMPTS = 3
@@ -129,11 +129,21 @@ def _threads_per_worker(workers: int) -> int:
 Done = Callable[[SweepCase, dict], None]
 
 
+class SweepAborted(RuntimeError):
+    """The local worker processes keep dying without finishing any case (e.g. they cannot start)."""
+
+
 def _run_local(pending: list[SweepCase], stage: str, workers: int, done: Done) -> None:
-    """Run ``pending`` on a pool of ``workers`` spawned processes, at most ``workers`` cases in flight."""
+    """Run ``pending`` on a pool of ``workers`` spawned processes, at most ``workers`` cases in flight.
+
+    When a worker dies the pool is replaced and the cases that were in flight are retried; a case in flight
+    during :data:`MAX_ATTEMPTS` breakdowns is recorded as failed. After ``MAX_ATTEMPTS + 2`` breakdowns in a row
+    with no case finishing in between, the workers evidently cannot run at all: :class:`SweepAborted`.
+    """
     ctx = multiprocessing.get_context("spawn")
     queue = list(reversed(pending))
     attempts: dict[str, int] = {}
+    breaks_in_a_row = 0
     while queue:
         pool = cf.ProcessPoolExecutor(
             max_workers=workers,
@@ -152,7 +162,7 @@ def _run_local(pending: list[SweepCase], stage: str, workers: int, done: Done) -
                 for fut in finished:
                     sc = running.pop(fut)
                     try:
-                        done(sc, fut.result())
+                        outcome = fut.result()
                     except cf.process.BrokenProcessPool:
                         broken = True
                         attempts[sc.case_id] = attempts.get(sc.case_id, 0) + 1
@@ -161,12 +171,22 @@ def _run_local(pending: list[SweepCase], stage: str, workers: int, done: Done) -
                             done(sc, {"status": "failed", "results": None, "error": msg, "traceback": None})
                         else:
                             queue.append(sc)
+                        continue
+                    breaks_in_a_row = 0
+                    done(sc, outcome)
                 if broken and not running:
                     break  # every in-flight case is accounted for: start a fresh pool
         except BaseException:
             _kill_pool(pool)
             raise
         pool.shutdown(wait=True, cancel_futures=True)
+        if broken:
+            breaks_in_a_row += 1
+            if breaks_in_a_row >= MAX_ATTEMPTS + 2:
+                raise SweepAborted(
+                    f"local worker processes died {breaks_in_a_row} times in a row without finishing a case "
+                    "(see their messages above); finished cases are kept"
+                )
 
 
 def _kill_pool(pool: cf.ProcessPoolExecutor) -> None:
