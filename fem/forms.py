@@ -1,0 +1,196 @@
+r"""Axisymmetric P2 kinematics and vectorised assembly of the tangent and the internal force.
+
+Displacement u = (u_r, u_z) on P2 triangles (scikit-fem's :class:`~skfem.ElementTriP2` basis,
+our own interleaved numbering: global DOF 2·n + c for scalar node n and component c = 0 (r),
+1 (z)). Strains in Mandel notation, so a 4 × 4 tangent acts as a plain matrix:
+
+.. math::
+    \varepsilon = \left(\partial_r u_r,\; \partial_z u_z,\; u_r / r,\;
+    \tfrac{1}{\sqrt2}(\partial_z u_r + \partial_r u_z)\right),
+
+and every integral carries the axisymmetric weight 2πr:
+
+.. math:: K = \sum_e \sum_q B_q^T D_q B_q \, 2\pi r_q\, w_q |J_e|, \qquad
+          f_{int} = \sum_e \sum_q B_q^T \sigma_q \, 2\pi r_q\, w_q |J_e| .
+
+The element matrices are formed with numpy batched products and summed into a fixed CSR
+pattern (computed once) with :func:`numpy.bincount`; scikit-fem's generic form assembly would
+re-evaluate the basis at every Newton iteration.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+from skfem import Basis, ElementTriP2, FacetBasis, MeshTri
+
+__all__ = ["Discretisation", "discretise", "elastic_tangent"]
+
+SQRT2 = math.sqrt(2.0)
+
+
+@dataclass(frozen=True, eq=False)
+class Discretisation:
+    """Everything the solver needs about the mesh, precomputed once.
+
+    ``B`` (elements, qp, 4, 12) strain operators, ``weight`` (elements, qp) = 2πr w |J| (m³),
+    ``element_dofs`` (elements, 12), ``qp_r``/``qp_z`` (elements, qp) quadrature coordinates (m),
+    CSR pattern (``indptr``, ``indices``) with ``entry_index`` mapping element entries to it,
+    ``axis_dofs``/``bottom_dofs`` (constrained), ``surface_nodes`` (scalar node ids sorted by r),
+    ``surface_r`` (m), ``surface_mass`` (2πr-weighted P2 mass matrix on the surface nodes, m²),
+    ``node_r``/``node_z`` (m) of every scalar node.
+    """
+
+    mesh: MeshTri
+    basis: Basis
+    B: np.ndarray
+    weight: np.ndarray
+    element_dofs: np.ndarray
+    qp_r: np.ndarray
+    qp_z: np.ndarray
+    indptr: np.ndarray
+    indices: np.ndarray
+    entry_index: np.ndarray
+    ndofs: int
+    axis_dofs: np.ndarray
+    bottom_dofs: np.ndarray
+    surface_nodes: np.ndarray
+    surface_r: np.ndarray
+    surface_mass: sp.csr_matrix
+    node_r: np.ndarray
+    node_z: np.ndarray
+    surface_layer: np.ndarray  # (elements, qp) bool: quadrature points of elements touching z = 0
+
+    def matrix(self, data: np.ndarray) -> sp.csr_matrix:
+        """CSR matrix with the fixed pattern and the given ``data``."""
+        return sp.csr_matrix((data, self.indices, self.indptr), shape=(self.ndofs, self.ndofs))
+
+
+def elastic_tangent(E: float, nu: float) -> np.ndarray:
+    """Isotropic elastic 4 × 4 Mandel tangent (Pa): D = 3K·P_vol + 2G·P_dev."""
+    bulk = E / (3.0 * (1.0 - 2.0 * nu))
+    shear = E / (2.0 * (1.0 + nu))
+    one = np.array([1.0, 1.0, 1.0, 0.0])
+    p_vol = np.outer(one, one) / 3.0
+    return 3.0 * bulk * p_vol + 2.0 * shear * (np.eye(4) - p_vol)
+
+
+def discretise(mesh: MeshTri, intorder: int = 4) -> Discretisation:
+    """Precompute the P2 axisymmetric operators of ``mesh`` (r, z in m; named boundaries required)."""
+    basis = Basis(mesh, ElementTriP2(), intorder=intorder)
+    nel = mesh.t.shape[1]
+    nq = basis.dx.shape[1]
+    nloc = len(basis.basis)  # 6 scalar functions
+    phi = np.stack([np.asarray(basis.basis[i][0]) for i in range(nloc)])  # (6, el, qp)
+    grad = np.stack([basis.basis[i][0].grad for i in range(nloc)])  # (6, 2, el, qp)
+    x = np.asarray(basis.global_coordinates())  # (2, el, qp)
+    r = x[0]
+    B = np.zeros((nel, nq, 4, 2 * nloc))
+    dr = np.moveaxis(grad[:, 0], 0, -1)  # (el, qp, 6)
+    dz = np.moveaxis(grad[:, 1], 0, -1)
+    ph = np.moveaxis(phi, 0, -1)
+    B[:, :, 0, 0::2] = dr
+    B[:, :, 1, 1::2] = dz
+    B[:, :, 2, 0::2] = ph / r[:, :, None]
+    B[:, :, 3, 0::2] = dz / SQRT2
+    B[:, :, 3, 1::2] = dr / SQRT2
+    weight = 2.0 * np.pi * r * basis.dx
+
+    scalar_dofs = basis.element_dofs.T  # (el, 6)
+    element_dofs = np.empty((nel, 2 * nloc), dtype=np.int64)
+    element_dofs[:, 0::2] = 2 * scalar_dofs
+    element_dofs[:, 1::2] = 2 * scalar_dofs + 1
+    ndofs = 2 * basis.N
+
+    rows = np.repeat(element_dofs[:, :, None], 2 * nloc, axis=2).ravel()
+    cols = np.repeat(element_dofs[:, None, :], 2 * nloc, axis=1).ravel()
+    keys = rows * ndofs + cols
+    unique, entry_index = np.unique(keys, return_inverse=True)
+    urows = unique // ndofs
+    indices = (unique % ndofs).astype(np.int32)
+    indptr = np.zeros(ndofs + 1, dtype=np.int64)
+    np.add.at(indptr, urows + 1, 1)
+    indptr = np.cumsum(indptr)
+
+    axis_nodes = basis.get_dofs(mesh.boundaries["axis"]).flatten()
+    bottom_nodes = basis.get_dofs(mesh.boundaries["bottom"]).flatten()
+    surface_facets = mesh.boundaries["surface"]
+    surf = basis.get_dofs(surface_facets).flatten()
+    node_r, node_z = basis.doflocs
+    surf = surf[np.argsort(node_r[surf])]
+
+    fb = FacetBasis(mesh, ElementTriP2(), facets=surface_facets, intorder=6)
+    phis = [np.asarray(fb.basis[i][0]) for i in range(len(fb.basis))]
+    rf = np.asarray(fb.global_coordinates())[0]
+    w = 2.0 * np.pi * rf * fb.dx
+    fdofs = fb.element_dofs  # (6, facets): only 3 non-zero on the facet
+    ent_r, ent_c, ent_v = [], [], []
+    for i in range(len(phis)):
+        for j in range(len(phis)):
+            ent_r.append(fdofs[i])
+            ent_c.append(fdofs[j])
+            ent_v.append(np.sum(phis[i] * phis[j] * w, axis=1))
+    mass = sp.coo_matrix(
+        (np.concatenate(ent_v), (np.concatenate(ent_r), np.concatenate(ent_c))), shape=(basis.N, basis.N)
+    ).tocsr()
+    surface_mass = mass[surf][:, surf].tocsr()
+
+    on_surface = np.abs(mesh.p[1]) <= 1e-12 * max(np.ptp(mesh.p[1]), 1e-300)
+    touches = on_surface[mesh.t].any(axis=0)
+    surface_layer = np.repeat(touches[:, None], nq, axis=1)
+
+    return Discretisation(
+        mesh=mesh,
+        basis=basis,
+        B=B,
+        weight=weight,
+        element_dofs=element_dofs,
+        qp_r=r,
+        qp_z=x[1],
+        indptr=indptr,
+        indices=indices,
+        entry_index=entry_index,
+        ndofs=ndofs,
+        axis_dofs=2 * axis_nodes,
+        bottom_dofs=2 * bottom_nodes + 1,
+        surface_nodes=surf,
+        surface_r=node_r[surf],
+        surface_mass=surface_mass,
+        node_r=node_r,
+        node_z=node_z,
+        surface_layer=surface_layer,
+    )
+
+
+def strain(disc: Discretisation, u: np.ndarray) -> np.ndarray:
+    """Mandel strain (elements, qp, 4) of the displacement ``u`` (m)."""
+    ue = u[disc.element_dofs]  # (el, 12)
+    return np.einsum("eqij,ej->eqi", disc.B, ue, optimize=True)
+
+
+def internal_force(disc: Discretisation, stress: np.ndarray) -> np.ndarray:
+    """f_int (N) of the Mandel ``stress`` (elements, qp, 4) in Pa."""
+    fe = np.einsum("eqij,eqi,eq->ej", disc.B, stress, disc.weight, optimize=True)
+    return np.bincount(disc.element_dofs.ravel(), weights=fe.ravel(), minlength=disc.ndofs)
+
+
+def element_matrices(disc: Discretisation, tangent: np.ndarray, elements: np.ndarray | None = None) -> np.ndarray:
+    """Element stiffness matrices (n, 12, 12) in N/m for the 4 × 4 ``tangent`` per (element, qp).
+
+    ``tangent`` is (n, qp, 4, 4) for the n elements selected by ``elements`` (all if None), or
+    (4, 4) for a uniform elastic tangent.
+    """
+    B = disc.B if elements is None else disc.B[elements]
+    w = disc.weight if elements is None else disc.weight[elements]
+    DB = np.matmul(tangent, B)
+    BT = np.swapaxes(B, 2, 3) * w[:, :, None, None]
+    return np.matmul(BT, DB).sum(axis=1)
+
+
+def assemble(disc: Discretisation, element_data: np.ndarray) -> sp.csr_matrix:
+    """Sum element matrices (elements, 12, 12) into the fixed CSR pattern."""
+    data = np.bincount(disc.entry_index, weights=element_data.ravel(), minlength=disc.indices.size)
+    return disc.matrix(data)

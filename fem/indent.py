@@ -1,0 +1,354 @@
+r"""Public entry points: :func:`indent`, :func:`indent_impact`, :func:`plate_mesh` (SI units).
+
+An elastic ball is represented by a rigid sphere and a plate of modulus E_p' = E*(1 − ν_p²), so
+that the effective modulus E* (errata Eq. 5) is unchanged: exact for the Hertz (elastic) solution,
+an approximation once the plate yields (the ball's own deformation is then not resolved).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import warnings
+from pathlib import Path
+
+import numpy as np
+from skfem import MeshTri
+
+from contact.materials import Material, effective_modulus
+from contact.theory import first_yield as hertz_first_yield
+from contact.validation import check_array, check_number
+
+from .mesh import DEFAULT_PARAMETERS, default_mesh, generate_mesh, load_mesh, scale_mesh
+from .plasticity import J2Material, von_mises
+from .result import FirstYieldPoint, IndentationResult
+from .solver import PlateSolver, PlateState
+from .sphere_contact import contact_radius, sphere_surface
+
+__all__ = ["indent", "indent_impact", "plate_mesh", "estimate_contact_radius"]
+
+#: Largest a/R accepted (small strain); a warning is given above SMALL_STRAIN_WARNING.
+SMALL_STRAIN_LIMIT = 0.3
+SMALL_STRAIN_WARNING = 0.1
+
+
+def _plate_model(plate: Material, ball: Material | None, hardening: float) -> tuple[J2Material, float]:
+    if not isinstance(plate, Material):
+        raise ValueError(f"plate={plate!r} is not a contact.Material")
+    if plate.is_rigid:
+        raise ValueError("plate.E=inf: the plate must be deformable (finite E in Pa)")
+    e_star = effective_modulus(ball if ball is not None else Material.rigid(), plate)
+    E = e_star * (1.0 - plate.nu**2)
+    if ball is not None and not ball.is_rigid and plate.yield_strength is not None:
+        warnings.warn(
+            "elastic ball: represented by a rigid sphere and a plate with the same E*; exact while elastic, "
+            "approximate once the plate yields",
+            stacklevel=3,
+        )
+    return J2Material(E, plate.nu, plate.yield_strength, hardening), e_star
+
+
+def estimate_contact_radius(radius: float, e_star: float, plate: Material, overlap: float) -> float:
+    """Contact radius (m) expected at ``overlap`` (m): Hertz √(Rδ) while elastic, Kogut & Etsion's
+    (2002) A/A_c = 0.93 w^1.136 (w ≤ 6), 0.94 w^1.146 (w > 6), w = δ/δ_c, once yielded."""
+    a = math.sqrt(radius * overlap)
+    if plate.yield_strength is None:
+        return a
+    fy = hertz_first_yield(radius, e_star, plate.yield_strength, plate.nu)
+    w = overlap / fy.overlap
+    if w <= 1.0:
+        return a
+    area_ratio = 0.93 * w**1.136 if w <= 6.0 else 0.94 * w**1.146
+    return max(a, fy.contact_radius * math.sqrt(area_ratio))
+
+
+def plate_mesh(
+    radius: float,
+    plate: Material,
+    max_overlap: float,
+    ball: Material | None = None,
+    contact_elements: int | None = None,
+    yield_elements: int | None = None,
+) -> MeshTri:
+    """Mesh (m) for a path reaching ``max_overlap`` (m): the default mesh scaled to the expected
+    largest contact radius, or (if element counts are given) a mesh generated for this case with
+    :func:`fem.mesh.generate_mesh` (its yield box sized at the case's first-yield contact radius)."""
+    radius = check_number("radius", radius, low=1e-6, high=10.0, units="m", what="ball radius")
+    max_overlap = check_number("max_overlap", max_overlap, low=0.0, low_open=True, high=radius, units="m")
+    _, e_star = _plate_model(plate, ball, 0.0)
+    a_max = estimate_contact_radius(radius, e_star, plate, max_overlap)
+    if contact_elements is None and yield_elements is None:
+        return default_mesh(a_max)
+    params = dict(DEFAULT_PARAMETERS)
+    if contact_elements is not None:
+        params["contact_elements"] = contact_elements
+    if yield_elements is not None:
+        params["yield_elements"] = yield_elements
+    if plate.yield_strength is not None:
+        a_y = hertz_first_yield(radius, e_star, plate.yield_strength, plate.nu).contact_radius
+        params["yield_radius_ratio"] = min(1.0, a_y / a_max)
+    return scale_mesh(generate_mesh(**params), a_max)
+
+
+class _Run:
+    """A solver plus the kept states of a loading run (see :meth:`IndentationResult.unload_from`)."""
+
+    def __init__(self, solver: PlateSolver, e_star: float, radius: float):
+        self.solver = solver
+        self.e_star = e_star
+        self.radius = radius
+        self.kept: list[PlateState] = []
+        self.final: PlateState | None = None
+
+    # -- one step's numbers
+    def measure(self, state: PlateState) -> dict:
+        s = self.solver
+        d = s.disc
+        reactions = s.reactions(state)
+        zs = sphere_surface(d.surface_r, state.overlap, self.radius)
+        gap = zs - state.u[s.surface_uz]
+        a = contact_radius(d.surface_r, state.n_active, gap)
+        pressure = s.mass_lu.solve(reactions)
+        force = float(reactions.sum())
+        plastic = state.alpha > 0.0
+        if not plastic.any():
+            regime = "elastic"
+        else:
+            under = d.surface_layer & (d.qp_r < a)
+            if not (plastic & under).any():
+                regime = "contained"
+            elif a > 0 and (plastic | ~under).all():
+                regime = "fully-plastic"
+            else:
+                regime = "surface-plastic"
+        return {
+            "force": force,
+            "contact_radius": a,
+            "pressure": pressure,
+            "max_pressure": float(pressure.max(initial=0.0)),
+            "mean_pressure": force / (math.pi * a * a) if a > 0 else 0.0,
+            "alpha": float(state.alpha.max()),
+            "regime": regime,
+        }
+
+    def run(self, overlaps: np.ndarray, start: PlateState | None = None, keep: bool = False, times=None):
+        s = self.solver
+        state = s.initial_state() if start is None else start
+        previous = None
+        rows, states = [], []
+        yield_point = None
+        last_elastic = None
+        for overlap in overlaps:
+            new = s.advance(state, previous, float(overlap))
+            previous, state = state, new
+            row = self.measure(state)
+            row["iterations"] = state.iterations
+            row["overlap"] = state.overlap
+            rows.append(row)
+            if keep:
+                states.append(state)
+            if s.material.yield_strength is not None and yield_point is None:
+                if row["alpha"] == 0.0:
+                    if row["force"] > 0.0:
+                        last_elastic = (state, row)
+                else:
+                    ref = last_elastic if last_elastic is not None else (self._elastic(state.overlap), None)
+                    yield_point = self._first_yield(*ref)
+        self.final = state
+        if keep:
+            self.kept = [st for st in states]
+        return self._result(rows, state, yield_point, times)
+
+    def _elastic(self, overlap: float):
+        """Purely elastic state at ``overlap`` (m) on the same mesh (reference for first yield)."""
+        s = self.solver
+        elastic = PlateSolver.__new__(PlateSolver)
+        elastic.__dict__.update(s.__dict__)
+        elastic.material = J2Material(s.material.E, s.material.nu, None)
+        state = elastic.advance(elastic.initial_state(), None, overlap)
+        return state, self.measure(state)
+
+    def _first_yield(self, state: PlateState, row: dict | None) -> FirstYieldPoint:
+        r"""First yield from an elastic state by self-similarity of the Hertz field: stresses scale
+        as p₀ ∝ F^{1/3} and lengths as a ∝ F^{1/3}, so F_y = F (Y/σ_vm,max)³, δ_y = δ (Y/σ_vm,max)²."""
+        s = self.solver
+        row = row if row is not None else self.measure(state)
+        vm = von_mises(s.stress_update(state).stress)
+        k = np.unravel_index(int(np.argmax(vm)), vm.shape)
+        ratio = s.material.yield_strength / float(vm[k])
+        scale = ratio  # lengths scale like √δ = ratio
+        return FirstYieldPoint(
+            force=row["force"] * ratio**3,
+            overlap=state.overlap * ratio**2,
+            depth=float(-s.disc.qp_z[k]) * scale,
+            radius=float(s.disc.qp_r[k]) * scale,
+            contact_radius=row["contact_radius"] * scale,
+        )
+
+    def _result(self, rows, state, yield_point, times) -> IndentationResult:
+        s = self.solver
+        return IndentationResult(
+            overlap=np.array([r["overlap"] for r in rows]),
+            force=np.array([r["force"] for r in rows]),
+            contact_radius=np.array([r["contact_radius"] for r in rows]),
+            max_pressure=np.array([r["max_pressure"] for r in rows]),
+            mean_pressure=np.array([r["mean_pressure"] for r in rows]),
+            surface_r=s.disc.surface_r.copy(),
+            pressure=np.array([r["pressure"] for r in rows]),
+            first_yield=yield_point,
+            residual_depth=-state.u[s.surface_uz].copy(),
+            max_equivalent_plastic_strain=np.array([r["alpha"] for r in rows]),
+            regime=[r["regime"] for r in rows],
+            newton_iterations=np.array([r["iterations"] for r in rows]),
+            radius=self.radius,
+            effective_modulus=self.e_star,
+            time=None if times is None else np.asarray(times, dtype=float),
+            _run=self,
+        )
+
+    def unload_from(self, max_overlap: float, steps: int) -> IndentationResult:
+        max_overlap = check_number("max_overlap", max_overlap, low=0.0, low_open=True, units="m")
+        steps = int(check_number("steps", steps, low=1, high=10000))
+        if not self.kept:
+            raise ValueError("unload_from needs kept loading states: call fem.indent(..., keep_states=True)")
+        loading = [st for st in self.kept if st.overlap <= max_overlap * (1 + 1e-12)]
+        top = max(st.overlap for st in self.kept)
+        if not loading or max_overlap > top * (1 + 1e-9):
+            raise ValueError(
+                f"max_overlap={max_overlap:.6g} is out of range: must be in (0, {top:.6g}] m (the kept loading run)"
+            )
+        start = max(loading, key=lambda st: st.overlap)
+        path = np.r_[max_overlap, np.linspace(max_overlap, 0.0, steps + 1)[1:]]
+        if start.overlap == max_overlap:
+            path = path[1:]
+        kept = self.kept
+        result = self.run(path, start=start, keep=False)
+        self.kept = kept
+        return result
+
+    def write(self, path: Path, result: IndentationResult) -> Path:
+        import meshio
+
+        s = self.solver
+        d = s.disc
+        state = self.final
+        mesh = d.mesh
+        nv = mesh.p.shape[1]
+        u = state.u.reshape(-1, 2)[:nv]
+        upd = s.stress_update(state)
+        vm = von_mises(upd.stress).mean(axis=1)
+        alpha = state.alpha.mean(axis=1)
+        pressure = np.zeros(nv)
+        surf = d.surface_nodes
+        on_vertices = surf < nv
+        if result.pressure.size:
+            pressure[surf[on_vertices]] = result.pressure[-1][on_vertices]
+        points = np.column_stack([mesh.p.T + u, np.zeros(nv)])
+        out = meshio.Mesh(
+            points,
+            [("triangle", mesh.t.T)],
+            point_data={"u": np.column_stack([u, np.zeros(nv)]), "pressure": pressure},
+            cell_data={"von_mises": [vm], "equivalent_plastic_strain": [alpha]},
+        )
+        path = Path(path)
+        tmp = path.with_name(f".{path.stem}.tmp{os.getpid()}{path.suffix}")
+        meshio.write(str(tmp), out)
+        os.replace(tmp, path)
+        return path
+
+
+def _check_path(overlaps) -> np.ndarray:
+    path = check_array("overlaps", overlaps, low=0.0, units="m", what="overlap")
+    if path.max() <= 0.0:
+        raise ValueError("overlaps are all 0: the path must press the ball into the plate (m)")
+    return path
+
+
+def indent(
+    radius: float,
+    plate: Material,
+    overlaps,
+    ball: Material | None = None,
+    mesh: MeshTri | str | os.PathLike | None = None,
+    hardening: float = 0.0,
+    keep_states: bool = False,
+    rtol: float = 1e-8,
+    _times=None,
+) -> IndentationResult:
+    r"""Press a sphere of ``radius`` (m) into ``plate`` along the overlap path ``overlaps`` (m).
+
+    Displacement control: each entry is one increment (loading while δ grows, unloading when it
+    decreases). ``ball`` None = rigid; an elastic ball via its effective modulus E* (errata Eq. 5).
+    ``mesh``: None (the default mesh scaled to the path), a :class:`skfem.MeshTri` or a mesh file
+    (m, named boundaries ``axis``, ``surface``, ``bottom``). ``hardening`` H (Pa): linear isotropic
+    hardening of the plate (0 = perfectly plastic). ``keep_states`` keeps every converged state so
+    :meth:`IndentationResult.unload_from` can restart from them.
+    """
+    radius = check_number("radius", radius, low=1e-6, high=10.0, units="m", what="ball radius")
+    path = _check_path(overlaps)
+    hardening = check_number("hardening", hardening, low=0.0, high=1e12, units="Pa", what="hardening modulus")
+    if ball is not None and not isinstance(ball, Material):
+        raise ValueError(f"ball={ball!r} is not a contact.Material or None (rigid)")
+    material, e_star = _plate_model(plate, ball, hardening)
+    a_max = estimate_contact_radius(radius, e_star, plate, float(path.max()))
+    if a_max / radius > SMALL_STRAIN_LIMIT:
+        raise ValueError(
+            f"overlaps: max overlap {path.max():.6g} m gives a contact radius ≈ {a_max:.3g} m "
+            f"= {a_max / radius:.3g} R: "
+            f"small strain needs a/R <= {SMALL_STRAIN_LIMIT} (overlap <= ~{SMALL_STRAIN_LIMIT**2 * radius:.3g} m)"
+        )
+    if a_max / radius > SMALL_STRAIN_WARNING * (1.0 + 1e-6):
+        warnings.warn(
+            f"contact radius ≈ {a_max / radius:.3g} R > {SMALL_STRAIN_WARNING} R: "
+            "the small-strain assumption is strained",
+            stacklevel=2,
+        )
+    if mesh is None:
+        mesh_obj = plate_mesh(radius, plate, float(path.max()), ball)
+    elif isinstance(mesh, MeshTri):
+        for name in ("axis", "surface", "bottom"):
+            if mesh.boundaries is None or name not in mesh.boundaries:
+                raise ValueError(f"mesh has no boundary named {name!r}: name 'axis', 'surface' and 'bottom' (m)")
+        mesh_obj = mesh
+    elif isinstance(mesh, (str, os.PathLike)):
+        mesh_obj = load_mesh(mesh)
+    else:
+        raise ValueError(f"mesh={mesh!r} is not None, a skfem.MeshTri or a mesh file path")
+    force_scale = 4.0 / 3.0 * e_star * math.sqrt(radius) * float(path.max()) ** 1.5
+    solver = PlateSolver(mesh_obj, material, radius, force_scale, float(path.max()), rtol=rtol)
+    run = _Run(solver, e_star, radius)
+    return run.run(path, keep=keep_states, times=_times)
+
+
+def indent_impact(impact_result, plate: Material, steps: int = 60, **kwargs) -> IndentationResult:
+    """Indent along the overlap history of an impact (``contact`` ImpactResult: ``.radius`` (m),
+    ``.ball``, ``.history.t`` (s), ``.history.overlap`` (m)).
+
+    ``steps`` increments: two thirds on loading, one third on unloading, spaced as
+    δ_max·sin(πk/2n) so they are denser near the maximum overlap. ``time`` (s) on the result
+    gives the impact time of each step (interpolated on the history).
+    """
+    steps = int(check_number("steps", steps, low=4, high=100000))
+    history = impact_result.history
+    t = np.asarray(history.t, dtype=float)
+    d = np.asarray(history.overlap, dtype=float)
+    if t.shape != d.shape or t.size < 3:
+        raise ValueError("impact_result.history: t and overlap must be arrays of the same length >= 3 (s, m)")
+    peak = int(np.argmax(d))
+    d_max = float(d[peak])
+    if d_max <= 0.0:
+        raise ValueError("impact_result.history.overlap never exceeds 0 m: no contact to indent")
+    n_load = max(2, (2 * steps) // 3)
+    n_unload = max(1, steps - n_load)
+    load_d = d_max * np.sin(0.5 * np.pi * np.arange(1, n_load + 1) / n_load)
+    unload_d = d_max * np.sin(0.5 * np.pi * (1.0 - np.arange(1, n_unload + 1) / n_unload))
+    rise = np.maximum.accumulate(np.maximum(d[: peak + 1], 0.0))
+    fall = np.maximum.accumulate(np.maximum(d[peak:][::-1], 0.0))
+    load_t = np.interp(load_d, rise, t[: peak + 1])
+    unload_t = np.interp(unload_d, fall, t[peak:][::-1])
+    overlaps = np.r_[load_d, unload_d]
+    times = np.r_[load_t, unload_t]
+    ball = getattr(impact_result, "ball", None)
+    if ball is not None and getattr(ball, "is_rigid", False):
+        ball = None
+    return indent(impact_result.radius, plate, overlaps, ball=ball, _times=times, **kwargs)

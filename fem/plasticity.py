@@ -1,0 +1,117 @@
+r"""Small-strain J2 (von Mises) plasticity with linear isotropic hardening: radial return.
+
+Vectorised over quadrature points, Mandel notation (see :mod:`fem.forms`). With the trial
+deviatoric stress s_tr = 2G dev(ε − ε_p,n), q_tr = √(3/2)‖s_tr‖ and the yield function
+f = q_tr − (Y + H ᾱ_n):
+
+.. math::
+    \Delta\bar\alpha = \frac{\langle f\rangle}{3G + H},\qquad
+    s = \Bigl(1 - \frac{3G\Delta\bar\alpha}{q_{tr}}\Bigr) s_{tr},\qquad
+    \varepsilon_p = \varepsilon_{p,n} + \sqrt{\tfrac32}\,\Delta\bar\alpha\,\hat n,
+
+and the consistent (algorithmic) tangent (Simo & Hughes 1998, Box 3.2)
+
+.. math::
+    D = 3K P_{vol} + 2G\theta P_{dev} - 2G\bar\theta\, \hat n\otimes\hat n,\quad
+    \theta = 1 - \frac{3G\Delta\bar\alpha}{q_{tr}},\quad
+    \bar\theta = \frac{3G}{3G + H} - (1 - \theta),
+
+with n̂ = s_tr/‖s_tr‖. ᾱ is the equivalent plastic strain (dimensionless), stresses in Pa.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["J2Material", "StressUpdate", "radial_return", "von_mises"]
+
+_ONE = np.array([1.0, 1.0, 1.0, 0.0])
+_P_VOL = np.outer(_ONE, _ONE) / 3.0
+_P_DEV = np.eye(4) - _P_VOL
+
+
+@dataclass(frozen=True)
+class J2Material:
+    """Plate constitutive parameters: ``E`` (Pa), ``nu``, ``yield_strength`` (Pa or None = elastic),
+    ``hardening`` H (Pa, linear isotropic; 0 = perfectly plastic)."""
+
+    E: float
+    nu: float
+    yield_strength: float | None = None
+    hardening: float = 0.0
+
+    @property
+    def shear(self) -> float:
+        return self.E / (2.0 * (1.0 + self.nu))
+
+    @property
+    def bulk(self) -> float:
+        return self.E / (3.0 * (1.0 - 2.0 * self.nu))
+
+    @property
+    def elastic_tangent(self) -> np.ndarray:
+        return 3.0 * self.bulk * _P_VOL + 2.0 * self.shear * _P_DEV
+
+
+@dataclass(frozen=True, eq=False)
+class StressUpdate:
+    """Result of :func:`radial_return`: ``stress`` (…, 4) Pa, ``plastic_strain`` (…, 4),
+    ``alpha`` (…) equivalent plastic strain, ``yielding`` (…) bool mask of points on the yield
+    surface in this increment, ``trial_ratio`` (…) q_tr / (Y + Hᾱ_n), ``tangent`` (n_yielding, 4, 4)
+    consistent tangent at the yielding points only (Pa)."""
+
+    stress: np.ndarray
+    plastic_strain: np.ndarray
+    alpha: np.ndarray
+    yielding: np.ndarray
+    trial_ratio: np.ndarray
+    tangent: np.ndarray
+
+
+def von_mises(stress: np.ndarray) -> np.ndarray:
+    """Von Mises equivalent stress (Pa) of Mandel stresses (…, 4)."""
+    s = stress - (stress[..., :3].sum(axis=-1) / 3.0)[..., None] * _ONE
+    return np.sqrt(1.5 * np.einsum("...i,...i->...", s, s))
+
+
+def radial_return(
+    material: J2Material, total_strain: np.ndarray, plastic_strain: np.ndarray, alpha: np.ndarray
+) -> StressUpdate:
+    """Return-map the total Mandel strain (…, 4) from the converged state (ε_p,n, ᾱ_n)."""
+    G = material.shear
+    elastic_strain = total_strain - plastic_strain
+    trace = elastic_strain[..., :3].sum(axis=-1)
+    dev = elastic_strain - (trace / 3.0)[..., None] * _ONE
+    s_trial = 2.0 * G * dev
+    pressure_part = (material.bulk * trace)[..., None] * _ONE
+    norm = np.sqrt(np.einsum("...i,...i->...", s_trial, s_trial))
+    q_trial = np.sqrt(1.5) * norm
+    if material.yield_strength is None:
+        stress = s_trial + pressure_part
+        empty = np.zeros(alpha.shape, dtype=bool)
+        return StressUpdate(stress, plastic_strain, alpha, empty, np.zeros_like(alpha), np.zeros((0, 4, 4)))
+    H = material.hardening
+    flow_stress = material.yield_strength + H * alpha
+    ratio = q_trial / flow_stress
+    yielding = ratio > 1.0
+    stress = s_trial + pressure_part
+    new_plastic = plastic_strain.copy()
+    new_alpha = alpha.copy()
+    if not yielding.any():
+        return StressUpdate(stress, new_plastic, new_alpha, yielding, ratio, np.zeros((0, 4, 4)))
+    qy = q_trial[yielding]
+    ny = s_trial[yielding] / norm[yielding][:, None]
+    d_alpha = (qy - flow_stress[yielding]) / (3.0 * G + H)
+    theta = 1.0 - 3.0 * G * d_alpha / qy
+    stress[yielding] = theta[:, None] * s_trial[yielding] + pressure_part[yielding]
+    new_plastic[yielding] += np.sqrt(1.5) * d_alpha[:, None] * ny
+    new_alpha[yielding] += d_alpha
+    theta_bar = 3.0 * G / (3.0 * G + H) - (1.0 - theta)
+    tangent = (
+        3.0 * material.bulk * _P_VOL[None]
+        + 2.0 * G * theta[:, None, None] * _P_DEV[None]
+        - 2.0 * G * theta_bar[:, None, None] * ny[:, :, None] * ny[:, None, :]
+    )
+    return StressUpdate(stress, new_plastic, new_alpha, yielding, ratio, tangent)
