@@ -33,18 +33,21 @@ class ClosedFormPlate:
     residual_depth: np.ndarray
     first_yield: object = None
     regime: tuple = ()
+    max_equivalent_plastic_strain: np.ndarray = None
+    unloadings: list = None
 
     def force_law(self):
         k = int(np.argmax(self.overlap))
         d, f, a = self.overlap[: k + 1], self.force[: k + 1], self.contact_radius[: k + 1]
-        ud, uf, ua = self.overlap[k:], self.force[k:], self.contact_radius[k:]
+        u = self.unloadings[-1]
+        ud, uf, ua = u.overlap, u.force, u.contact_radius
         zero = np.flatnonzero(uf <= 0.0)
         n = zero[0] + 1 if zero.size else ud.size
         return TabulatedLaw(
             np.concatenate([[0.0], d]),
             np.concatenate([[0.0], f]),
             np.concatenate([[0.0], a]),
-            np.array([d[-1]]),
+            np.array([ud[0]]),
             ud[None, :n],
             uf[None, :n],
             ua[None, :n],
@@ -89,9 +92,21 @@ def closed_form_indent(radius, e_star, p_y=None):
             p0 = np.where(a > 0, 3 * F / (2 * math.pi * np.maximum(a, 1e-300) ** 2), 0.0)
         ratio = np.divide(r[None, :], a[:, None], out=np.full((a.size, r.size), 2.0), where=a[:, None] > 0)
         p = p0[:, None] * np.sqrt(np.maximum(1 - ratio**2, 0))
-        return ClosedFormPlate(overlaps, F, a, r, p, np.zeros_like(r))
+        n = overlaps.size
+        return ClosedFormPlate(overlaps, F, a, r, p, np.zeros_like(r), None, ("elastic",) * n, np.zeros(n), [])
 
     return indent
+
+
+def closed_form_unload(indent):
+    """unload(case, fe_load, d_star): the stand-in of IndentationResult.unload_from (dense unloading from d_star)."""
+
+    def unload(case, fe_load, d_star):
+        res = indent(case, None, None, np.array([d_star, 0.5 * d_star]))
+        fe_load.unloadings.append(res)
+        return res
+
+    return unload
 
 
 def _case(plate: Material, speed: float, angle: float = 0.0, **fem):
@@ -110,8 +125,8 @@ def _couple(case, indent):
     from wear.pipeline import _impact
 
     estimate = _impact(case, ball, plate)
-    fe_load = coupling.load_plate(case, ball, plate, estimate, indent=indent)
-    return coupling.couple(case, ball, plate, fe_load, estimate, indent=indent)
+    fe_load = coupling.load_plate(case, ball, plate, estimate, indent=lambda *a, keep_states: indent(*a))
+    return coupling.couple(case, ball, plate, fe_load, estimate, unload=closed_form_unload(indent))
 
 
 def test_coupling_on_hertz_plate_reproduces_hertz_impact():
@@ -147,3 +162,32 @@ def test_coupling_on_thornton_plate_reproduces_thornton_restitution(ratio):
     res = _couple(case, closed_form_indent(5e-3, e_star, p_y))
     assert res.converged
     assert res.impact.normal_restitution == pytest.approx(float(thornton_restitution(ratio)), rel=0.01)
+
+
+# --------------------------------------------------------------------------- the real FE plate (fem.indent)
+FE_QUICK = {"mesh_scale": 4.0, "load_steps": 10, "unload_steps": 6}
+
+
+def _fe_case(plate: Material, speed: float, angle: float = 0.0, **fem_options):
+    return _case(plate, speed, angle, **{**FE_QUICK, **fem_options}).with_(
+        wear={"pressure": "fe"}, output={"render": False, "figures": False}
+    )
+
+
+@pytest.mark.filterwarnings("ignore:elastic ball")
+def test_fe_coupling_elastic_plate_matches_hertz():
+    """Issue 4 acceptance 5 (elastic): two-way coupling on the elastic FE plate (fem.indent, coarse mesh) gives the
+    closed-form Hertz impact's max force and contact time (errata Eqs. 4, 10–11) within 1%, and e_n = 1 within 1%."""
+    from wear.pipeline import run
+
+    plate = Material(E=210e9, nu=0.3, density=7850.0)
+    case = _fe_case(plate, 1.0, angle=30.0).with_(impact={"normal_model": "hertz"})
+    result = run(case)
+    ref = coupling.hertz_reference(case, case.ball.material(), plate)
+    assert result.coupling.converged and result.coupling.change < 0.005
+    assert result.impact.normal_model == "tabulated"
+    assert result.impact.max_force == pytest.approx(ref.max_force, rel=0.01)
+    assert result.impact.contact_time == pytest.approx(ref.contact_time, rel=0.01)
+    assert result.impact.normal_restitution == pytest.approx(1.0, abs=0.01)
+    # no plastic strain: the residual dent is nil (< 1e-3 of the max overlap)
+    assert result.surface.max_dent_depth < 1e-3 * ref.max_overlap

@@ -66,7 +66,7 @@ def test_integrate_triangles_and_quads_agree_on_bilinear_field():
 
 def test_plate_block_top_nodes_and_cell_volumes(tmp_path):
     """plate.vtu: top nodes at −(dent + wear) (same rule as surface.vtu); every hexahedron is ordered as VTK wants
-    (a negative orientation renders inside-out in ParaView) and the block's undeformed volume is L_x × L_y × t (geometry)."""
+    (a negative orientation renders inside-out in ParaView) and the block's undeformed span is L_x × L_y × t."""
     surf, _ = _paraboloid_surface(n=61)
     t = 1e-3
     mesh = plate_block_mesh(surf, t, n_layers=5)

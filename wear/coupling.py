@@ -9,13 +9,14 @@ maximum overlap:
    (1 + ``overshoot``)·δ_est;
 2. run the impact on that loading branch (the rebound uses a provisional elastic unloading curve of slope
    dF/dδ = 2E*a, which cannot change δ_max: the maximum is reached on the loading branch);
-3. unload the FE plate from the impact's δ_max (one loading + unloading cycle) and run the impact again on
-   the FE loading and the cycle's unloading curve (δ* = (1 + 1e-3) δ_max);
+3. unload the FE plate from the impact's δ_max (restarting from the kept loading state just below it:
+   ``IndentationResult.unload_from``) and run the impact again on the FE law (``res.force_law()``: the
+   loading and the unloading from δ* = (1 + 1e-3) δ_max);
 4. repeat 3 while the maximum overlap changes by more than ``tolerance`` (relative) between iterations.
 
-Because δ_max depends only on the loading branch, step 3 normally converges at once (the change is the
-interpolation difference between the two FE loading tables, ~1e-3 or less); the iterations and the final
-change are reported. Cost: one FE loading to (1 + overshoot)·δ_est plus one FE cycle to δ_max.
+Because δ_max depends only on the loading branch, step 3 normally converges at once (the impact loads on
+the same table; only the unloading changes); the iterations and the final change are reported. Cost: one
+FE loading to (1 + overshoot)·δ_est plus one unloading per iteration (normally one): about one FE cycle.
 
 The FE pressure p(r, t) along the impact is the cycle's nodal pressure with each FE step placed at the
 impact time where the impact reaches that overlap (on the loading branch before t(δ_max), on the unloading
@@ -34,21 +35,46 @@ from contact import ImpactResult, Material, TabulatedLaw, effective_modulus, sim
 from contact.theory import hertz_impact, sphere_mass
 
 __all__ = ["CouplingResult", "load_plate", "couple", "one_way", "pressure_table", "pressure_table_one_way",
-           "fe_indent", "provisional_law", "cycle_law"]  # fmt: skip
+           "fe_indent", "fe_unload", "fe_mesh", "provisional_law", "FeCycle"]  # fmt: skip
 
 
 #: Relative margin above the impact's δ_max at which the FE cycle starts unloading.
 UNLOAD_MARGIN = 1e-3
 
 
-def fe_indent(case, ball: Material, plate: Material, overlaps: np.ndarray):
-    """Run ``fem.indent`` along the overlap path ``overlaps`` (m) with the case's FE options."""
+def fe_mesh(case, ball: Material, plate: Material, max_overlap: float):
+    """The FE mesh for a path reaching ``max_overlap`` (m): fem's default mesh, or with ``fem.mesh_scale`` ≠ 1 a
+    generated mesh with the default element counts across the contact and first-yield radii divided by it."""
+    import fem
+    from fem.mesh import DEFAULT_PARAMETERS
+
+    ball_arg = None if ball.is_rigid else ball
+    if case.fem.mesh_scale == 1.0:
+        return None
+    scale = case.fem.mesh_scale
+    return fem.plate_mesh(
+        case.ball.radius,
+        plate,
+        max_overlap,
+        ball_arg,
+        contact_elements=max(6, round(DEFAULT_PARAMETERS["contact_elements"] / scale)),
+        yield_elements=max(4, round(DEFAULT_PARAMETERS["yield_elements"] / scale)),
+    )
+
+
+def fe_indent(case, ball: Material, plate: Material, overlaps: np.ndarray, keep_states: bool = False):
+    """``fem.indent`` along the overlap path ``overlaps`` (m) with the case's FE mesh options."""
     import fem
 
-    kwargs: dict[str, Any] = {}
+    overlaps = np.asarray(overlaps, float)
     ball_arg = None if ball.is_rigid else ball
-    return fem.indent(radius=case.ball.radius, plate=plate, overlaps=np.asarray(overlaps, float), ball=ball_arg,
-                      **kwargs)  # fmt: skip
+    mesh = fe_mesh(case, ball, plate, float(overlaps.max()))
+    return fem.indent(case.ball.radius, plate, overlaps, ball=ball_arg, mesh=mesh, keep_states=keep_states)
+
+
+def fe_unload(case, fe_load, max_overlap: float):
+    """Unload the kept loading run ``fe_load`` from ``max_overlap`` (m) (``IndentationResult.unload_from``)."""
+    return fe_load.unload_from(max_overlap, steps=case.fem.unload_steps)
 
 
 @dataclass(frozen=True, eq=False)
@@ -92,7 +118,7 @@ def load_plate(case, ball: Material, plate: Material, estimate: ImpactResult, in
 
     ``indent(case, ball, plate, overlaps)`` runs the FE path (default :func:`fe_indent`)."""
     target = (1.0 + case.fem.overshoot) * estimate.max_overlap
-    return (indent or fe_indent)(case, ball, plate, _loading_path(target, case.fem.load_steps))
+    return (indent or fe_indent)(case, ball, plate, _loading_path(target, case.fem.load_steps), keep_states=True)
 
 
 def _loading_table(res) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -123,34 +149,6 @@ def provisional_law(res, e_star: float, points: int = 40) -> TabulatedLaw:
                         (a_star * np.sqrt(s))[None, :])  # fmt: skip
 
 
-def _unloading_curve(res) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The FE unloading branch (δ, F, a) from its maximum overlap down to the residual overlap δ_p, where the
-    force reaches zero (located by linear interpolation between the last loaded and first free steps)."""
-    d = np.asarray(res.overlap, float)
-    f = np.maximum(np.asarray(res.force, float), 0.0)
-    a = np.maximum(np.asarray(res.contact_radius, float), 0.0)
-    k = int(np.argmax(d))
-    d, f, a = d[k:], f[k:], a[k:]
-    free = np.flatnonzero(f <= 0.0)
-    if free.size and free[0] > 0:
-        j = int(free[0])
-        w = f[j - 1] / (f[j - 1] - f[j])  # zero crossing between steps j-1 and j
-        d_p = d[j - 1] + w * (d[j] - d[j - 1])
-        d, f, a = np.append(d[:j], d_p), np.append(f[:j], 0.0), np.append(a[:j], 0.0)
-    else:  # still loaded at the end of the path: close the curve at zero overlap
-        d, f, a = np.append(d, 0.0), np.append(f, 0.0), np.append(a, 0.0)
-    keep = np.concatenate([[True], np.diff(d) < 0])
-    return d[keep], f[keep], a[keep]
-
-
-def cycle_law(fe_load, fe_cycle) -> TabulatedLaw:
-    """The FE law of the coupled impact: the single loading (``fe_load``, reaching past δ_max) and the
-    unloading curve of the cycle (``fe_cycle``) that starts at δ* just above the impact's δ_max."""
-    d, f, a = _loading_table(fe_load)
-    ud, uf, ua = _unloading_curve(fe_cycle)
-    return TabulatedLaw(d, f, a, np.array([ud[0]]), ud[None, :], uf[None, :], ua[None, :])
-
-
 def _run_impact(case, ball, plate, law: TabulatedLaw) -> ImpactResult:
     spec = case.impact
     return simulate_impact(
@@ -169,18 +167,62 @@ def _run_impact(case, ball, plate, law: TabulatedLaw) -> ImpactResult:
     )
 
 
-def _cycle_path(max_overlap: float, load_steps: int, unload_steps: int) -> np.ndarray:
-    load = _loading_path(max_overlap, load_steps)
-    # unloading: dense near δ_max where the contact radius shrinks fastest, down to zero overlap
-    s = np.linspace(0.0, 1.0, unload_steps + 1)[1:]
-    return np.concatenate([load, max_overlap * (1.0 - s**1.3)])
+@dataclass(frozen=True, eq=False)
+class FeCycle:
+    """The FE plate's cycle of a coupled impact: the kept loading steps up to δ* followed by the unloading from δ*
+    (arrays per step as in ``fem.IndentationResult``: ``overlap`` m, ``force`` N, ``contact_radius`` m,
+    ``pressure`` Pa (steps, surface nodes), ``regime``, ``max_equivalent_plastic_strain``), ``surface_r`` (m),
+    ``residual_depth`` (m, after unloading), ``first_yield`` (or None), ``loading`` and ``unloading`` results."""
+
+    overlap: np.ndarray
+    force: np.ndarray
+    contact_radius: np.ndarray
+    pressure: np.ndarray
+    regime: list
+    max_equivalent_plastic_strain: np.ndarray
+    surface_r: np.ndarray
+    residual_depth: np.ndarray
+    first_yield: Any
+    loading: Any
+    unloading: Any
+
+    @classmethod
+    def join(cls, loading, unloading, max_overlap: float) -> FeCycle:
+        d = np.asarray(loading.overlap, float)
+        k = int(np.searchsorted(d, max_overlap * (1.0 - 1e-12)))  # loading steps strictly below δ*
+        fy = loading.first_yield
+        if fy is not None and fy.overlap > max_overlap:
+            fy = None
+
+        def cat(name):
+            return np.concatenate([np.asarray(getattr(loading, name), float)[:k],
+                                   np.asarray(getattr(unloading, name), float)])  # fmt: skip
+
+        return cls(
+            overlap=cat("overlap"),
+            force=cat("force"),
+            contact_radius=cat("contact_radius"),
+            pressure=np.vstack([np.asarray(loading.pressure, float)[:k], np.asarray(unloading.pressure, float)]),
+            regime=list(loading.regime[:k]) + list(unloading.regime),
+            max_equivalent_plastic_strain=cat("max_equivalent_plastic_strain"),
+            surface_r=np.asarray(unloading.surface_r, float),
+            residual_depth=np.asarray(unloading.residual_depth, float),
+            first_yield=fy,
+            loading=loading,
+            unloading=unloading,
+        )
+
+    def write(self, path):
+        """The deformed FE mesh after the unloading (``IndentationResult.write``)."""
+        return self.unloading.write(path)
 
 
-def couple(case, ball: Material, plate: Material, fe_load, estimate: ImpactResult, indent=None) -> CouplingResult:
+def couple(case, ball: Material, plate: Material, fe_load, estimate: ImpactResult, unload=None) -> CouplingResult:
     """Stage ``coupling``: iterate impact ⇄ FE until δ_max changes by < ``case.fem.tolerance``.
 
-    ``fe_load``: :func:`load_plate`'s result; ``estimate``: the first (Hertz or Thornton) impact."""
-    indent = indent or fe_indent
+    ``fe_load``: :func:`load_plate`'s result (kept states); ``estimate``: the first (Hertz or Thornton) impact;
+    ``unload(case, fe_load, max_overlap)`` unloads the plate from ``max_overlap`` (default :func:`fe_unload`)."""
+    unload = unload or fe_unload
     e_star = effective_modulus(ball, plate)
     law = provisional_law(fe_load, e_star)
     load_top = float(law.loading_overlap[-1])
@@ -191,16 +233,16 @@ def couple(case, ball: Material, plate: Material, fe_load, estimate: ImpactResul
     iterations = 1
     while iterations < case.fem.max_iterations:
         d_max = overlaps[-1]
-        if d_max > load_top:
+        # unload from a hair above δ_max so that the impact's own maximum (on the same loading table) lies below
+        # the tabulated δ*; the engine scales the curve down by that 1e-3, well inside the FE accuracy
+        d_star = d_max * (1.0 + UNLOAD_MARGIN)
+        if d_star > load_top:
             raise ValueError(
                 f"fem.overshoot={case.fem.overshoot:g} is too small: the impact reached {d_max:.4g} m, beyond the FE "
                 f"loading to {load_top:.4g} m"
             )
-        # unload from a hair above δ_max so that the impact's own maximum (on the same loading table) lies below
-        # the tabulated δ*; the engine scales the curve down by that 1e-3, well inside the FE accuracy
-        d_star = d_max * (1.0 + UNLOAD_MARGIN)
-        fe = indent(case, ball, plate, _cycle_path(d_star, case.fem.load_steps, case.fem.unload_steps))
-        law = cycle_law(fe_load, fe)
+        fe = FeCycle.join(fe_load, unload(case, fe_load, d_star), d_star)
+        law = fe_load.force_law()
         impact = _run_impact(case, ball, plate, law)
         iterations += 1
         overlaps.append(impact.max_overlap)
@@ -255,8 +297,8 @@ def one_way(case, ball: Material, plate: Material, impact: ImpactResult):
     """Stage ``fem`` of a one-way run: ``fem.indent_impact`` along the impact's overlap history."""
     import fem
 
-    ball_arg = None if ball.is_rigid else ball
-    return fem.indent_impact(impact, plate, ball=ball_arg)
+    mesh = fe_mesh(case, ball, plate, impact.max_overlap)
+    return fem.indent_impact(impact, plate, steps=case.fem.load_steps + case.fem.unload_steps, mesh=mesh)
 
 
 def pressure_table_one_way(fe) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -23,6 +23,7 @@ Stages (their wall times are in ``RunResult.stage_times``):
 from __future__ import annotations
 
 import math
+import os
 import time
 from collections.abc import Callable
 from dataclasses import asdict, dataclass, field, fields, replace
@@ -83,8 +84,10 @@ class BallSpec:
 
 @dataclass(frozen=True)
 class PlateSpec:
-    """The plate: ``E`` (Pa), ``nu``, ``density`` (kg/m³), ``yield_strength`` (Pa; None = elastic)."""
+    """The plate: ``E`` (Pa), ``nu``, ``density`` (kg/m³), ``yield_strength`` (Pa; None = elastic); ``rigid``
+    (E, nu, density ignored)."""
 
+    rigid: bool = False
     E: float = 114e9
     nu: float = 0.34
     density: float = 4430.0
@@ -92,9 +95,12 @@ class PlateSpec:
     name: str = "Ti-6Al-4V"
 
     def __post_init__(self) -> None:
+        check_bool("plate.rigid", self.rigid)
         self.material()
 
     def material(self) -> Material:
+        if self.rigid:
+            return Material.rigid(name=self.name)
         try:
             return Material(self.E, self.nu, self.density, self.yield_strength, self.name)
         except ValueError as exc:
@@ -163,10 +169,10 @@ class FemSpec:
     coupling: str = "two-way"
     tolerance: float = 0.005
     max_iterations: int = 8
-    load_steps: int = 24
-    unload_steps: int = 12
-    overshoot: float = 0.25
-    mesh_scale: float = 1.0
+    load_steps: int = 16
+    unload_steps: int = 8
+    overshoot: float = 0.1
+    mesh_scale: float = 2.0
 
     def __post_init__(self) -> None:
         check_choice("fem.coupling", self.coupling, COUPLINGS)
@@ -193,6 +199,8 @@ class OutputSpec:
         check_bool("output.render", self.render)
         if not isinstance(self.plate_mesh, str):
             raise ValueError(f"output.plate_mesh={self.plate_mesh!r} is not a string: give a mesh file path")
+        if self.plate_mesh and not os.path.isfile(self.plate_mesh):
+            raise ValueError(f"output.plate_mesh={self.plate_mesh!r} is not a file: give a meshio-readable plate mesh")
         check_number("output.block_thickness", self.block_thickness, low=0.0, low_open=True, high=1.0, units="m")
 
 

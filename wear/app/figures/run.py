@@ -1,0 +1,161 @@
+"""Figures of one ``impactwear run`` (matplotlib, Agg; SI quantities shown in µm, µs, MPa, N).
+
+Each function takes a :class:`wear.pipeline.RunResult` (or arrays) and a PNG path, and returns the path.
+:func:`restitution_comparison` is the e_n vs V/V_y figure (coupled FE vs Thornton 1997) that the
+validation report reuses.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+from contact.theory import hertz_pressure, mesarovic_johnson_pressure  # noqa: E402
+
+__all__ = [
+    "force_overlap",
+    "pressure_profiles",
+    "wear_map",
+    "cross_sections",
+    "restitution_comparison",
+    "write_run_figures",
+]
+
+
+def _save(fig, path) -> Path:
+    path = Path(path)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
+def force_overlap(result, path) -> Path:
+    """Normal force and overlap against time, and force against overlap."""
+    h = result.impact.history
+    fig, (ax1, ax3) = plt.subplots(1, 2, figsize=(10, 4))
+    ax1.plot(h.t * 1e6, h.normal_force, "C0", label="normal force")
+    ax1.plot(h.t * 1e6, np.abs(h.tangential_force), "C0--", label="|tangential force|")
+    ax1.set_xlabel("time (µs)")
+    ax1.set_ylabel("force (N)")
+    ax2 = ax1.twinx()
+    ax2.plot(h.t * 1e6, h.overlap * 1e6, "C1", label="overlap")
+    ax2.set_ylabel("overlap (µm)", color="C1")
+    ax1.legend(loc="upper right", fontsize=8)
+    ax1.set_title(f"impact ({result.impact.normal_model} normal law)")
+    ax3.plot(h.overlap * 1e6, h.normal_force, "C0", label="impact")
+    fe = result.fe
+    if fe is not None:
+        ax3.plot(np.asarray(fe.overlap) * 1e6, fe.force, "k.", ms=3, label="FE steps")
+    ax3.set_xlabel("overlap (µm)")
+    ax3.set_ylabel("normal force (N)")
+    ax3.legend(fontsize=8)
+    return _save(fig, path)
+
+
+def pressure_profiles(result, path, stages: int = 6) -> Path:
+    """p(r) at several times along the impact against Hertz (Eq. 16) and, after the maximum, against the
+    Mesarovic–Johnson unloading profile (Eq. 19) built from the pressure at the maximum (p*, a*)."""
+    ph = result.pressure
+    force = ph.force()
+    i_max = int(np.argmax(force))
+    loaded = np.flatnonzero(ph.extent > 0)
+    picks = np.unique(np.concatenate([np.linspace(loaded[0], i_max, stages // 2 + 1).astype(int)[1:],
+                                      np.linspace(i_max, loaded[-1], stages // 2 + 1).astype(int)[1:-1]]))  # fmt: skip
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    a_star = ph.extent[i_max]
+    p_star = force[i_max] / (math.pi * a_star**2) if a_star > 0 else 0.0
+    for n, i in enumerate(picks):
+        a = ph.extent[i]
+        r = np.linspace(0.0, 1.1 * max(a, 1e-12), 200)
+        colour = f"C{n % 10}"
+        t_us = ph.time[i] * 1e6
+        ax.plot(r * 1e6, ph.at(i, r) / 1e6, colour, label=f"{ph.source}, t = {t_us:.2f} µs")
+        p0 = 3.0 * force[i] / (2.0 * math.pi * a * a) if a > 0 else 0.0
+        ax.plot(r * 1e6, hertz_pressure(r, a, p0) / 1e6, colour, ls=":", lw=1)
+        if i > i_max and a < a_star:
+            ax.plot(r * 1e6, mesarovic_johnson_pressure(r, a, a_star, p_star) / 1e6, colour, ls="--", lw=1)
+    ax.plot([], [], "k:", lw=1, label="Hertz, Eq. 16 (same F, a)")
+    ax.plot([], [], "k--", lw=1, label="Mesarovic–Johnson, Eq. 19 (unloading)")
+    ax.set_xlabel("r (µm)")
+    ax.set_ylabel("contact pressure (MPa)")
+    ax.legend(fontsize=7)
+    return _save(fig, path)
+
+
+def wear_map(result, path) -> Path:
+    """Wear depth map over the plate (x along the impact, y across)."""
+    wm = result.wear
+    fig, ax = plt.subplots(figsize=(7, 5))
+    mesh = ax.pcolormesh(wm.x * 1e6, wm.y * 1e6, wm.depth * 1e9, shading="auto", cmap="viridis")
+    fig.colorbar(mesh, ax=ax, label="wear depth (nm)")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x along the impact (µm)")
+    ax.set_ylabel("y (µm)")
+    ax.set_title(f"worn volume {wm.volume_m3:.3g} m³, max depth {wm.max_depth_m * 1e9:.3g} nm")
+    return _save(fig, path)
+
+
+def cross_sections(result, path) -> Path:
+    """Dent + wear depth along y = 0 and across x = dent centre (surface z = −(dent + wear))."""
+    s = result.surface
+    dent = s.dent_on_grid()
+    wear = s.wear_depth
+    j0 = int(np.argmin(np.abs(s.y)))
+    i0 = int(np.argmin(np.abs(s.x - s.dent_centre[0])))
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for ax, coord, d, w, label in (
+        (axes[0], s.x, dent[:, j0], wear[:, j0], "x along the impact (µm), y = 0"),
+        (axes[1], s.y, dent[i0, :], wear[i0, :], "y across (µm), x = dent centre"),
+    ):
+        ax.plot(coord * 1e6, -d * 1e6, "C0", label="dent only")
+        ax.plot(coord * 1e6, -(d + w) * 1e6, "C3--", label="dent + wear")
+        ax.set_xlabel(label)
+        ax.set_ylabel("surface z (µm)")
+        ax2 = ax.twinx()
+        ax2.plot(coord * 1e6, w * 1e9, "C2", lw=1)
+        ax2.set_ylabel("wear depth (nm)", color="C2")
+        ax.legend(fontsize=8, loc="lower right")
+    return _save(fig, path)
+
+
+def restitution_comparison(speed_ratio, coupled_restitution, path, thornton=None) -> Path:
+    """Normal restitution vs V/V_y: the coupled FE impact beside Thornton (1997) (for the validation report).
+
+    ``speed_ratio``: V_n/V_y; ``coupled_restitution``: e_n of the coupled runs; ``thornton``: Thornton's e at
+    the same ratios (default :func:`contact.theory.thornton_restitution`). The lower panel shows the difference.
+    """
+    from contact.theory import thornton_restitution
+
+    x = np.asarray(speed_ratio, float)
+    e = np.asarray(coupled_restitution, float)
+    fine = np.geomspace(max(x.min(), 1.0), max(x.max(), 1.01), 200)
+    ref = thornton_restitution(x) if thornton is None else np.asarray(thornton, float)
+    fig, (ax, axd) = plt.subplots(2, 1, figsize=(6.5, 6), sharex=True, gridspec_kw={"height_ratios": [3, 1]})
+    ax.semilogx(fine, thornton_restitution(fine), "k-", label="Thornton 1997 (closed form)")
+    ax.semilogx(x, e, "o", color="C3", label="coupled FE impact (two-way)")
+    ax.set_ylabel("normal restitution e_n")
+    ax.legend()
+    axd.semilogx(x, (e - ref) / ref * 100.0, "o-", color="C3")
+    axd.axhline(0.0, color="k", lw=0.5)
+    axd.set_xlabel("V_n / V_y")
+    axd.set_ylabel("FE − Thornton (%)")
+    return _save(fig, path)
+
+
+def write_run_figures(result, folder: str | os.PathLike) -> list[Path]:
+    """All run figures into ``folder``; returns their paths."""
+    folder = Path(folder)
+    return [
+        force_overlap(result, folder / "force_overlap.png"),
+        pressure_profiles(result, folder / "pressure_profiles.png"),
+        wear_map(result, folder / "wear_map.png"),
+        cross_sections(result, folder / "cross_sections.png"),
+    ]
