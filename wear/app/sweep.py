@@ -359,6 +359,9 @@ def run_sweep(
         else:
             pending.append(sc)
     outcome = SweepOutcome(out=out, total=len(spec.cases), skipped=len(spec.cases) - len(pending))
+    if pending:  # the tables are rewritten when every case is done; until then there is no stale one
+        for name in ("results.csv", "sweep_1d.png", "sweep_2d.png"):
+            (out / name).unlink(missing_ok=True)
 
     from tqdm import tqdm
 

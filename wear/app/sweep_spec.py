@@ -6,7 +6,7 @@ A sweep file has three parts::
     stage = "impact"                 # "impact", "indent" or "run" (see wear.app.sweep_stages)
 
     [base]                           # optional: a case, same tables as a case file; keys left out take
-    impact.speed = 3.9               # the embedded default case's values
+    impact.speed = 3.9               # the stage's default case's values (see wear.app.sweep_stages)
 
     [grid]                           # dotted keys to lists: the Cartesian product, first key slowest
     "impact.angle" = [10, 30, 50]
@@ -255,7 +255,7 @@ def parse_sweep(data: Mapping, *, source: str = "") -> SweepSpec:
     description = head.get("description", "")
     if not isinstance(description, str):
         raise ValueError(f"sweep.description={_value_text(description)} is not a string")
-    base = _check_table("base", data.get("base", {}))
+    base = _merge(STAGES[stage].defaults(), _check_table("base", data.get("base", {})))
     if ("grid" in data) == ("cases" in data):
         raise ValueError("grid/cases: give exactly one of [grid] (a Cartesian product) or [[cases]] (a list)")
     if "grid" in data:

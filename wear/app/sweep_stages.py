@@ -26,7 +26,9 @@ __all__ = ["Stage", "STAGES", "execute_case", "impact_stage"]
 class Stage:
     """A sweep stage: ``name``, ``function`` (case dict → flat result dict), ``tables`` it reads (None = all),
     ``check``: a cheap validation of a checked case beyond the schema, run before anything runs (raises
-    ``ValueError`` naming the key), and ``units``: result name → SI unit (for figures)."""
+    ``ValueError`` naming the key), ``units``: result name → SI unit (for figures), and ``defaults``: the case
+    (tables of values) that a sweep's ``[base]`` is laid over — empty means the case schema's embedded default
+    case (that of ``impactwear impact``)."""
 
     name: str
     function: Callable[[dict], dict]
@@ -34,6 +36,7 @@ class Stage:
     description: str
     check: Callable[[dict], None] = lambda case: None
     units: Callable[[], dict[str, str]] = dict
+    defaults: Callable[[], dict] = dict
 
 
 def impact_stage(case: dict) -> dict:
