@@ -70,20 +70,25 @@ def pressure_profiles(result, path, stages: int = 6) -> Path:
     picks = np.unique(np.concatenate([np.linspace(loaded[0], i_max, stages // 2 + 1).astype(int)[1:],
                                       np.linspace(i_max, loaded[-1], stages // 2 + 1).astype(int)[1:-1]]))  # fmt: skip
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    a_star = ph.extent[i_max]
+    h = result.impact.history
+    # the contact radius of the impact at each pressure sample (the table's extent is the first node beyond it)
+    radius = np.interp(ph.time, h.t, h.contact_radius)
+    a_star = radius[i_max]
     p_star = force[i_max] / (math.pi * a_star**2) if a_star > 0 else 0.0
+    plastic = result.case.plate.yield_strength is not None and result.regime != "elastic"
     for n, i in enumerate(picks):
-        a = ph.extent[i]
-        r = np.linspace(0.0, 1.1 * max(a, 1e-12), 200)
+        a = radius[i]
+        r = np.linspace(0.0, 1.1 * max(ph.extent[i], a, 1e-12), 200)
         colour = f"C{n % 10}"
         t_us = ph.time[i] * 1e6
         ax.plot(r * 1e6, ph.at(i, r) / 1e6, colour, label=f"{ph.source}, t = {t_us:.2f} µs")
         p0 = 3.0 * force[i] / (2.0 * math.pi * a * a) if a > 0 else 0.0
         ax.plot(r * 1e6, hertz_pressure(r, a, p0) / 1e6, colour, ls=":", lw=1)
-        if i > i_max and a < a_star:
+        if plastic and i > i_max and a < a_star:
             ax.plot(r * 1e6, mesarovic_johnson_pressure(r, a, a_star, p_star) / 1e6, colour, ls="--", lw=1)
-    ax.plot([], [], "k:", lw=1, label="Hertz, Eq. 16 (same F, a)")
-    ax.plot([], [], "k--", lw=1, label="Mesarovic–Johnson, Eq. 19 (unloading)")
+    ax.plot([], [], "k:", lw=1, label="Hertz, Eq. 16 (same F, impact's a)")
+    if plastic:
+        ax.plot([], [], "k--", lw=1, label="Mesarovic–Johnson, Eq. 19 (unloading from p* = F*/πa*²)")
     ax.set_xlabel("r (µm)")
     ax.set_ylabel("contact pressure (MPa)")
     ax.legend(fontsize=7)
