@@ -91,3 +91,45 @@ def test_case_errors_name_the_key(tables, key):
 def test_fe_pressure_without_fe_is_an_error():
     with pytest.raises(ValueError, match="wear.pressure='fe'"):
         run(Case.default().with_(fem={"coupling": "none"}))
+
+
+def test_user_plate_mesh_is_deformed_in_the_output(tmp_path):
+    """A user's meshio plate block (output.plate_mesh) replaces the generated plate.vtu: its top nodes move to
+    −(dent + wear) interpolated from surface.vtu's grid (here no dent: −wear; checked at the wear maximum)."""
+    from wear.surface import DeformedSurface, plate_block_mesh
+
+    flat = DeformedSurface.flat_dent(np.linspace(-5e-4, 5e-4, 41), np.linspace(-5e-4, 5e-4, 41), np.zeros((41, 41)))
+    block = plate_block_mesh(flat, 1e-3, n_layers=3)
+    user = meshio.Mesh(block.points, block.cells)  # an undeformed hexahedral block, top at z = 0
+    path = tmp_path / "block.vtu"
+    user.write(path)
+    result = run(QUICK.with_(output={"plate_mesh": str(path), "figures": False}))
+    write_run(result, tmp_path / "out")
+    moved = meshio.read(tmp_path / "out" / "plate.vtu")
+    assert moved.points.shape == user.points.shape
+    top = user.points[:, 2] == 0.0
+    expected = -result.surface.wear_at(user.points[top, 0], user.points[top, 1])
+    np.testing.assert_allclose(moved.points[top, 2], expected, rtol=0, atol=1e-18)
+    assert -moved.points[top, 2].min() <= result.wear.max_depth_m * (1 + 1e-12)
+
+
+@pytest.mark.filterwarnings("ignore:elastic ball")
+def test_one_way_fe_pressure_normal_impact(tmp_path):
+    """One-way chain (impact → fem.indent_impact → "fe" pressure) on an elastic plate, normal impact, alpha = 1,
+    beta = 0, kinematic speed: the worn volume is K ∫F_FE dt, and with the FE force within a few % of Hertz it
+    equals the impulse identity K m V_n (1 + e) (issue 4 acceptance 2) within 3% (coarse FE mesh, 16 steps);
+    plate_fe.vtu's surface nodes are moved down by the axisymmetric wear depth, whose maximum is the grid's."""
+    case = QUICK.with_(
+        plate={"yield_strength": None},
+        impact={"angle": 0.0, "normal_model": "hertz"},
+        wear={"pressure": "fe", "alpha": 1.0, "beta": 0.0, "K": 1e-13, "speed": "kinematic"},
+        fem={"coupling": "one-way", "mesh_scale": 4.0, "load_steps": 10, "unload_steps": 6},
+        output={"figures": False},
+    )
+    result = run(case)
+    imp = result.impact
+    expected = 1e-13 * imp.mass * case.impact.speed * (1.0 + imp.normal_restitution)
+    assert result.wear.volume_m3 == pytest.approx(expected, rel=0.03)
+    write_run(result, tmp_path / "out")
+    fe_mesh = meshio.read(tmp_path / "out" / "plate_fe.vtu")
+    assert fe_mesh.point_data["wear_depth"].max() == pytest.approx(result.wear.max_depth_m, rel=0.02)
