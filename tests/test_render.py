@@ -57,3 +57,23 @@ def test_atomic_output_dir_leaves_nothing_on_failure(tmp_path):
     with pytest.raises(ValueError, match="out="):
         with atomic_output_dir(target, overwrite=False):
             pass
+
+
+def test_run_without_rendering_libraries_still_succeeds(tmp_path, monkeypatch, capsys):
+    """Issue 4 item 8: where EGL/OSMesa are missing the run succeeds, skips the 3-D view and names the Debian
+    packages to install (simulated by making the library probe fail)."""
+    import wear.app.render as render
+    from wear.app.cli import main
+    from wear.app.run_case import default_run_text
+
+    monkeypatch.setattr(render, "_loadable", lambda *names: False)
+    monkeypatch.delenv("DISPLAY", raising=False)
+    text = default_run_text().replace('pressure = "fe"', 'pressure = "thornton"')
+    text = text.replace('coupling = "two-way"', 'coupling = "none"').replace("figures = true", "figures = false")
+    case = tmp_path / "case.toml"
+    case.write_text(text)
+    assert main(["run", str(case), "--out", str(tmp_path / "out"), "--quiet"]) == 0
+    err = capsys.readouterr().err
+    assert "libegl1" in err and "libgl1-mesa-dri" in err
+    assert not (tmp_path / "out" / "surface_3d.png").exists()
+    assert (tmp_path / "out" / "summary.json").is_file()

@@ -56,7 +56,6 @@ def _table(summary: dict, out: str) -> str:
     lines = [f"{label:<{width}}  {value} {unit}".rstrip() for label, value, unit in rows]
     times = ", ".join(f"{k} {v:.2f} s" for k, v in summary["stage_times_s"].items())
     lines.append(f"stage times: {times}")
-    lines.extend(f"note: {n}" for n in summary.get("notes", []))
     lines.append(f"output: {out}")
     return "\n".join(lines)
 
@@ -95,6 +94,8 @@ def main(args: argparse.Namespace) -> int:
         if bar is not None:
             bar.update(bar.total - bar.n)
             bar.close()
+    for note in summary.get("notes", []):
+        print(f"impactwear run: note: {note}", file=sys.stderr)
     if args.json:
         from .outputs import to_jsonable
 
