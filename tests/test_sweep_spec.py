@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import re
 import subprocess
 import sys
 import textwrap
@@ -181,3 +182,38 @@ def test_missing_file_exits_2(tmp_path, capsys):
 def test_parse_sweep_from_dict_rejects_non_table_grid():
     with pytest.raises(ValueError, match=r"^grid must be a table"):
         parse_sweep({"sweep": {"stage": "impact"}, "grid": [1, 2]})
+
+
+def test_run_and_indent_stages_lay_base_over_the_default_run_case(tmp_path):
+    """The FE stages start from the embedded default run case (wear/app/default_run.toml), the impact stage from
+    the case schema's default case; only the tables a stage reads enter its cases."""
+    import tomllib
+
+    from wear.app.run_case import default_run_text
+
+    run_default = tomllib.loads(default_run_text())
+    spec = load_sweep(_write(tmp_path, '[sweep]\nstage = "run"\n[grid]\n"wear.K" = [1e-12, 1e-11]\n'))
+    assert [c.case["wear"]["K"] for c in spec.cases] == [1e-12, 1e-11]
+    assert set(spec.cases[0].case) == {"ball", "plate", "impact", "wear", "fem"}
+    for table in ("ball", "plate", "impact"):
+        for key, value in run_default[table].items():
+            assert spec.cases[0].case[table][key] == value, f"{table}.{key}"
+    indent = load_sweep(_write(tmp_path, '[sweep]\nstage = "indent"\n[grid]\n"fem.mesh_scale" = [2.0, 4.0]\n'))
+    assert set(indent.cases[0].case) == {"ball", "plate", "impact", "fem"}
+    assert indent.cases[0].case["plate"]["yield_strength"] == run_default["plate"]["yield_strength"]
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        (
+            '[sweep]\nstage = "impact"\n[grid]\n"wear.K" = [1e-12, 1e-11]\n',
+            "grid.wear.K: the impact stage does not read [wear]",
+        ),
+        ('[sweep]\nstage = "run"\n[grid]\n"fem.load_steps" = [2]\n', "fem.load_steps=2 is out of range"),
+        ('[sweep]\nstage = "indent"\n[[cases]]\nfem.coupling = "both"\n', "fem.coupling='both'"),
+    ],
+)
+def test_fe_stage_keys_are_checked_before_running(text, message, tmp_path):
+    with pytest.raises(ValueError, match=re.escape(message)):
+        load_sweep(_write(tmp_path, text))

@@ -218,11 +218,10 @@ def _case_schema():
 def _validated(stage: str, merged: dict) -> dict:
     """Full, validated, normalised case (nested JSON dict) restricted to the stage's tables."""
     full = _case_schema().check_case(merged)
-    STAGES[stage].check(full)
     tables = STAGES[stage].tables
-    if tables is None:
-        return full
-    return {t: full[t] for t in tables if t in full}
+    case = full if tables is None else {t: full[t] for t in tables if t in full}
+    STAGES[stage].check(case)
+    return case
 
 
 def _blame(stage: str, base: dict, exc: ValueError, label: str) -> str:
@@ -268,6 +267,13 @@ def parse_sweep(data: Mapping, *, source: str = "") -> SweepSpec:
         axes, overrides = None, _explicit_cases(data["cases"])
         labels = [f"cases[{i}]" for i in range(len(overrides))]
 
+    tables = STAGES[stage].tables
+    for flat, label in zip(overrides, labels, strict=True):
+        for key in flat:
+            if tables is not None and key.split(".")[0] not in tables:
+                where = f"grid.{key}" if axes is not None else f"{label}.{key}"
+                raise ValueError(f"{where}: the {stage} stage does not read [{key.split('.')[0]}]; it reads "
+                                 f"{', '.join(f'[{t}]' for t in tables)}")  # fmt: skip
     cases: list[SweepCase] = []
     seen: dict[str, int] = {}
     for i, (flat, label) in enumerate(zip(overrides, labels, strict=True)):

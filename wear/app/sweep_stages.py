@@ -15,11 +15,12 @@ import os
 import socket
 import time
 import traceback
+import warnings
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-__all__ = ["Stage", "STAGES", "execute_case", "impact_stage"]
+__all__ = ["Stage", "STAGES", "execute_case", "impact_stage", "indent_stage", "run_stage"]
 
 
 @dataclass(frozen=True)
@@ -68,6 +69,125 @@ def _check_impact(case: dict) -> None:
     impact_arguments(case)
 
 
+def _run_defaults() -> dict:
+    """The embedded default run case (that of ``impactwear run``); importing run_case registers [wear], [fem],
+    [output] in the case schema."""
+    try:
+        import tomllib
+    except ModuleNotFoundError:  # Python 3.10
+        import tomli as tomllib
+
+    from .run_case import default_run_text
+
+    return tomllib.loads(default_run_text())
+
+
+def _pipeline_case(case: dict):
+    from wear.pipeline import Case
+
+    return Case.from_dict(case)
+
+
+def _check_fe(case: dict) -> None:
+    """Materials and the pipeline's own checks of the [fem] (and [wear]) keys, without running anything."""
+    _check_impact(case)
+    _pipeline_case(case)
+
+
+def indent_stage(case: dict) -> dict:
+    """The FE plate along the case's impact (:func:`fem.indent_impact`, ``fem.load_steps + fem.unload_steps``
+    increments, the mesh of ``fem.mesh_scale`` as in ``impactwear run``), one-way: the impact uses the case's
+    ``impact.normal_model``.
+
+    Results (SI): ``impact_max_overlap`` (m), ``impact_max_force`` (N), ``max_force`` (N, FE), ``max_contact_radius``
+    (m), ``max_pressure`` and ``max_mean_pressure`` (Pa), ``first_yield_force`` (N), ``first_yield_overlap`` (m),
+    ``first_yield_depth`` (m below the surface), ``first_yield_radius`` (m; all None if the plate never yields),
+    ``residual_max_depth`` (m, dent depth after unloading), ``max_equivalent_plastic_strain``, ``regime`` (the
+    most plastic one reached), ``newton_iterations`` (total).
+    """
+    import numpy as np
+
+    import fem
+    from contact import simulate_impact
+    from wear.coupling import fe_mesh
+
+    from .case import impact_arguments
+
+    args = impact_arguments(case)
+    impact = simulate_impact(**args, history=True)
+    pcase = _pipeline_case(case)
+    ball, plate = args["ball"], args["plate"]
+    steps = pcase.fem.load_steps + pcase.fem.unload_steps
+    mesh = fe_mesh(pcase, ball, plate, impact.max_overlap)
+    res = fem.indent_impact(impact, plate, steps=steps, mesh=mesh)  # the ball comes with the impact
+    fy = res.first_yield
+    order = ("elastic", "contained", "surface-plastic", "fully-plastic")
+    return {
+        "impact_max_overlap": impact.max_overlap,
+        "impact_max_force": impact.max_force,
+        "max_force": float(np.max(res.force)),
+        "max_contact_radius": float(np.max(res.contact_radius)),
+        "max_pressure": float(np.max(res.max_pressure)),
+        "max_mean_pressure": float(np.nanmax(res.mean_pressure)),
+        "first_yield_force": None if fy is None else fy.force,
+        "first_yield_overlap": None if fy is None else fy.overlap,
+        "first_yield_depth": None if fy is None else fy.depth,
+        "first_yield_radius": None if fy is None else fy.radius,
+        "residual_max_depth": float(np.max(res.residual_depth)),
+        "max_equivalent_plastic_strain": float(np.max(res.max_equivalent_plastic_strain)),
+        "regime": max((r for r in res.regime if r in order), key=order.index, default="elastic"),
+        "newton_iterations": int(np.sum(res.newton_iterations)),
+    }
+
+
+_INDENT_UNITS = {
+    "impact_max_overlap": "m",
+    "impact_max_force": "N",
+    "max_force": "N",
+    "max_contact_radius": "m",
+    "max_pressure": "Pa",
+    "max_mean_pressure": "Pa",
+    "first_yield_force": "N",
+    "first_yield_overlap": "m",
+    "first_yield_depth": "m",
+    "first_yield_radius": "m",
+    "residual_max_depth": "m",
+}
+
+
+def run_stage(case: dict) -> dict:
+    """The whole chain (:func:`wear.pipeline.run`: impact, FE plate, coupling, wear, surface; no files written).
+
+    Results: the numbers of ``summary.json`` flattened to dotted names — ``impact.*`` (rebound, times s, forces N,
+    lengths m, pressure Pa), ``yield.*`` (N, m/s), ``regime``, ``wear.*`` (``volume_m3``, ``mass_kg``,
+    ``max_depth_m``, ``scar_length_m``, ``scar_width_m``, law, pressure source), ``dent.*`` (m) and
+    ``coupling.*`` — without the input case and without the stage wall times (not reproducible).
+    """
+    from wear.pipeline import run
+
+    summary = run(_pipeline_case(case)).summary()
+    out: dict = {}
+    for section, values in summary.items():
+        if section in ("case", "stage_times_s"):
+            continue
+        if isinstance(values, dict):
+            for key, value in values.items():
+                if key != "units" and not isinstance(value, (dict, list, tuple)):
+                    out[f"{section}.{key}"] = value
+        elif values is not None:
+            out[section] = values
+    return out
+
+
+def _run_units() -> dict[str, str]:
+    from contact.results import OUTPUT_UNITS
+
+    units = {f"impact.{k}": u for k, u in OUTPUT_UNITS.items()}
+    units.update({"yield.F_y_paper": "N", "yield.F_c_exact": "N", "yield.fe_first_yield_force": "N",
+                  "yield.V_y": "m/s", "dent.max_depth_m": "m", "dent.centre_x_m": "m"})  # fmt: skip
+    return units
+
+
 STAGES: dict[str, Stage] = {
     "impact": Stage(
         "impact",
@@ -76,6 +196,24 @@ STAGES: dict[str, Stage] = {
         "one H-DD impact (contact.simulate_impact)",
         _check_impact,
         _impact_units,
+    ),
+    "indent": Stage(
+        "indent",
+        indent_stage,
+        ("ball", "plate", "impact", "fem"),
+        "the FE plate along the impact's overlap history (fem.indent_impact)",
+        _check_fe,
+        lambda: dict(_INDENT_UNITS),
+        _run_defaults,
+    ),
+    "run": Stage(
+        "run",
+        run_stage,
+        ("ball", "plate", "impact", "wear", "fem"),
+        "the whole chain impact -> FE -> coupling -> wear (wear.pipeline.run)",
+        _check_fe,
+        _run_units,
+        _run_defaults,
     ),
 }
 
@@ -100,16 +238,19 @@ def execute_case(stage: str, case: dict) -> dict:
     """Run ``case`` through ``stage`` in this process; never raises for an error of the case itself.
 
     Returns ``{"status": "ok" | "failed", "results": dict | None, "error": str | None, "traceback": str | None,
-    "elapsed_s": float, "worker": "host:pid"}``.
+    "warnings": [str], "elapsed_s": float, "worker": "host:pid"}`` (warnings are recorded, not printed).
     """
     start = time.perf_counter()
     record: dict[str, Any] = {"status": "ok", "results": None, "error": None, "traceback": None}
-    try:
-        record["results"] = flat_results(STAGES[stage].function(case), stage)
-    except Exception as exc:  # a failed case is recorded and the sweep goes on
-        record.update(
-            status="failed", error=f"{type(exc).__name__}: {exc}".splitlines()[0], traceback=traceback.format_exc()
-        )
+    # warnings are kept with the case instead of flooding the driver's terminal with one copy per case
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            record["results"] = flat_results(STAGES[stage].function(case), stage)
+        except Exception as exc:  # a failed case is recorded and the sweep goes on
+            error = f"{type(exc).__name__}: {exc}".splitlines()[0]
+            record.update(status="failed", error=error, traceback=traceback.format_exc())
+    record["warnings"] = list(dict.fromkeys(f"{w.category.__name__}: {w.message}" for w in caught))
     record["elapsed_s"] = time.perf_counter() - start
     record["worker"] = f"{socket.gethostname()}:{os.getpid()}"
     return record
