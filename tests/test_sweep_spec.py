@@ -217,3 +217,13 @@ def test_run_and_indent_stages_lay_base_over_the_default_run_case(tmp_path):
 def test_fe_stage_keys_are_checked_before_running(text, message, tmp_path):
     with pytest.raises(ValueError, match=re.escape(message)):
         load_sweep(_write(tmp_path, text))
+
+
+def test_dask_options_without_distributed_give_one_line_naming_the_options(tmp_path, monkeypatch, capsys):
+    """distributed is optional at import time: without it, --dask-local/--scheduler fail with one line."""
+    monkeypatch.setitem(sys.modules, "distributed", None)  # makes `import distributed` raise ImportError
+    sweep = _write(tmp_path, '[sweep]\nstage = "impact"\n[grid]\n"impact.angle" = [10]\n')
+    status = cli.main(["sweep", str(sweep), "--out", str(tmp_path / "out"), "--dask-local", "2", "--quiet"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert status == 2 and len(err) == 1
+    assert "--dask-local/--scheduler" in err[0] and "impactwear[dask]" in err[0]
