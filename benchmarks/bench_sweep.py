@@ -33,7 +33,7 @@ def heavy_sweep(cases: int, quick: bool) -> tuple[dict, str]:
     angles = [round(5 + 80 * i / max(cases - 1, 1), 6) for i in range(cases)]
     if "run" in STAGES:
         # the default run case on a coarser FE mesh with fewer increments, so 20 cases take minutes, not an hour
-        fem = {"mesh_scale": 4.0, "load_steps": 8, "unload_steps": 4} if quick else {"mesh_scale": 2.0}
+        fem = {"mesh_scale": 4.0} if quick else {"mesh_scale": 2.0}
         note = f"run stage (wear.pipeline.run), default run case with fem = {fem}"
         return {"sweep": {"stage": "run"}, "base": {"fem": fem}, "grid": {"impact.angle": angles}}, note
     # fallback, should the run stage be unavailable: heavy impacts (~3e6 engine steps each, ~0.2 s)
@@ -47,8 +47,9 @@ def timed(spec, **how) -> tuple[float, object]:
         start = time.perf_counter()
         outcome = run_sweep(spec, Path(tmp) / "out", quiet=True, **how)
         wall = time.perf_counter() - start
-    if outcome.failed:
-        raise SystemExit(f"benchmark sweep had failed cases: {outcome.failures}")
+    if outcome.failed:  # a failed case cost its time too; say so rather than hide it
+        first = next(iter(outcome.failures.values()))
+        print(f"   ({outcome.failed} of {outcome.total} cases failed, e.g. {first[:120]})")
     return wall, outcome
 
 
@@ -62,10 +63,19 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cases", type=int, default=20, help="cases in the speed-up part")
     parser.add_argument("--quick", action="store_true", help="smoke run at reduced size")
+    parser.add_argument("--part", type=int, choices=(1, 2), help="run only part 1 (speed-up) or 2 (Dask overhead)")
     args = parser.parse_args()
     load = ", ".join(f"{x:.1f}" for x in os.getloadavg())
     print(f"impactwear sweep benchmark — {os.cpu_count()} CPUs, Python {sys.version.split()[0]}, load average {load}")
 
+    if args.part != 2:
+        part_one(args)
+    if args.part != 1:
+        part_two(args)
+    return 0
+
+
+def part_one(args) -> None:
     data, note = heavy_sweep(args.cases, args.quick)
     spec = parse_sweep(data)
     print(f"\n1. speed-up of 2 workers over 1: {len(spec.cases)} cases, {note}")
@@ -77,6 +87,8 @@ def main() -> int:
     load = ", ".join(f"{x:.1f}" for x in os.getloadavg())
     print(f"   load average after part 1: {load} (other processes on the machine lower the speed-up)")
 
+
+def part_two(args) -> None:
     n1, n2 = (20, 60) if args.quick else (50, 250)
     print("\n2. per-case overhead, Dask LocalCluster(2 processes) vs local pool(2 processes), cheap impact cases")
     rows = {}
@@ -95,7 +107,6 @@ def main() -> int:
         f"   Dask overhead per case over the local pool: {extra * 1e3:+.2f} ms "
         f"(ratio {rows['dask local'] / rows['local pool']:.2f}x)"
     )
-    return 0
 
 
 if __name__ == "__main__":
