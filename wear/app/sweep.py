@@ -16,8 +16,10 @@ nothing is lost, nothing is duplicated. A worker process that dies takes its cas
 restarts and retries the cases that were running, and gives a case up (recorded as failed) after it was running
 in :data:`MAX_ATTEMPTS` pool breakdowns; Dask does the same through its ``allowed-failures`` setting (default 3).
 
-Workers run each case in a fresh process (``spawn``) with ``cpu_count // workers`` threads for numba and BLAS,
-so the same case gives the same numbers whichever way the sweep runs.
+Workers run each case in a fresh process (``spawn``) with one thread for numba, OpenMP and BLAS (the sweep's
+parallelism is across cases), so the same case gives the same numbers, bit for bit, whichever way and with how
+many workers the sweep runs. Workers of an existing cluster (``--scheduler``) should set the same variables
+(:data:`THREAD_VARIABLES` = 1) for that guarantee.
 """
 
 from __future__ import annotations
@@ -44,7 +46,8 @@ __all__ = ["SweepOutcome", "SweepAborted", "run_sweep", "results_table", "MAX_AT
 #: A case is recorded as failed after the worker running it died this many times.
 MAX_ATTEMPTS = 3
 
-_THREAD_VARS = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS")
+#: Environment variables set to the thread count (1) of every worker, before numpy and numba load.
+THREAD_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS")
 
 
 @dataclass
@@ -111,7 +114,7 @@ def _write_record(out: Path, sc: SweepCase, stage: str, outcome: dict) -> None:
 # ------------------------------------------------------------------------------------------ execution
 def _worker_init(parent_pid: int, threads: int) -> None:
     """Limit the worker's threads (before numpy/numba load) and make it exit when the driver disappears."""
-    for var in _THREAD_VARS:
+    for var in THREAD_VARIABLES:
         os.environ[var] = str(threads)
 
     def watch() -> None:
@@ -123,7 +126,8 @@ def _worker_init(parent_pid: int, threads: int) -> None:
 
 
 def _threads_per_worker(workers: int) -> int:
-    return max(1, (os.cpu_count() or 1) // workers)
+    """One: a reduction's result may depend on its thread count, and a sweep's speed comes from its cases."""
+    return 1
 
 
 Done = Callable[[SweepCase, dict], None]
@@ -220,7 +224,7 @@ def dask_client(dask_local: int | None = None, scheduler: str | None = None):
         host="127.0.0.1",
         dashboard_address=None,
         silence_logs=logging.ERROR,
-        env={v: str(threads) for v in _THREAD_VARS},
+        env={v: str(threads) for v in THREAD_VARIABLES},
     )
     return distributed.Client(cluster)
 
@@ -242,7 +246,7 @@ def _run_dask(pending: list[SweepCase], stage: str, client, done: Done) -> None:
                 outcome = {
                     "status": "failed",
                     "results": None,
-                    "error": f"{type(exc).__name__}: {exc}",
+                    "error": f"{type(exc).__name__}: {exc}".splitlines()[0],
                     "traceback": None,
                 }
             done(sc, outcome)
