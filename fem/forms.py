@@ -62,7 +62,7 @@ class Discretisation:
     surface_mass: sp.csr_matrix
     node_r: np.ndarray
     node_z: np.ndarray
-    surface_layer: np.ndarray  # (elements, qp) bool: quadrature points of elements touching z = 0
+    surface_layer: np.ndarray  # (elements, qp) bool: top-row quadrature points (depth < 0.2 h) at z = 0
 
     def matrix(self, data: np.ndarray) -> sp.csr_matrix:
         """CSR matrix with the fixed pattern and the given ``data``."""
@@ -138,9 +138,13 @@ def discretise(mesh: MeshTri, intorder: int = 4) -> Discretisation:
     ).tocsr()
     surface_mass = mass[surf][:, surf].tocsr()
 
+    # the top row of quadrature points: depth below 0.2 × the element size, in elements touching z = 0
     on_surface = np.abs(mesh.p[1]) <= 1e-12 * max(np.ptp(mesh.p[1]), 1e-300)
     touches = on_surface[mesh.t].any(axis=0)
-    surface_layer = np.repeat(touches[:, None], nq, axis=1)
+    e1 = mesh.p[:, mesh.t[1]] - mesh.p[:, mesh.t[0]]
+    e2 = mesh.p[:, mesh.t[2]] - mesh.p[:, mesh.t[0]]
+    size = np.sqrt(np.abs(e1[0] * e2[1] - e1[1] * e2[0]))
+    surface_layer = touches[:, None] & (-x[1] < 0.2 * size[:, None])
 
     return Discretisation(
         mesh=mesh,

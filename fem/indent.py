@@ -101,23 +101,25 @@ class _Run:
         self.final: PlateState | None = None
 
     # -- one step's numbers
-    def measure(self, state: PlateState) -> dict:
+    def measure(self, state: PlateState, reach: float = 0.0) -> dict:
+        """Numbers of one step; ``reach`` (m) = largest contact radius so far (the regime refers to it)."""
         s = self.solver
         d = s.disc
         reactions = s.reactions(state)
+        reactions[~state.active] = 0.0  # off the contact set only the (converged) residual remains
         zs = sphere_surface(d.surface_r, state.overlap, self.radius)
         gap = zs - state.u[s.surface_uz]
-        a = contact_radius(d.surface_r, state.n_active, gap)
+        a = contact_radius(d.surface_r, state.active, gap)
         pressure = s.mass_lu.solve(reactions)
         force = float(reactions.sum())
         plastic = state.alpha > 0.0
         if not plastic.any():
             regime = "elastic"
         else:
-            under = d.surface_layer & (d.qp_r < a)
+            under = d.surface_layer & (d.qp_r < max(a, reach))
             if not (plastic & under).any():
                 regime = "contained"
-            elif a > 0 and (plastic | ~under).all():
+            elif (plastic | ~under).all():
                 regime = "fully-plastic"
             else:
                 regime = "surface-plastic"
@@ -138,23 +140,30 @@ class _Run:
         rows, states = [], []
         yield_point = None
         last_elastic = None
+        reach = 0.0 if start is None else self.reach
         for overlap in overlaps:
             new = s.advance(state, previous, float(overlap))
             previous, state = state, new
-            row = self.measure(state)
+            row = self.measure(state, reach)
+            reach = max(reach, row["contact_radius"])
             row["iterations"] = state.iterations
             row["overlap"] = state.overlap
             rows.append(row)
             if keep:
                 states.append(state)
-            if s.material.yield_strength is not None and yield_point is None:
+            if s.material.yield_strength is not None and yield_point is None and start is None:
                 if row["alpha"] == 0.0:
                     if row["force"] > 0.0:
                         last_elastic = (state, row)
                 else:
-                    ref = last_elastic if last_elastic is not None else (self._elastic(state.overlap), None)
+                    ref = last_elastic if last_elastic is not None else self._elastic(state.overlap)
                     yield_point = self._first_yield(*ref)
         self.final = state
+        if start is None:
+            self.reach = reach
+            self.first_yield = yield_point
+        else:
+            yield_point = self.first_yield
         if keep:
             self.kept = [st for st in states]
         return self._result(rows, state, yield_point, times)
@@ -272,7 +281,7 @@ def indent(
     mesh: MeshTri | str | os.PathLike | None = None,
     hardening: float = 0.0,
     keep_states: bool = False,
-    rtol: float = 1e-8,
+    rtol: float = 1e-6,
     _times=None,
 ) -> IndentationResult:
     r"""Press a sphere of ``radius`` (m) into ``plate`` along the overlap path ``overlaps`` (m).
@@ -282,7 +291,8 @@ def indent(
     ``mesh``: None (the default mesh scaled to the path), a :class:`skfem.MeshTri` or a mesh file
     (m, named boundaries ``axis``, ``surface``, ``bottom``). ``hardening`` H (Pa): linear isotropic
     hardening of the plate (0 = perfectly plastic). ``keep_states`` keeps every converged state so
-    :meth:`IndentationResult.unload_from` can restart from them.
+    :meth:`IndentationResult.unload_from` can restart from them. ``rtol``: Newton stops when the
+    free residual is below ``rtol`` × the contact reactions (2-norms, N).
     """
     radius = check_number("radius", radius, low=1e-6, high=10.0, units="m", what="ball radius")
     path = _check_path(overlaps)

@@ -95,7 +95,7 @@ def radial_return(
     H = material.hardening
     flow_stress = material.yield_strength + H * alpha
     ratio = q_trial / flow_stress
-    yielding = ratio > 1.0
+    yielding = ratio > 1.0 + 1e-10  # points left exactly on the surface by the last return unload elastically
     stress = s_trial + pressure_part
     new_plastic = plastic_strain.copy()
     new_alpha = alpha.copy()

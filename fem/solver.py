@@ -19,12 +19,13 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from skfem import MeshTri
 
 from .forms import assemble, discretise, element_matrices, internal_force, strain
 from .plasticity import J2Material, radial_return
-from .sphere_contact import sphere_surface, update_active_count
+from .sphere_contact import sphere_surface, update_active_set
 
 __all__ = ["ConvergenceError", "PlateState", "PlateSolver"]
 
@@ -37,14 +38,18 @@ class ConvergenceError(RuntimeError):
 class PlateState:
     """Converged state: ``overlap`` δ (m), ``u`` nodal displacements (m, interleaved r, z),
     ``plastic_strain`` (elements, qp, 4) Mandel, ``alpha`` (elements, qp) equivalent plastic
-    strain, ``n_active`` active surface nodes, ``iterations`` Newton iterations spent."""
+    strain, ``active`` bool mask of the surface nodes in contact, ``iterations`` Newton iterations spent."""
 
     overlap: float
     u: np.ndarray
     plastic_strain: np.ndarray
     alpha: np.ndarray
-    n_active: int
+    active: np.ndarray
     iterations: int = 0
+
+    @property
+    def n_active(self) -> int:
+        return int(np.count_nonzero(self.active))
 
 
 @dataclass
@@ -54,6 +59,7 @@ class SolverStats:
     factorisations: int = 0
     iterations: int = 0
     cuts: int = 0
+    cg_iterations: int = 0
     increments: int = 0
     assembly_time: float = 0.0
     factor_time: float = 0.0
@@ -78,7 +84,7 @@ class PlateSolver:
         radius: float,
         force_scale: float,
         gap_scale: float,
-        rtol: float = 1e-8,
+        rtol: float = 1e-6,
         max_iterations: int = 25,
         max_cuts: int = 6,
     ) -> None:
@@ -96,13 +102,17 @@ class PlateSolver:
         self.surface_uz = 2 * d.surface_nodes + 1
         self.mass_lu = spla.splu(d.surface_mass.tocsc())
         self.stats = SolverStats()
+        self._lu = None
+        self.cg_rtol = 1e-9
+        self.cg_max_iterations = 25
         nel, nq = d.weight.shape
         self._zero_plastic = np.zeros((nel, nq, 4))
         self._zero_alpha = np.zeros((nel, nq))
 
     def initial_state(self) -> PlateState:
         """The undeformed, unloaded plate."""
-        return PlateState(0.0, np.zeros(self.disc.ndofs), self._zero_plastic, self._zero_alpha, 0)
+        nodes = self.disc.surface_r.size
+        return PlateState(0.0, np.zeros(self.disc.ndofs), self._zero_plastic, self._zero_alpha, np.zeros(nodes, bool))
 
     def stress_update(self, state: PlateState, reference: PlateState | None = None):
         """Stress update of ``state.u`` from ``reference`` (default: the state itself, i.e. its stresses)."""
@@ -125,35 +135,56 @@ class PlateSolver:
             ke[elements] = element_matrices(d, D, elements)
         return assemble(d, ke)
 
-    def _newton(self, start: PlateState, overlap: float, u0: np.ndarray, n0: int) -> PlateState:
+    def _newton(
+        self,
+        start: PlateState,
+        overlap: float,
+        u0: np.ndarray,
+        active0: np.ndarray,
+        frozen: bool = False,
+        release_on_cycle: bool = False,
+    ) -> PlateState:
         import time
 
         d = self.disc
         zs = sphere_surface(d.surface_r, overlap, self.radius)
         u = u0.copy()
-        n = n0
-        seen: set[int] = set()
-        frozen = False
+        active = active0.copy()
+        equilibrated = False
+        seen: set[bytes] = set()
         uz = self.surface_uz
+        cached = None
         for it in range(self.max_iterations):
-            upd = radial_return(self.material, strain(d, u), start.plastic_strain, start.alpha)
-            f = internal_force(d, upd.stress)
+            if cached is None:
+                upd = radial_return(self.material, strain(d, u), start.plastic_strain, start.alpha)
+                f = internal_force(d, upd.stress)
+            else:
+                upd, f = cached
             changed = False
             if it > 0 and not frozen:
-                n_new = update_active_count(n, -f[uz], zs - u[uz], self.gap_tol)
-                if n_new != n:
-                    if n_new in seen:  # active set cycles between neighbours: keep the larger, stop switching
+                new = update_active_set(active, -f[uz], zs - u[uz], self.gap_tol, equilibrated)
+                if (new != active).any():
+                    key = new.tobytes()
+                    if key in seen:
+                        # the set cycles (an edge node pulls when held and penetrates when free: the edge lies
+                        # between nodes): keep the union (or, as a fallback on unloading, the intersection,
+                        # leaving a penetration below the discretisation error of the edge), stop switching
                         frozen = True
-                        n_new = max(n, n_new)
-                    seen.add(n)
-                    changed = n_new != n
-                    n = n_new
-            constrained = np.concatenate([self.fixed_dofs, uz[:n]])
-            du_c = np.concatenate([-u[self.fixed_dofs], zs[:n] - u[uz[:n]]])
+                        new = (new & active) if release_on_cycle else (new | active)
+                    seen.add(active.tobytes())
+                    changed = (new != active).any()
+                    active = new
+            constrained = np.concatenate([self.fixed_dofs, uz[active]])
+            du_c = np.concatenate([-u[self.fixed_dofs], zs[active] - u[uz[active]]])
             free_mask = np.ones(d.ndofs, dtype=bool)
             free_mask[constrained] = False
             residual = np.linalg.norm(f[free_mask])
-            scale = max(np.linalg.norm(f[uz[:n]]), self.atol / self.rtol)
+            scale = max(np.linalg.norm(f[uz[active]]), self.atol / self.rtol)
+            equilibrated = residual <= self.rtol * scale
+            if it == 1:
+                first_residual = max(residual, self.rtol * scale)
+            elif it > 1 and residual > 1e4 * first_residual:
+                break  # diverging: cut the increment now
             if (
                 it > 0
                 and not changed
@@ -162,44 +193,90 @@ class PlateSolver:
             ):
                 self.stats.iterations += it
                 self.stats.history.append(it)
-                return PlateState(overlap, u, upd.plastic_strain, upd.alpha, n, it)
+                return PlateState(overlap, u, upd.plastic_strain, upd.alpha, active, it)
             t0 = time.perf_counter()
             K = self._tangent(upd)
-            free = np.flatnonzero(free_mask)
-            K_ff = K[free][:, free]
-            rhs = -f[free] - K[free][:, constrained] @ du_c
+            du = np.zeros(d.ndofs)
+            du[constrained] = du_c
+            rhs = -f - K @ du
+            # constrained rows become s·I with s the mean free diagonal, so forces and the prescribed
+            # displacements weigh alike in the CG residual
+            keep = free_mask.astype(float)
+            diag_scale = float(np.mean(K.diagonal()[free_mask]))
+            rhs[constrained] = diag_scale * du_c
+            K_mod = (sp.diags(keep) @ K @ sp.diags(keep) + sp.diags(diag_scale * (1.0 - keep))).tocsr()
             t1 = time.perf_counter()
-            lu = spla.splu(
-                K_ff.tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True}
-            )
-            du_f = lu.solve(rhs)
+            step = self._linear_solve(K_mod, rhs)
             t2 = time.perf_counter()
             self.stats.assembly_time += t1 - t0
             self.stats.factor_time += t2 - t1
-            self.stats.factorisations += 1
-            if not np.all(np.isfinite(du_f)):
+            if not np.all(np.isfinite(step)):
                 break
-            u[free] += du_f
-            u[constrained] += du_c
+            u, cached = self._line_search(start, u, step, free_mask, residual, it)
         self._last_residual = residual
         raise _NotConverged(residual)
 
-    def _guess(self, state: PlateState, previous: PlateState | None, overlap: float) -> tuple[np.ndarray, int]:
+    def _line_search(self, start: PlateState, u: np.ndarray, step: np.ndarray, free_mask, residual: float, it: int):
+        """Full Newton step, unless (after six iterations) it increases the free residual: then
+        the best of the step halved up to four times. Guards the rare divergence when contact shrinks to a
+        few nodes over a yielded dent; the evaluation at the accepted point is reused by the next iteration."""
+        d = self.disc
+        best = None
+        for alpha in (1.0, 0.5, 0.25, 0.125, 0.0625):
+            trial = u + alpha * step
+            upd = radial_return(self.material, strain(d, trial), start.plastic_strain, start.alpha)
+            f = internal_force(d, upd.stress)
+            value = np.linalg.norm(f[free_mask])
+            if best is None or value < best[0]:
+                best = (value, trial, upd, f)
+            if it < 6 or value <= residual:
+                break
+        return best[1], (best[2], best[3])
+
+    def _factorise(self, K_mod: sp.csr_matrix) -> None:
+        self._lu = spla.splu(
+            K_mod.tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True}
+        )
+        self.stats.factorisations += 1
+
+    def _linear_solve(self, K_mod: sp.csr_matrix, rhs: np.ndarray) -> np.ndarray:
+        """Solve K_mod x = rhs: preconditioned CG with the LU of an earlier tangent (the tangent changes only
+        in the plastic zone and at the contact edge), refactorising when CG needs more than
+        ``cg_max_iterations`` (or on the first call)."""
+        if self._lu is not None:
+            count = [0]
+
+            def callback(_):
+                count[0] += 1
+
+            M = spla.LinearOperator(K_mod.shape, matvec=self._lu.solve, dtype=float)
+            x, info = spla.cg(
+                K_mod, rhs, x0=self._lu.solve(rhs), rtol=self.cg_rtol, maxiter=self.cg_max_iterations, M=M,
+                callback=callback,
+            )  # fmt: skip
+            self.stats.cg_iterations += count[0]
+            if info == 0:
+                return x
+        self._factorise(K_mod)
+        return self._lu.solve(rhs)
+
+    def _guess(self, state: PlateState, previous: PlateState | None, overlap: float) -> tuple[np.ndarray, np.ndarray]:
         d = self.disc
         step = overlap - state.overlap
         if state.n_active == 0 and not np.any(state.u):
             # first contact of a virgin plate: Hertz contact set
-            return state.u, int(np.count_nonzero(d.surface_r < math.sqrt(self.radius * max(overlap, 0.0))))
-        if previous is not None:
+            return state.u, d.surface_r < math.sqrt(self.radius * max(overlap, 0.0))
+        if previous is not None and step > 0.0:
+            # extrapolate on loading only: on unloading a large extrapolated trial state can set off spurious
+            # reverse yielding that Newton does not recover from; the previous state is a good start there
             last = state.overlap - previous.overlap
             if last != 0.0 and step * last > 0.0:
                 factor = min(step / last, 4.0)
                 u0 = state.u + factor * (state.u - previous.u)
                 gap = sphere_surface(d.surface_r, overlap, self.radius) - u0[self.surface_uz]
                 # nodes the extrapolation keeps on the sphere (gap ≈ 0) or pushes into it
-                open_nodes = np.flatnonzero(gap > 1e-6 * abs(step) + self.gap_tol)
-                return u0, int(open_nodes[0]) if open_nodes.size else gap.size
-        return state.u, state.n_active
+                return u0, gap <= 1e-6 * abs(step) + self.gap_tol
+        return state.u, state.active
 
     def advance(self, state: PlateState, previous: PlateState | None, overlap: float, depth: int = 0) -> PlateState:
         """Converged state at ``overlap`` (m) from ``state``; cuts the increment in halves if needed."""
@@ -209,6 +286,22 @@ class PlateSolver:
             self.stats.increments += 1
             return new
         except _NotConverged as exc:
+            if overlap < state.overlap:
+                try:
+                    new = self._newton(state, overlap, u0, n0, release_on_cycle=True)
+                    self.stats.increments += 1
+                    return new
+                except _NotConverged:
+                    pass
+            if overlap < state.overlap and 0 < state.n_active <= 3:
+                # the last one to three nodes leaving a yielded dent: a point load on a perfectly plastic
+                # surface has no converged discrete answer; release them together
+                try:
+                    new = self._newton(state, overlap, state.u, np.zeros_like(state.active), frozen=True)
+                    self.stats.increments += 1
+                    return new
+                except _NotConverged:
+                    pass
             if depth >= self.max_cuts:
                 raise ConvergenceError(
                     f"Newton did not converge at overlap={overlap:.6g} m (increment from {state.overlap:.6g} m, "

@@ -6,9 +6,9 @@ The sphere's lower surface at overlap δ is exact (no paraboloid approximation):
 
 and the surface nodes obey u_z(r_i) ≤ z_s(r_i) (small strain: gaps measured at the reference
 radius). The contact set of a sphere pressed into a flat is a disc, so the active set is the
-first ``n`` surface nodes from the axis: the semi-smooth Newton of :mod:`fem.solver` moves ``n``
-outwards where an inactive node penetrates and inwards where an active node pulls (negative
-reaction). No penalty parameter.
+set of surface nodes (a disc while loading): the semi-smooth Newton of :mod:`fem.solver` adds
+nodes that penetrate and releases nodes that pull (negative reaction), see
+:func:`update_active_set`. No penalty parameter.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse.linalg as spla
 
-__all__ = ["sphere_surface", "update_active_count", "contact_radius", "pressure_from_reactions"]
+__all__ = ["sphere_surface", "update_active_set", "contact_radius", "pressure_from_reactions"]
 
 
 def sphere_surface(r: np.ndarray, overlap: float, radius: float) -> np.ndarray:
@@ -28,33 +28,41 @@ def sphere_surface(r: np.ndarray, overlap: float, radius: float) -> np.ndarray:
     return z
 
 
-def update_active_count(n_active: int, reactions: np.ndarray, gap: np.ndarray, gap_tol: float) -> int:
-    """New number of active surface nodes (sorted by r).
+def update_active_set(
+    active: np.ndarray, reactions: np.ndarray, gap: np.ndarray, gap_tol: float, equilibrated: bool
+) -> np.ndarray:
+    """New active set (bool mask over the surface nodes sorted by r).
 
-    ``reactions`` (N, positive = compressive) of all surface nodes, ``gap`` = z_s − u_z (m,
-    negative = penetration). Penetration beyond the current set extends it to the outermost
-    penetrating node; otherwise pulling active nodes at the edge of the set are released.
+    ``reactions`` (N, positive = compressive), ``gap`` = z_s − u_z (m, negative = penetration).
+    Penetrating free nodes join. Otherwise pulling nodes at the outer edge of the set leave; pulling
+    nodes inside the set leave only once the iterate is ``equilibrated`` for the current set (an
+    unconverged iterate, or a P2 vertex carrying a small negative share of a positive pressure, is
+    not a separation), which lets the contact open from the centre at the end of unloading.
     """
-    outside = np.flatnonzero(gap[n_active:] < -gap_tol)
-    if outside.size:
-        return int(n_active + outside[-1] + 1)
-    # release from the edge inwards only: inside the disc a pulling node of an unconverged iterate
-    # is not a separation (and a P2 vertex may carry a small negative share of a positive pressure)
-    n = n_active
-    while n > 0 and reactions[n - 1] < 0.0:
-        n -= 1
-    return n
+    new = active.copy()
+    penetrating = ~active & (gap < -gap_tol)
+    if penetrating.any():
+        return new | penetrating
+    idx = np.flatnonzero(active)
+    for i in idx[::-1]:
+        if reactions[i] >= 0.0:
+            break
+        new[i] = False
+    if equilibrated and not (new != active).any():
+        new &= reactions >= 0.0
+    return new
 
 
-def contact_radius(surface_r: np.ndarray, n_active: int, gap: np.ndarray) -> float:
-    """Contact radius (m) located between the last active and the first free node.
+def contact_radius(surface_r: np.ndarray, active: np.ndarray, gap: np.ndarray) -> float:
+    """Contact radius (m) located between the outermost active node and the next node.
 
     Outside a smooth frictionless contact edge the gap opens like (r − a)^{3/2}; a is found by
     extrapolating g^{2/3} linearly from the first two free nodes, and clamped to the interval
     between the last active and the first free node.
     """
-    if n_active == 0:
+    if not active.any():
         return 0.0
+    n_active = int(np.flatnonzero(active)[-1]) + 1
     r = surface_r
     if n_active + 1 >= r.size:
         return float(r[n_active - 1])
