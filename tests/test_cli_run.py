@@ -67,3 +67,19 @@ def test_run_case_without_fe_from_cli(tmp_path, capsys):
     summary = json.loads(capsys.readouterr().out)
     assert summary["wear"]["volume_m3"] > 0
     assert (tmp_path / "out" / "summary.json").is_file()
+
+
+@pytest.mark.filterwarnings("ignore:elastic ball")
+def test_default_run_succeeds(tmp_path, capsys):
+    """Acceptance 7: `impactwear run` with no case file runs the embedded default case (two-way FE coupling)."""
+    status = main(["run", "--out", str(tmp_path / "out"), "--json"])
+    assert status == 0
+    summary = json.loads(capsys.readouterr().out)
+    assert summary["coupling"]["converged"]
+    assert summary["yield"]["fe_first_yield_force"] is not None
+    assert summary["regime"] in ("surface-plastic", "fully-plastic")
+    assert summary["dent"]["max_depth_m"] > 0
+    # the FE first-yield force against the exact closed form F_c (errata Eq. 18 with C(0.34)), fem's 3% criterion
+    assert summary["yield"]["fe_first_yield_force"] == pytest.approx(summary["yield"]["F_c_exact"], rel=0.03)
+    for name in ("surface.vtu", "plate.vtu", "plate_fe.vtu", "summary.json", "history.csv", "pressure.npz"):
+        assert (tmp_path / "out" / name).is_file()

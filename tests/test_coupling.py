@@ -191,3 +191,24 @@ def test_fe_coupling_elastic_plate_matches_hertz():
     assert result.impact.normal_restitution == pytest.approx(1.0, abs=0.01)
     # no plastic strain: the residual dent is nil (< 1e-3 of the max overlap)
     assert result.surface.max_dent_depth < 1e-3 * ref.max_overlap
+
+
+@pytest.mark.filterwarnings("ignore:elastic ball")
+def test_fe_coupling_plastic_plate_converges_and_matches_thornton(tmp_path):
+    """Issue 4 acceptance 5 (plastic): on the elastic-perfectly plastic FE plate (steel, Y = 400 MPa, coarse mesh)
+    the coupled iteration converges (< 0.5%) and e_n is within 5% of Thornton (1997) (contact.theory.
+    thornton_restitution) for V_n/V_y = 1.2, 1.5, 2. Measured (this mesh): +0.4%, +2.0%, +4.9% (finer mesh,
+    mesh_scale 2: +0.5%, +2.1%, +5.0%, so the 5% bound of the issue is nearly reached at V/V_y = 2 by the physics,
+    not the mesh): the FE plate dissipates less than Thornton's flat-topped
+    pressure at p_y, and the gap grows with V/V_y. The side-by-side figure is written by
+    wear.app.figures.run.restitution_comparison (reused by the validation report)."""
+    from wear.app.figures.run import restitution_comparison
+
+    plate = Material(E=210e9, nu=0.3, density=7850.0, yield_strength=400e6)
+    case = _fe_case(plate, 1.0)
+    sweep = coupling.restitution_sweep(case, [1.2, 1.5, 2.0])
+    assert np.all(sweep.change < 0.005)
+    assert np.all(np.abs(sweep.difference) < 0.05), sweep.difference
+    assert np.all(sweep.restitution < 1.0)  # the plate yields: energy is lost
+    path = restitution_comparison(sweep.speed_ratio, sweep.restitution, tmp_path / "e_vs_vy.png")
+    assert path.stat().st_size > 10_000

@@ -133,3 +133,21 @@ def test_one_way_fe_pressure_normal_impact(tmp_path):
     write_run(result, tmp_path / "out")
     fe_mesh = meshio.read(tmp_path / "out" / "plate_fe.vtu")
     assert fe_mesh.point_data["wear_depth"].max() == pytest.approx(result.wear.max_depth_m, rel=0.02)
+
+
+@pytest.mark.filterwarnings("ignore:elastic ball")
+def test_two_way_run_with_dent_writes_coherent_folder(tmp_path):
+    """Issue 4 acceptance 6 on the default case's two-way chain (coarse FE mesh): volume in summary.json equals
+    ∫ wear_depth dA over surface.vtu within 1%, node z = −(dent + wear) with a real dent, every file reads back
+    (plate_fe.vtu too). (The FE first yield is checked against F_c in tests/test_cli_run.py on the default mesh.)"""
+    case = Case.default().with_(
+        fem={"mesh_scale": 4.0, "load_steps": 10, "unload_steps": 6}, output={"render": False, "figures": False}
+    )
+    result = run(case)
+    summary = write_run(result, tmp_path / "out")
+    on_disk, surf = _check_folder(tmp_path / "out", summary)
+    assert on_disk["dent"]["max_depth_m"] > 0.05 * on_disk["impact"]["max_overlap"]
+    assert surf.point_data["dent_depth"].max() > 0
+    assert on_disk["coupling"]["converged"] and on_disk["coupling"]["final_change"] < 0.005
+    assert on_disk["regime"] in ("surface-plastic", "fully-plastic")
+    meshio.read(tmp_path / "out" / "plate_fe.vtu")

@@ -36,6 +36,9 @@ from contact.theory import hertz_impact, sphere_mass
 
 __all__ = [
     "CouplingResult",
+    "TruncatedUnloading",
+    "coupled_law",
+    "unload_before_separation",
     "FeCycle",
     "RestitutionSweep",
     "couple",
@@ -56,14 +59,15 @@ UNLOAD_MARGIN = 1e-3
 
 
 def fe_mesh(case, ball: Material, plate: Material, max_overlap: float):
-    """The FE mesh for a path reaching ``max_overlap`` (m): fem's default mesh, or with ``fem.mesh_scale`` ≠ 1 a
-    generated mesh with the default element counts across the contact and first-yield radii divided by it."""
+    """The FE mesh for a path reaching ``max_overlap`` (m): fem's default mesh scaled to it, or with
+    ``fem.mesh_scale`` ≠ 1 a generated mesh with fem's default element counts across the contact and first-yield
+    radii divided by ``mesh_scale``."""
     import fem
     from fem.mesh import DEFAULT_PARAMETERS
 
     ball_arg = None if ball.is_rigid else ball
     if case.fem.mesh_scale == 1.0:
-        return None
+        return fem.plate_mesh(case.ball.radius, plate, max_overlap, ball_arg)
     scale = case.fem.mesh_scale
     return fem.plate_mesh(
         case.ball.radius,
@@ -75,19 +79,122 @@ def fe_mesh(case, ball: Material, plate: Material, max_overlap: float):
     )
 
 
-def fe_indent(case, ball: Material, plate: Material, overlaps: np.ndarray, keep_states: bool = False):
-    """``fem.indent`` along the overlap path ``overlaps`` (m) with the case's FE mesh options."""
+def fe_indent(case, ball: Material, plate: Material, overlaps: np.ndarray, keep_states: bool = False,
+              mesh_overlap: float | None = None):  # fmt: skip
+    """``fem.indent`` along the overlap path ``overlaps`` (m) on :func:`fe_mesh` sized for ``mesh_overlap`` (m;
+    default the path's maximum: give the same value to run several paths on the same mesh)."""
     import fem
 
     overlaps = np.asarray(overlaps, float)
     ball_arg = None if ball.is_rigid else ball
-    mesh = fe_mesh(case, ball, plate, float(overlaps.max()))
+    mesh = fe_mesh(case, ball, plate, float(overlaps.max()) if mesh_overlap is None else mesh_overlap)
     return fem.indent(case.ball.radius, plate, overlaps, ball=ball_arg, mesh=mesh, keep_states=keep_states)
 
 
 def fe_unload(case, fe_load, max_overlap: float):
-    """Unload the kept loading run ``fe_load`` from ``max_overlap`` (m) (``IndentationResult.unload_from``)."""
-    return fe_load.unload_from(max_overlap, steps=case.fem.unload_steps)
+    """Unload the kept loading run ``fe_load`` from ``max_overlap`` (m) (``IndentationResult.unload_from``).
+
+    For a plate that yields, :func:`unload_before_separation` instead: fem (as of this version) does not converge
+    at the step where the ball leaves a plastically dented plate, and finding that out costs ~60 s of step cuts."""
+    if case.plate.material().yield_strength is None:
+        return fe_load.unload_from(max_overlap, steps=case.fem.unload_steps)
+    return unload_before_separation(case, fe_load, max_overlap)
+
+
+@dataclass(frozen=True, eq=False)
+class TruncatedUnloading:
+    """An FE unloading that stops just before the ball leaves the plate (arrays per step from δ*, as in
+    ``fem.IndentationResult``), its ``residual_overlap`` δ_p (m) extrapolated with F^{2/3} linear in δ (the
+    Hertz-like tail), and ``end_force_fraction`` F_end/F*. ``residual_depth`` is the surface u_z at the last
+    step: the residual dent plus the elastic indentation of the remaining force F_end."""
+
+    overlap: np.ndarray
+    force: np.ndarray
+    contact_radius: np.ndarray
+    pressure: np.ndarray
+    regime: list
+    max_equivalent_plastic_strain: np.ndarray
+    surface_r: np.ndarray
+    residual_depth: np.ndarray
+    residual_overlap: float
+    end_force_fraction: float
+    result: Any
+
+    def write(self, path):
+        return self.result.write(path)
+
+
+def unload_before_separation(case, fe_load, max_overlap: float, recovery_factors=(0.6, 0.5, 0.4)):
+    r"""One FE cycle (load to δ*, unload) whose unloading stops before the contact is lost.
+
+    The unloading ends at :math:`\delta_{end} = \delta^* - c\,F^*/(E^*a^*)` with c = 0.6 (then 0.5, 0.4 if the
+    FE still fails): elastic recovery from a flattened (Mesarovic–Johnson) contact is 2F*/(πE*a*) = 0.64 F*/(E*a*)
+    and from a Hertz one 0.75 F*/(E*a*), so c = 0.6 stops short of the residual overlap. δ_p is extrapolated from
+    the last two steps with F^{2/3} linear in δ. Costs a second FE loading (used only when ``unload_from`` fails).
+    """
+    import fem
+
+    ball, plate = case.ball.material(), case.plate.material()
+    d, f, a = _loading_table(fe_load)
+    f_star, a_star = float(np.interp(max_overlap, d, f)), float(np.interp(max_overlap, d, a))
+    scale = f_star / (fe_load.effective_modulus * a_star)
+    load = _loading_path(max_overlap, case.fem.load_steps)
+    for factor in recovery_factors:
+        d_end = max_overlap - factor * scale
+        if d_end <= 0.0:
+            continue
+        # steps denser towards the end, where the last two points extrapolate δ_p
+        s = np.linspace(0.0, 1.0, case.fem.unload_steps + 1)[1:]
+        path = np.r_[load, max_overlap - (max_overlap - d_end) * (1.0 - (1.0 - s) ** 2)]
+        try:
+            # on the loading run's mesh, so that loading and unloading tables come from the same discretisation
+            res = fe_indent(case, ball, plate, path, mesh_overlap=float(np.max(fe_load.overlap)))
+        except fem.ConvergenceError:
+            continue
+        k = int(np.argmax(res.overlap))
+        uf = np.asarray(res.force, float)[k:]
+        ud = np.asarray(res.overlap, float)[k:]
+        if uf[-1] <= 0.0 or uf[-2] <= uf[-1]:
+            continue
+        g1, g0 = uf[-1] ** (2 / 3), uf[-2] ** (2 / 3)
+        d_p = float(ud[-1] - g1 * (ud[-2] - ud[-1]) / (g0 - g1))
+        return TruncatedUnloading(
+            overlap=ud,
+            force=uf,
+            contact_radius=np.asarray(res.contact_radius, float)[k:],
+            pressure=np.asarray(res.pressure, float)[k:],
+            regime=list(res.regime[k:]),
+            max_equivalent_plastic_strain=np.asarray(res.max_equivalent_plastic_strain, float)[k:],
+            surface_r=np.asarray(res.surface_r, float),
+            residual_depth=np.asarray(res.residual_depth, float),
+            residual_overlap=max(d_p, 0.0),
+            end_force_fraction=float(uf[-1] / uf[0]),
+            result=res,
+        )
+    raise ValueError(
+        f"fem: the plate could not be unloaded from max_overlap={max_overlap:.6g} m (no convergence near the loss "
+        "of contact); try fem.mesh_scale or fem.unload_steps"
+    )
+
+
+def coupled_law(fe_load, unloading) -> TabulatedLaw:
+    """The FE law of the coupled impact: ``fe_load.force_law()`` (fem's loading + every ``unload_from``), or for
+    a :class:`TruncatedUnloading` the loading table plus its unloading closed at the extrapolated δ_p."""
+    if not isinstance(unloading, TruncatedUnloading):
+        return fe_load.force_law()
+    d, f, a = _loading_table(fe_load)
+    ud = np.append(unloading.overlap, unloading.residual_overlap)
+    uf = np.append(unloading.force, 0.0)
+    ua = np.append(unloading.contact_radius, 0.0)
+    keep = np.concatenate([[True], np.diff(ud) < 0])
+    ud, uf, ua = ud[keep], uf[keep], ua[keep]
+    # resample on 41 points with F^(2/3) interpolated linearly in δ (exact for a Hertz-like unloading): linear
+    # interpolation of the convex F(δ) between coarse FE steps would overestimate the returned energy
+    grid = np.linspace(ud[0], ud[-1], 41)
+    order = np.argsort(ud)
+    force = np.interp(grid, ud[order], uf[order] ** (2.0 / 3.0)) ** 1.5
+    radius = np.interp(grid, ud[order], ua[order])
+    return TabulatedLaw(d, f, a, np.array([grid[0]]), grid[None, :], force[None, :], radius[None, :])
 
 
 @dataclass(frozen=True, eq=False)
@@ -202,7 +309,9 @@ class FeCycle:
     @classmethod
     def join(cls, loading, unloading, max_overlap: float) -> FeCycle:
         d = np.asarray(loading.overlap, float)
-        k = int(np.searchsorted(d, max_overlap * (1.0 - 1e-12)))  # loading steps strictly below δ*
+        # leading loading steps strictly below δ* (the loading may be a whole cycle: stop at its peak)
+        below = (d < max_overlap * (1.0 - 1e-12)) & np.concatenate([[True], np.diff(d) > 0])
+        k = int(np.argmin(below)) if not below.all() else d.size
         fy = loading.first_yield
         if fy is not None and fy.overlap > max_overlap:
             fy = None
@@ -254,8 +363,11 @@ def couple(case, ball: Material, plate: Material, fe_load, estimate: ImpactResul
                 f"fem.overshoot={case.fem.overshoot:g} is too small: the impact reached {d_max:.4g} m, beyond the FE "
                 f"loading to {load_top:.4g} m"
             )
-        fe = FeCycle.join(fe_load, unload(case, fe_load, d_star), d_star)
-        law = fe_load.force_law()
+        unloading = unload(case, fe_load, d_star)
+        # a truncated unloading is a whole cycle on its own mesh: take its loading steps too
+        head = unloading.result if isinstance(unloading, TruncatedUnloading) else fe_load
+        fe = FeCycle.join(head, unloading, d_star)
+        law = coupled_law(fe_load, unloading)
         impact = _run_impact(case, ball, plate, law)
         iterations += 1
         overlaps.append(impact.max_overlap)

@@ -87,14 +87,19 @@ def main(args: argparse.Namespace) -> int:
             bar.set_postfix_str(stage)
         done.append(stage)
 
+    import warnings
+
     try:
-        result = run(case, progress=progress)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            result = run(case, progress=progress)
         summary = write_run(result, args.out, progress=progress)
     finally:
         if bar is not None:
             bar.update(bar.total - bar.n)
             bar.close()
-    for note in summary.get("notes", []):
+    notes = list(dict.fromkeys(str(w.message) for w in caught)) + list(summary.get("notes", []))
+    for note in notes:
         print(f"impactwear run: note: {note}", file=sys.stderr)
     if args.json:
         from .outputs import to_jsonable
