@@ -138,7 +138,7 @@ def unload_before_separation(case, fe_load, max_overlap: float, recovery_factors
     d, f, a = _loading_table(fe_load)
     f_star, a_star = float(np.interp(max_overlap, d, f)), float(np.interp(max_overlap, d, a))
     scale = f_star / (fe_load.effective_modulus * a_star)
-    load = _loading_path(max_overlap, case.fem.load_steps)
+    load = _loading_path(max_overlap, case.fem.load_steps, _first_yield_overlap(case, ball, plate))
     for factor in recovery_factors:
         d_end = max_overlap - factor * scale
         if d_end <= 0.0:
@@ -227,10 +227,24 @@ class CouplingResult:
         }
 
 
-def _loading_path(max_overlap: float, steps: int) -> np.ndarray:
-    """Overlaps (m) from 0 (excluded) to ``max_overlap``, denser near the start where F(δ) curves most."""
+def _loading_path(max_overlap: float, steps: int, first_yield_overlap: float | None = None) -> np.ndarray:
+    """Overlaps (m) from 0 (excluded) to ``max_overlap``, denser near the start where F(δ) curves most; with
+    ``first_yield_overlap`` (m) the path starts with an elastic step at half of it (fem locates first yield
+    between an elastic and a plastic step)."""
     s = np.linspace(0.0, 1.0, steps + 1)[1:]
-    return max_overlap * s**1.5
+    path = max_overlap * s**1.5
+    if first_yield_overlap is not None and 0.5 * first_yield_overlap < path[0]:
+        path = np.r_[0.5 * first_yield_overlap, path]
+    return path
+
+
+def _first_yield_overlap(case, ball: Material, plate: Material) -> float | None:
+    """Hertz first-yield overlap (m) with the exact C(ν) (errata Eq. 18), None for a plate that never yields."""
+    if not plate.yield_strength:
+        return None
+    from contact.theory import first_yield
+
+    return first_yield(case.ball.radius, effective_modulus(ball, plate), plate.yield_strength, plate.nu).overlap
 
 
 def load_plate(case, ball: Material, plate: Material, estimate: ImpactResult, indent=None):
@@ -238,7 +252,8 @@ def load_plate(case, ball: Material, plate: Material, estimate: ImpactResult, in
 
     ``indent(case, ball, plate, overlaps)`` runs the FE path (default :func:`fe_indent`)."""
     target = (1.0 + case.fem.overshoot) * estimate.max_overlap
-    return (indent or fe_indent)(case, ball, plate, _loading_path(target, case.fem.load_steps), keep_states=True)
+    path = _loading_path(target, case.fem.load_steps, _first_yield_overlap(case, ball, plate))
+    return (indent or fe_indent)(case, ball, plate, path, keep_states=True)
 
 
 def _loading_table(res) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
