@@ -212,3 +212,16 @@ def test_fe_coupling_plastic_plate_converges_and_matches_thornton(tmp_path):
     assert np.all(sweep.restitution < 1.0)  # the plate yields: energy is lost
     path = restitution_comparison(sweep.speed_ratio, sweep.restitution, tmp_path / "e_vs_vy.png")
     assert path.stat().st_size > 10_000
+
+
+def test_hertz_surface_displacement_closed_forms():
+    """The elastic displacement removed from a truncated FE unloading (Johnson 1985, Eqs. 3.41): at r = 0 it is the
+    Hertz overlap a²/R when p0 = 2aE*/(πR) (all compliance in one body); far away it tends to Boussinesq's point load
+    F/(πE*r) (within 0.1% at r = 30a); it is continuous at r = a."""
+    R, e_star, a = 5e-3, 1e11, 1e-4
+    p0 = 2 * a * e_star / (math.pi * R)
+    force = 2 * math.pi * a * a * p0 / 3
+    u = coupling.hertz_surface_displacement(np.array([0.0, a * (1 - 1e-9), a * (1 + 1e-9), 30 * a]), force, a, e_star)
+    assert u[0] == pytest.approx(a * a / R, rel=1e-12)
+    assert u[1] == pytest.approx(u[2], rel=1e-6)
+    assert u[3] == pytest.approx(force / (math.pi * e_star * 30 * a), rel=1e-3)
