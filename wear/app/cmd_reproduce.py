@@ -2,6 +2,7 @@
 
 Writes ``DIR/figures/<name>.png`` and ``DIR/reproduce.md`` (figure by figure: what the paper shows, what we get,
 where and why they differ). ``--quick`` runs at reduced sizes (for tests); ``--only NAME`` runs some figures.
+Exit status 1 if a figure could not be produced (listed with the reason in reproduce.md).
 """
 
 from __future__ import annotations
@@ -31,4 +32,4 @@ def main(args: argparse.Namespace) -> int:
         status = f"missing: {r.missing}" if r.missing else f"{r.seconds:.1f} s"
         print(f"{r.name}.png  {status}")
     print(f"wrote {args.out}/reproduce.md")
-    return 0
+    return 1 if any(r.missing for r in reports) else 0

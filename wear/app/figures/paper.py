@@ -127,14 +127,18 @@ def plot_wear_mass(series: Sequence[dict], path, source: str) -> Path:
         angles, mass = np.asarray(s["angles"]), np.asarray(s["mass"])
         c = COLORS[k % len(COLORS)]
         ax.plot(angles, mass, "o-", ms=3.5, color=c)
-        i = int(np.argmax(mass))
-        ax.plot(angles[i], mass[i], "*", ms=13, color="k", label=f"max at {angles[i]:g}°")
-        ax.axvline(angles[i], color="k", lw=0.6, ls=":")
+        if np.any(np.isfinite(mass)):
+            i = int(np.nanargmax(mass))
+            ax.plot(angles[i], mass[i], "*", ms=13, color="k", label=f"max at {angles[i]:g}°")
+            ax.axvline(angles[i], color="k", lw=0.6, ls=":")
+        else:
+            ax.text(0.5, 0.5, "no result (FE runs failed)", transform=ax.transAxes, ha="center", color="C3")
         ax.set_title(s["label"], fontsize=9)
         ax.set_xlabel("impact angle from the normal θ (deg)")
         ax.set_ylabel("worn mass per impact (kg)")
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend(fontsize=8)
     fig.suptitle("Fig. 9: worn mass vs impact angle, α = 1, β = 0.3", fontsize=11)
     fig.subplots_adjust(bottom=0.2, top=0.82, wspace=0.35)
     return save_figure(fig, path, source)
@@ -207,7 +211,7 @@ def plot_pressure_regimes(loading: Sequence[dict], unloading: Sequence[dict], pa
     ax2.plot([], [], "k:", lw=1, label="Mesarovic-Johnson, Eq. 19")
     ax2.set_xlabel("r / a*")
     ax2.set_ylabel("p / p*")
-    ax2.set_title("unloading from the deepest load", fontsize=10)
+    ax2.set_title("unloading from w = 50", fontsize=10)
     for a in (ax1, ax2):
         a.set_xlim(0, 1.3)
         a.set_ylim(bottom=0)
@@ -237,7 +241,7 @@ def plot_regime_map(speeds, yields, regime, ratio, e_fe, e_thornton, path, sourc
     fig.colorbar(im, ax=axes[1])
     axes[1].set_title("$p_{max}/p_{mean}$ at maximum overlap (Hertz: 1.5)", fontsize=10)
     diff = np.asarray(e_fe) / np.asarray(e_thornton) - 1.0
-    lim = max(float(np.nanmax(np.abs(diff))), 1e-3)
+    lim = max(float(np.nanmax(np.abs(diff))), 1e-3) if np.any(np.isfinite(diff)) else 1e-3
     im = axes[2].pcolormesh(sx, sy, diff * 100, shading="nearest", cmap="RdBu_r", vmin=-lim * 100, vmax=lim * 100)
     fig.colorbar(im, ax=axes[2], label="%")
     axes[2].set_title("$e_{FE}/e_{Thornton} - 1$", fontsize=10)
