@@ -5,8 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from contact import Material, effective_modulus, effective_shear_modulus, yield_velocity
-from contact import theory
+from contact import Material, effective_modulus, effective_shear_modulus, theory, yield_velocity
 
 
 def test_hertz_impact_chung_ooi_test2_alumina():
