@@ -43,6 +43,8 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
+    from fem import ConvergenceError
+
     parser = build_parser()
     args = parser.parse_args(argv)
     if getattr(args, "_module", None) is None:
@@ -53,6 +55,10 @@ def main(argv: list[str] | None = None) -> int:
     except ValueError as exc:
         print(f"impactwear {args.command}: error: {exc}", file=sys.stderr)
         return 2
+    except ConvergenceError as exc:
+        # A physical solve that did not converge is not a programming error: one line, exit 1.
+        print(f"impactwear {args.command}: FE did not converge: {exc}", file=sys.stderr)
+        return 1
     except KeyboardInterrupt:
         print(f"impactwear {args.command}: interrupted", file=sys.stderr)
         return 130
