@@ -211,3 +211,37 @@ def erosion_flux_balance(quick: bool) -> list[Check]:
         relative("wear", "eroded mass (flat plate)", case, result.n_impacts * single.volume_m3 * steel.density,
                  "N × single-impact chain × density", float(result.mass_loss_kg[-1]), 5e-3, "kg"),
     ]  # fmt: skip
+
+
+@register("wear")
+def coupling(quick: bool) -> list[Check]:
+    """Two-way impact-FE coupling (wear.pipeline / wear.coupling, issue 4 acceptance 5): on an elastic plate the
+    coupled normal impact has the Hertz closed-form max force and contact time (errata Eqs. 10-11, 1%); on a
+    plastic plate its normal restitution is within 5% of Thornton (1997) for V/V_y ≤ 2 (both near-Hertz there)."""
+    from contact.materials import effective_modulus as e_star_of
+    from contact.theory import hertz_impact, sphere_mass
+    from wear.coupling import restitution_sweep
+    from wear.pipeline import Case, run
+
+    fem_options = dict(mesh_scale=4.0, load_steps=8, unload_steps=4) if quick else {}
+    base = Case.default().with_(fem=fem_options, output={"figures": False, "render": False})
+    elastic = base.with_(plate={"yield_strength": None}, impact={"angle": 0.0})
+    res = run(elastic)
+    ball, plate = elastic.ball.material(), elastic.plate.material()
+    ref = hertz_impact(sphere_mass(elastic.ball.radius, ball.density), elastic.ball.radius, e_star_of(ball, plate),
+                       elastic.impact.speed)  # fmt: skip
+    case = f"{ball.name} R {elastic.ball.radius * 1e3:g} mm on elastic {plate.name}, {elastic.impact.speed:g} m/s"
+    src = "Hertz impact closed form (errata Eqs. 10-11)"
+    out = [
+        relative("wear", "coupled FE impact: max force", case, ref.max_force, src, res.impact.max_force, 0.01, "N"),
+        relative("wear", "coupled FE impact: contact time", case, ref.contact_time, src, res.impact.contact_time,
+                 0.01, "s"),
+    ]  # fmt: skip
+    sweep = restitution_sweep(base, [1.5, 2.0])
+    for x, e, e_t in zip(sweep.speed_ratio, sweep.restitution, sweep.thornton, strict=True):
+        out.append(
+            relative("wear", f"coupled FE normal restitution at V/V_y = {x:g}",
+                     f"{base.ball.name} on {base.plate.name} (Y {base.plate.yield_strength / 1e6:g} MPa), normal",
+                     e_t, "Thornton 1997, J. Appl. Mech. 64:383", e, 0.05)
+        )  # fmt: skip
+    return out
