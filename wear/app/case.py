@@ -40,6 +40,7 @@ __all__ = [
     "dump_case",
     "write_case",
     "set_value",
+    "apply_override",
     "render_defaults",
     "impact_arguments",
 ]
@@ -167,6 +168,22 @@ def set_value(case: dict[str, dict[str, Any]], dotted: str, value: Any) -> None:
     key = SCHEMA[table][name]
     # None (absent) is allowed for optional keys only: a Python-built case may carry it; TOML cannot
     case[table][name] = None if value is None and key.default is None else key.check(dotted, value)
+
+
+def apply_override(case: dict[str, dict[str, Any]], item: str) -> None:
+    """Apply one command-line ``--set TABLE.KEY=VALUE`` to ``case``.
+
+    VALUE is read as TOML (``3.9``, ``true``, ``"x"``); a bare word that is not TOML is taken as a string
+    (``--set impact.normal_model=thornton``). The value is checked against the schema.
+    """
+    dotted, sep, text = item.partition("=")
+    if not sep:
+        raise ValueError(f"--set {item!r} is not TABLE.KEY=VALUE")
+    try:
+        value = tomllib.loads(f"v = {text}")["v"]
+    except tomllib.TOMLDecodeError:
+        value = text
+    set_value(case, dotted.strip(), value)
 
 
 def parse_case(text: str, source: str = "case") -> dict[str, dict[str, Any]]:

@@ -114,14 +114,7 @@ def build_case(args: argparse.Namespace) -> dict:
     """The checked case from CASE.toml (or the defaults), ``--set`` and ``--seed``."""
     case = case_module.load_case(args.case) if args.case else case_module.default_case()
     for item in args.overrides:
-        dotted, sep, text = item.partition("=")
-        if not sep:
-            raise ValueError(f"--set {item!r} is not TABLE.KEY=VALUE")
-        try:
-            value = case_module.tomllib.loads(f"v = {text}")["v"]
-        except case_module.tomllib.TOMLDecodeError:
-            value = text
-        case_module.set_value(case, dotted.strip(), value)
+        case_module.apply_override(case, item)
     if args.seed is not None:
         case_module.set_value(case, "erosion.seed", args.seed)
     return case

@@ -77,14 +77,7 @@ def build_case(args: argparse.Namespace) -> dict:
         if value is not None:
             case_module.set_value(case, key, value)
     for item in args.overrides:
-        dotted, sep, text = item.partition("=")
-        if not sep:
-            raise ValueError(f"--set {item!r} is not TABLE.KEY=VALUE")
-        try:
-            value = case_module.tomllib.loads(f"v = {text}")["v"]
-        except case_module.tomllib.TOMLDecodeError:
-            value = text  # a bare word: a string value (e.g. --set impact.normal_model=thornton)
-        case_module.set_value(case, dotted.strip(), value)
+        case_module.apply_override(case, item)
     return case
 
 
