@@ -40,7 +40,8 @@ class Discretisation:
     ``element_dofs`` (elements, 12), ``qp_r``/``qp_z`` (elements, qp) quadrature coordinates (m),
     CSR pattern (``indptr``, ``indices``) with ``entry_index`` mapping element entries to it,
     ``axis_dofs``/``bottom_dofs`` (constrained), ``surface_nodes`` (scalar node ids sorted by r),
-    ``surface_r`` (m), ``surface_mass`` (2πr-weighted P2 mass matrix on the surface nodes, m²),
+    ``surface_r``/``surface_z`` (m) their reference coordinates (z = 0 on a flat plate, below 0 where the surface
+    was worn), ``surface_mass`` (2πr-weighted P2 mass matrix on the surface nodes, m²),
     ``node_r``/``node_z`` (m) of every scalar node.
     """
 
@@ -59,6 +60,7 @@ class Discretisation:
     bottom_dofs: np.ndarray
     surface_nodes: np.ndarray
     surface_r: np.ndarray
+    surface_z: np.ndarray
     surface_mass: sp.csr_matrix
     node_r: np.ndarray
     node_z: np.ndarray
@@ -138,13 +140,16 @@ def discretise(mesh: MeshTri, intorder: int = 4) -> Discretisation:
     ).tocsr()
     surface_mass = mass[surf][:, surf].tocsr()
 
-    # the top row of quadrature points: depth below 0.2 × the element size, in elements touching z = 0
-    on_surface = np.abs(mesh.p[1]) <= 1e-12 * max(np.ptp(mesh.p[1]), 1e-300)
+    # the top row of quadrature points: depth below 0.2 × the element size, in elements touching the surface
+    # (found by the boundary's vertices, not by z = 0: a worn surface has moved its nodes)
+    on_surface = np.zeros(mesh.p.shape[1], dtype=bool)
+    on_surface[mesh.facets[:, surface_facets].ravel()] = True
     touches = on_surface[mesh.t].any(axis=0)
+    top = float(mesh.p[1, on_surface].max())
     e1 = mesh.p[:, mesh.t[1]] - mesh.p[:, mesh.t[0]]
     e2 = mesh.p[:, mesh.t[2]] - mesh.p[:, mesh.t[0]]
     size = np.sqrt(np.abs(e1[0] * e2[1] - e1[1] * e2[0]))
-    surface_layer = touches[:, None] & (-x[1] < 0.2 * size[:, None])
+    surface_layer = touches[:, None] & (top - x[1] < 0.2 * size[:, None])
 
     return Discretisation(
         mesh=mesh,
@@ -162,6 +167,7 @@ def discretise(mesh: MeshTri, intorder: int = 4) -> Discretisation:
         bottom_dofs=2 * bottom_nodes + 1,
         surface_nodes=surf,
         surface_r=node_r[surf],
+        surface_z=node_z[surf],
         surface_mass=surface_mass,
         node_r=node_r,
         node_z=node_z,

@@ -23,7 +23,7 @@ from .mesh import DEFAULT_PARAMETERS, default_mesh, generate_mesh, load_mesh, sc
 from .plasticity import J2Material, von_mises
 from .result import FirstYieldPoint, IndentationResult
 from .solver import PlateSolver, PlateState
-from .sphere_contact import contact_radius, sphere_surface
+from .sphere_contact import contact_radius
 
 __all__ = ["indent", "indent_impact", "plate_mesh", "estimate_contact_radius"]
 
@@ -107,8 +107,7 @@ class _Run:
         d = s.disc
         reactions = s.reactions(state)
         reactions[~state.active] = 0.0  # off the contact set only the (converged) residual remains
-        zs = sphere_surface(d.surface_r, state.overlap, self.radius)
-        gap = zs - state.u[s.surface_uz]
+        gap = s.obstacle(state.overlap) - state.u[s.surface_uz]
         a = contact_radius(d.surface_r, state.active, gap)
         pressure = s.mass_lu.solve(reactions)
         force = float(reactions.sum())

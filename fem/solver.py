@@ -114,6 +114,12 @@ class PlateSolver:
         nodes = self.disc.surface_r.size
         return PlateState(0.0, np.zeros(self.disc.ndofs), self._zero_plastic, self._zero_alpha, np.zeros(nodes, bool))
 
+    def obstacle(self, overlap: float) -> np.ndarray:
+        """Largest u_z (m) each surface node may take at ``overlap`` (m): the sphere's surface z_s(r) minus the
+        node's reference height (0 on a flat plate; below 0 where wear moved the node), so the gap is measured to
+        the current surface, not to the plane z = 0."""
+        return sphere_surface(self.disc.surface_r, overlap, self.radius) - self.disc.surface_z
+
     def stress_update(self, state: PlateState, reference: PlateState | None = None):
         """Stress update of ``state.u`` from ``reference`` (default: the state itself, i.e. its stresses)."""
         ref = state if reference is None else reference
@@ -147,7 +153,7 @@ class PlateSolver:
         import time
 
         d = self.disc
-        zs = sphere_surface(d.surface_r, overlap, self.radius)
+        zs = self.obstacle(overlap)
         u = u0.copy()
         active = active0.copy()
         equilibrated = False
@@ -273,7 +279,7 @@ class PlateSolver:
             if last != 0.0 and step * last > 0.0:
                 factor = min(step / last, 4.0)
                 u0 = state.u + factor * (state.u - previous.u)
-                gap = sphere_surface(d.surface_r, overlap, self.radius) - u0[self.surface_uz]
+                gap = self.obstacle(overlap) - u0[self.surface_uz]
                 # nodes the extrapolation keeps on the sphere (gap ≈ 0) or pushes into it
                 return u0, gap <= 1e-6 * abs(step) + self.gap_tol
         return state.u, state.active
