@@ -6,6 +6,7 @@ Entry points: :func:`indent` (overlap path → :class:`IndentationResult`), :fun
 
 from .indent import estimate_contact_radius, indent, indent_impact, plate_mesh
 from .mesh import generate_mesh, load_mesh
+from .plate import Plate
 from .result import FirstYieldPoint, IndentationResult
 from .solver import ConvergenceError
 
@@ -13,6 +14,7 @@ __all__ = [
     "ConvergenceError",
     "FirstYieldPoint",
     "IndentationResult",
+    "Plate",
     "estimate_contact_radius",
     "generate_mesh",
     "indent",

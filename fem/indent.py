@@ -99,6 +99,9 @@ class _Run:
         self.radius = radius
         self.kept: list[PlateState] = []
         self.final: PlateState | None = None
+        # a run restarted from a given state (fem.Plate) has no virgin loading of its own to take these from
+        self.reach = 0.0
+        self.first_yield = None
 
     # -- one step's numbers
     def measure(self, state: PlateState, reach: float = 0.0) -> dict:

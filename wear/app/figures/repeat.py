@@ -1,0 +1,63 @@
+"""Figures of repeated impacts at one site (matplotlib, Agg; SI units on every axis, written atomically).
+
+``repeat.png``: against the impact number (log axis), (a) the dent depth, the FE surface depth (dent + averaged
+wear) and the 2-D map's largest wear depth (µm); (b) the worn volume (m³); (c) the normal restitution; (d) the
+largest contact pressure (GPa) and the plastic-strain increment of each computed impact (shakedown). Computed
+impacts are markers, cycle-jump blocks the lines between them.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import numpy as np
+
+from .erosion import _pyplot, _save
+
+__all__ = ["plot_repeat"]
+
+
+def plot_repeat(columns: dict, path: str | os.PathLike, title: str = "", shakedown_impact: int | None = None,
+                tolerance: float | None = None) -> Path:  # fmt: skip
+    """The four panels above from ``columns`` (``wear.repeat.RepeatResult.columns()``) into ``path``."""
+    plt = _pyplot()
+    n = np.asarray(columns["impact_last"], float)
+    computed = np.asarray(columns["computed"], float) > 0
+    fig, axes = plt.subplots(2, 2, figsize=(11, 7.5), sharex=True)
+    (ax_d, ax_v), (ax_e, ax_p) = axes
+
+    def series(ax, key, scale, label, style="-"):
+        y = np.asarray(columns[key], float) * scale
+        (line,) = ax.plot(n, y, style, label=label)
+        ax.plot(n[computed], y[computed], "o", ms=3, color=line.get_color())
+
+    series(ax_d, "dent_depth_m", 1e6, "dent (plastic, FE)")
+    series(ax_d, "surface_depth_m", 1e6, "dent + azimuthal-mean wear (FE surface)")
+    series(ax_d, "total_wear_max_depth_m", 1e6, "wear, max of the 2-D map")
+    ax_d.set_ylabel("depth (µm)")
+    ax_d.legend(fontsize=8)
+    series(ax_v, "total_wear_volume_m3", 1.0, "total worn volume")
+    ax_v.set_ylabel("worn volume (m³)")
+    series(ax_e, "normal_restitution", 1.0, "normal restitution")
+    ax_e.set_ylabel("normal restitution e_n")
+    series(ax_p, "max_pressure_Pa", 1e-9, "max contact pressure (FE)")
+    ax_p.set_ylabel("max contact pressure (GPa)")
+    ax2 = ax_p.twinx()
+    inc = np.asarray(columns["plastic_strain_increment"], float)
+    ax2.semilogy(n[computed], np.maximum(inc[computed], 1e-12), "s", ms=3, color="tab:red", label="Δᾱ of impact")
+    if tolerance:
+        ax2.axhline(tolerance, color="tab:red", lw=0.8, ls="--", label="shakedown tolerance")
+    ax2.set_ylabel("plastic strain increment Δᾱ", color="tab:red")
+    ax2.legend(fontsize=8, loc="lower right")
+    for ax in axes.ravel():
+        if n[-1] > 20:
+            ax.set_xscale("log")
+        ax.grid(alpha=0.3)
+        if shakedown_impact:
+            ax.axvline(shakedown_impact, color="0.5", lw=0.8, ls=":")
+    for ax in (ax_e, ax_p):
+        ax.set_xlabel("impact number")
+    fig.suptitle(title + ("" if not shakedown_impact else f"  (shakedown at impact {shakedown_impact}, dotted)"))
+    fig.tight_layout()
+    return _save(fig, path)

@@ -1,0 +1,504 @@
+r"""Repeated impacts of the same ball at the same spot, each on the plate the previous ones left (issue 6 §1).
+
+``repeat(case, spec) -> RepeatResult``. One FE plate (:class:`fem.Plate`) lives through the whole sequence: it keeps
+its plastic strain and residual stress, each impact's contact gap is measured to the dented (and worn) surface,
+and the wear of each impact moves the FE mesh's surface nodes before the next one.
+
+**One computed impact** (:func:`impact_on_plate`) is the two-way coupling of :mod:`wear.coupling` started from the
+plate's current state: the FE plate is loaded once past the expected maximum overlap, the impact runs on that
+loading branch, the plate is unloaded from the impact's maximum (``fem.Plate.unload``: its final, unloaded state is
+the next impact's start), and the impact is re-run on the loading + unloading law until δ_max changes by less than
+``fem.tolerance``. Overlaps: the FE measures δ from the original plane z = 0; on a dented plate the sphere first
+touches the surface at δ₀ = :meth:`fem.Plate.first_contact_overlap` (≈ dent + wear depth at the centre). The
+impact engine integrates from first contact, so its law is the FE law shifted by δ₀ (δ' = δ − δ₀); its F = 0
+free flight from δ = 0 to δ₀ is not simulated. The ball travels d₀·V_t/V_n along x during that flight, so the
+impact's wear map is shifted by that much (same ball, same trajectory, deeper first contact).
+
+**Wear → FE surface.** The wear map is 2-D (x along the impact, y across) while the FE plate is axisymmetric
+about the dent centre (the contact centre at the first impact's maximum overlap): the FE surface nodes move by
+the azimuthal average of the wear depth at their radius (64 azimuths, rescaled so ∫2πr w̄ dr equals the map's
+volume). For an oblique impact the scar is elongated, so the averaged depth is shallower than the map's maximum:
+each record reports ``wear_peak_to_mean``, the map's max depth over the averaged profile's max (1 for a normal
+impact).
+
+**Shakedown.** An impact is *shaken down* when its largest pointwise increment of equivalent plastic strain
+Δᾱ is below ``spec.shakedown_tolerance`` × the yield strain Y/E (default 1e-3 Y/E). From then on the impact
+response is elastic and repeats itself while the surface is unchanged; **cycle jump**: the last computed
+impact's wear is applied ``n`` times at once (one block), with n such that the surface moves by at most
+``spec.surface_fraction`` × the elastic approach a²/R of the last computed impact, then the coupled impact is
+computed again on the new surface (which also checks that it is still shaken down: if not, back to impact by
+impact). Why a²/R and not a: the pressure under a sphere responds to changes of the gap profile on the scale of
+the elastic approach δ_e = a²/R (a Hertz contact changes its p0 by ~½ Δh/δ_e for a change Δh of the surface
+at the centre); a fraction of the contact radius a (a/δ_e = R/a ≈ 20–50 times longer) would let the wear
+change the pressure by order one between re-solves. Without geometry update the surface never changes after
+shakedown and the remaining impacts are one block (N impacts wear exactly N × one impact after shakedown).
+
+SI units throughout.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field, replace
+from types import SimpleNamespace
+from typing import Any
+
+import numpy as np
+
+from contact import ImpactResult, TabulatedLaw, effective_modulus
+from contact.validation import check_bool, check_number
+
+from .coupling import UNLOAD_MARGIN, _first_yield_overlap, _inside_contact, _loading_path, _run_impact, fe_mesh
+from .coupling import pressure_table as _pressure_table
+from .integrate import WearMap, integrate_wear
+from .pressure import pressure_history, sliding_speed
+
+__all__ = ["RepeatSpec", "ImpactRecord", "RepeatResult", "ComputedImpact", "impact_on_plate", "repeat",
+           "azimuthal_average"]  # fmt: skip
+
+#: Azimuths of the azimuthal average of the wear map.
+AZIMUTHS = 64
+
+
+@dataclass(frozen=True)
+class RepeatSpec:
+    """The repetition: ``impacts`` N (≥ 1); ``geometry_update`` (the wear moves the FE surface nodes);
+    ``shakedown_tolerance`` (Δᾱ of an impact below this × Y/E counts as no new plastic strain);
+    ``surface_fraction`` (a cycle-jump block moves the surface by at most this × a²/R); ``max_plastic_impacts``
+    (impacts computed one by one before giving up on shakedown: then blocks continue, flagged); ``save_every``
+    (write the FE mesh of every computed impact whose number is a multiple of this, plus the first and last;
+    0 = none)."""
+
+    impacts: int = 100
+    geometry_update: bool = True
+    shakedown_tolerance: float = 1e-3
+    surface_fraction: float = 0.05
+    max_plastic_impacts: int = 20
+    save_every: int = 1
+
+    def __post_init__(self) -> None:
+        if isinstance(self.impacts, bool) or not isinstance(self.impacts, (int, np.integer)):
+            raise ValueError(f"repeat.impacts={self.impacts!r} is not an integer: the number of impacts must be an "
+                             "integer in [1, 1e9]")  # fmt: skip
+        check_number("repeat.impacts", self.impacts, low=1, high=1e9, what="number of impacts")
+        check_bool("repeat.geometry_update", self.geometry_update)
+        check_number("repeat.shakedown_tolerance", self.shakedown_tolerance, low=0.0, low_open=True, high=1.0,
+                     what="shakedown tolerance (fraction of the yield strain)")  # fmt: skip
+        check_number("repeat.surface_fraction", self.surface_fraction, low=0.0, low_open=True, high=1.0,
+                     what="surface change per cycle-jump block (fraction of a^2/R)")  # fmt: skip
+        for name in ("max_plastic_impacts", "save_every"):
+            value = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+                raise ValueError(f"repeat.{name}={value!r} is not an integer")
+        check_number("repeat.max_plastic_impacts", self.max_plastic_impacts, low=1, high=100000)
+        check_number("repeat.save_every", self.save_every, low=0, high=1e9)
+
+
+@dataclass(frozen=True)
+class ImpactRecord:
+    """One row of ``repeat.csv``: impacts ``first``..``last`` (``count`` of them; ``kind`` "computed" = one
+    impact solved, "block" = ``count`` impacts extrapolated from the previous computed one). Per impact of the
+    row: ``normal_restitution``, ``max_force`` (N), ``max_pressure`` (Pa, FE), ``contact_radius`` (m, FE at the
+    maximum), ``max_overlap`` (m, from first contact), ``first_contact_overlap`` (m, from the original plane),
+    ``plastic_strain_increment`` (largest pointwise Δᾱ; 0 for blocks: elastic response),
+    ``wear_volume`` (m³), ``wear_max_depth`` (m); after the row: ``max_plastic_strain`` ᾱ_max, ``dent_depth``
+    (m, largest −u_z of the surface), ``total_wear_volume`` (m³), ``total_wear_max_depth`` (m, of the 2-D map),
+    ``surface_depth`` (m, largest dent + axisymmetric wear of the FE surface), ``wear_peak_to_mean`` (2-D max
+    depth / azimuthal-average max depth of the impact), ``shaken_down``."""
+
+    first: int
+    last: int
+    count: int
+    kind: str
+    normal_restitution: float
+    max_force: float
+    max_pressure: float
+    contact_radius: float
+    max_overlap: float
+    first_contact_overlap: float
+    plastic_strain_increment: float
+    wear_volume: float
+    wear_max_depth: float
+    max_plastic_strain: float
+    dent_depth: float
+    total_wear_volume: float
+    total_wear_max_depth: float
+    surface_depth: float
+    wear_peak_to_mean: float
+    shaken_down: bool
+
+
+#: repeat.csv columns (record field → column name with units).
+CSV_COLUMNS = {
+    "first": "impact_first",
+    "last": "impact_last",
+    "count": "impacts_in_row",
+    "kind": "computed",
+    "normal_restitution": "normal_restitution",
+    "max_force": "max_force_N",
+    "max_pressure": "max_pressure_Pa",
+    "contact_radius": "contact_radius_m",
+    "max_overlap": "max_overlap_from_first_contact_m",
+    "first_contact_overlap": "first_contact_overlap_m",
+    "plastic_strain_increment": "plastic_strain_increment",
+    "max_plastic_strain": "max_equivalent_plastic_strain",
+    "dent_depth": "dent_depth_m",
+    "wear_volume": "wear_volume_per_impact_m3",
+    "wear_max_depth": "wear_max_depth_per_impact_m",
+    "total_wear_volume": "total_wear_volume_m3",
+    "total_wear_max_depth": "total_wear_max_depth_m",
+    "surface_depth": "surface_depth_m",
+    "wear_peak_to_mean": "wear_peak_to_azimuthal_mean",
+    "shaken_down": "shaken_down",
+}
+
+
+@dataclass(frozen=True, eq=False)
+class ComputedImpact:
+    """One impact solved on the plate: ``impact`` (:class:`contact.ImpactResult`), ``law`` (shifted FE law),
+    ``loading``/``unloading`` (fem results, overlaps from the original plane), ``first_contact`` δ₀ (m),
+    ``wear`` (:class:`wear.WearMap`, x in the first impact's frame), ``wear_profile`` (m, azimuthal average on the
+    FE surface nodes), ``max_pressure`` (Pa), ``contact_radius`` (m), ``iterations``, ``change``."""
+
+    impact: ImpactResult
+    law: TabulatedLaw
+    loading: Any
+    unloading: Any
+    first_contact: float
+    wear: WearMap
+    wear_profile: np.ndarray
+    max_pressure: float
+    contact_radius: float
+    iterations: int
+    change: float
+
+
+@dataclass(frozen=True, eq=False)
+class RepeatResult:
+    """``records`` (:class:`ImpactRecord` per computed impact or block), ``plate`` (the :class:`fem.Plate` after
+    the last impact), ``wear`` (cumulative 2-D :class:`wear.WearMap` on the first impact's grid, padded),
+    ``shakedown_impact`` (first impact with Δᾱ below the tolerance, or None), ``computed`` (number of impacts
+    solved), ``wall_time`` (s), ``notes``."""
+
+    case: Any
+    spec: RepeatSpec
+    records: list
+    plate: Any
+    wear: WearMap
+    shakedown_impact: int | None
+    computed: int
+    wall_time: float
+    notes: list = field(default_factory=list)
+
+    def columns(self) -> dict[str, list]:
+        """repeat.csv columns (name with units → values; ``computed`` 1 for a solved impact, 0 for a block;
+        ``shaken_down`` 1/0)."""
+
+        def value(record, name):
+            v = getattr(record, name)
+            return float(v == "computed") if name == "kind" else float(v)
+
+        return {col: [value(r, f) for r in self.records] for f, col in CSV_COLUMNS.items()}
+
+    def summary(self) -> dict:
+        first, last = self.records[0], self.records[-1]
+        computed = [r for r in self.records if r.kind == "computed"]
+        return {
+            "impacts": self.spec.impacts,
+            "computed_impacts": self.computed,
+            "rows": len(self.records),
+            "shakedown_impact": self.shakedown_impact,
+            "shakedown_tolerance_strain": self.spec.shakedown_tolerance * _yield_strain(self.case),
+            "first_impact": {f: getattr(first, f) for f in CSV_COLUMNS},
+            "last_computed_impact": {f: getattr(computed[-1], f) for f in CSV_COLUMNS},
+            "after_last_impact": {
+                "dent_depth_m": last.dent_depth,
+                "total_wear_volume_m3": last.total_wear_volume,
+                "total_wear_mass_kg": last.total_wear_volume * self.case.plate.density,
+                "total_wear_max_depth_m": last.total_wear_max_depth,
+                "surface_depth_m": last.surface_depth,
+                "max_equivalent_plastic_strain": last.max_plastic_strain,
+                "max_wear_depth_over_fe_element": float(self.plate.wear_depth.max() / self.plate.taper_depth * 4),
+            },
+            "wall_time_s": self.wall_time,
+            "notes": list(self.notes),
+        }
+
+
+def _yield_strain(case) -> float:
+    plate = case.plate.material()
+    return plate.yield_strength / plate.E if plate.yield_strength else 0.0
+
+
+def azimuthal_average(wear: WearMap, centre_x: float, r: np.ndarray) -> np.ndarray:
+    r"""Average of the wear map's depth (m) on circles of radius ``r`` (m) about (``centre_x``, 0), over
+    :data:`AZIMUTHS` azimuths (bilinear interpolation; 0 outside the map)."""
+    from scipy.interpolate import RegularGridInterpolator
+
+    theta = (np.arange(AZIMUTHS) + 0.5) * 2.0 * math.pi / AZIMUTHS
+    x = centre_x + r[:, None] * np.cos(theta)[None, :]
+    y = r[:, None] * np.sin(theta)[None, :]
+    f = RegularGridInterpolator((wear.y, wear.x), wear.depth, bounds_error=False, fill_value=0.0)
+    return f(np.stack([y.ravel(), x.ravel()], axis=1)).reshape(x.shape).mean(axis=1)
+
+
+def _axisymmetric_volume(r: np.ndarray, depth: np.ndarray) -> float:
+    return float(np.trapezoid(2.0 * math.pi * r * depth, r))
+
+
+def _shifted_loading(res, d0: float):
+    d = np.asarray(res.overlap, float) - d0
+    f = np.maximum(np.asarray(res.force, float), 0.0)
+    a = np.maximum(np.asarray(res.contact_radius, float), 0.0)
+    k = int(np.argmax(d))
+    d, f, a = d[: k + 1], f[: k + 1], a[: k + 1]
+    keep = (d > 0.0) & np.concatenate([[True], np.diff(d) > 0])
+    return np.r_[0.0, d[keep]], np.r_[0.0, f[keep]], np.r_[0.0, a[keep]]
+
+
+def _law(loading, d0: float, unloading=None, e_star: float | None = None, points: int = 41) -> TabulatedLaw:
+    """The FE law from first contact (δ' = δ − δ₀): the loading branch and the unloading curve from its top
+    (``unloading``; or, without one, a provisional elastic Hertz-form curve with dF/dδ = 2E*a, which cannot change
+    δ_max: see :func:`wear.coupling.provisional_law`)."""
+    d, f, a = _shifted_loading(loading, d0)
+    if unloading is None:
+        d_star, f_star, a_star = d[-1], f[-1], a[-1]
+        drop = min(3.0 * f_star / (4.0 * e_star * max(a_star, 1e-300)), d_star)
+        s = np.linspace(1.0, 0.0, points)
+        return TabulatedLaw(d, f, a, np.array([d_star]), (d_star - drop + s * drop)[None, :],
+                            (f_star * s**1.5)[None, :], (a_star * np.sqrt(s))[None, :])  # fmt: skip
+    top, grid, force, radius = unloading._unloading_curve(points)
+    top -= d0
+    grid = grid - d0
+    end = max(float(grid[-1]), 0.0)
+    # F^(2/3) is linear in δ near separation (Hertz-like); a residual overlap below first contact (numerical
+    # noise of a shaken-down plate) closes the curve at δ' = 0
+    g = np.interp(np.linspace(top, end, points)[::-1], grid[::-1], force[::-1] ** (2.0 / 3.0))[::-1] ** 1.5
+    r = np.interp(np.linspace(top, end, points)[::-1], grid[::-1], radius[::-1])[::-1]
+    g[-1], r[-1] = 0.0, 0.0
+    return TabulatedLaw(d, f, a, np.array([top]), np.linspace(top, end, points)[None, :], g[None, :], r[None, :])
+
+
+def _fe_cycle(loading, unloading, d0: float, d_star: float):
+    """Loading steps below δ* and the unloading, overlaps from first contact, for :func:`wear.coupling
+    .pressure_table`."""
+    d = np.asarray(loading.overlap, float)
+    k = int(np.searchsorted(d, d_star * (1.0 - 1e-12)))
+    cat = lambda name: np.concatenate([np.asarray(getattr(loading, name), float)[:k],  # noqa: E731
+                                       np.asarray(getattr(unloading, name), float)])  # fmt: skip
+    return SimpleNamespace(
+        overlap=cat("overlap") - d0,
+        contact_radius=cat("contact_radius"),
+        pressure=np.vstack([np.asarray(loading.pressure, float)[:k], np.asarray(unloading.pressure, float)]),
+        surface_r=np.asarray(unloading.surface_r, float),
+    )
+
+
+def impact_on_plate(case, fe_plate, estimate: float, axis_x: float = 0.0, unload_steps: int | None = None):
+    """One two-way coupled impact of ``case`` on the FE plate ``fe_plate`` (:class:`fem.Plate`) as it is now;
+    commits the unloaded state to the plate. ``estimate`` (m): expected max overlap from first contact (the
+    loading goes (1 + ``fem.overshoot``) past it; further if the impact goes deeper). ``axis_x`` (m): x of the
+    FE axis (the dent centre) in the wear map's frame. Returns a :class:`ComputedImpact`."""
+    ball, plate = case.ball.material(), case.plate.material()
+    e_star = effective_modulus(ball, plate)
+    d0 = fe_plate.first_contact_overlap()
+    first_yield = _first_yield_overlap(case, ball, plate) if d0 == 0.0 else None
+    target = (1.0 + case.fem.overshoot) * estimate
+    for _ in range(4):
+        loading = fe_plate.load(d0 + _loading_path(target, case.fem.load_steps, first_yield))
+        law = _law(loading, d0, e_star=e_star)
+        impact = _run_impact(case, ball, plate, law)
+        if impact.max_overlap * (1.0 + 2.0 * UNLOAD_MARGIN) < float(law.loading_overlap[-1]):
+            break
+        target = 1.3 * impact.max_overlap
+    else:
+        raise ValueError(f"the impact keeps going past the FE loading (to {target:.4g} m from first contact)")
+    overlaps, change, iterations = [impact.max_overlap], math.inf, 1
+    while iterations < case.fem.max_iterations:
+        d_star = overlaps[-1] * (1.0 + UNLOAD_MARGIN)
+        unloading = fe_plate.unload(loading, d0 + d_star, steps=unload_steps or case.fem.unload_steps)
+        law = _law(loading, d0, unloading)
+        impact = _run_impact(case, ball, plate, law)
+        iterations += 1
+        overlaps.append(impact.max_overlap)
+        change = abs(overlaps[-1] - overlaps[-2]) / overlaps[-2]
+        if change < case.fem.tolerance:
+            break
+    cycle = _fe_cycle(loading, unloading, d0, d0 + d_star)
+    table = _pressure_table(cycle, impact)
+    wm = _wear_map(case, impact, table)
+    # the ball flies d0·V_t/V_n along x before it touches the dented surface: same spot, shifted first contact
+    v_n = case.impact.speed * math.cos(math.radians(case.impact.angle))
+    v_t = case.impact.speed * math.sin(math.radians(case.impact.angle))
+    shift = d0 * v_t / v_n
+    wm = replace(wm, x=wm.x + shift)
+    r = fe_plate.surface_r
+    profile = azimuthal_average(wm, axis_x, r)
+    vol = _axisymmetric_volume(r, profile)
+    if vol > 0.0:
+        profile *= wm.volume_m3 / vol
+    p_in = _inside_contact(cycle.pressure, cycle.surface_r, cycle.contact_radius)
+    return ComputedImpact(
+        impact=impact,
+        law=law,
+        loading=loading,
+        unloading=unloading,
+        first_contact=d0,
+        wear=wm,
+        wear_profile=profile,
+        max_pressure=float(p_in.max()),
+        contact_radius=float(np.interp(d0 + d_star, loading.overlap, loading.contact_radius)),
+        iterations=iterations,
+        change=change,
+    )
+
+
+def _wear_map(case, impact: ImpactResult, table) -> WearMap:
+    ph = pressure_history(impact, case.wear.pressure, fe=table, limiting_pressure=case.impact.limiting_pressure)
+    return integrate_wear(ph, sliding_speed(impact, case.wear.speed), case.wear.law(),
+                          density=case.plate.material().density, points_across=case.wear.points_across)  # fmt: skip
+
+
+class _Accumulator:
+    """Cumulative 2-D wear on a fixed grid: the first impact's grid padded by half its size on each side."""
+
+    def __init__(self, first: WearMap):
+        h = first.spacing
+        pad_x = (first.x.size // 2) * h
+        pad_y = (first.y.size // 2) * h
+        self.x = np.arange(first.x[0] - pad_x, first.x[-1] + pad_x + 0.5 * h, h)
+        ny = int(round((first.y[-1] + pad_y) / h))
+        self.y = np.arange(-ny, ny + 1) * h
+        self.depth = np.zeros((self.y.size, self.x.size))
+        self.density = first.density
+
+    def add(self, wm: WearMap, count: int) -> None:
+        from scipy.interpolate import RegularGridInterpolator
+
+        f = RegularGridInterpolator((wm.y, wm.x), wm.depth, bounds_error=False, fill_value=0.0)
+        yy, xx = np.meshgrid(self.y, self.x, indexing="ij")
+        self.depth += count * f(np.stack([yy.ravel(), xx.ravel()], axis=1)).reshape(yy.shape)
+
+    def map(self) -> WearMap:
+        from .integrate import _finish
+
+        return _finish(self.x, self.y, self.depth.copy(), self.density, 0.01)
+
+
+def repeat(case, spec: RepeatSpec, progress: Callable[[int, int], None] | None = None,
+           on_computed: Callable[[int, Any], None] | None = None) -> RepeatResult:  # fmt: skip
+    """Run ``spec.impacts`` impacts of ``case`` at one spot (see the module docstring). ``progress(done, total)``
+    after each computed impact or block; ``on_computed(impact_number, fe_plate)`` after each computed impact
+    (e.g. to write the FE mesh)."""
+    import fem
+
+    from .pipeline import Case, _impact
+
+    if not isinstance(case, Case):
+        raise ValueError(f"case={type(case).__name__} is not a wear.pipeline.Case")
+    if not isinstance(spec, RepeatSpec):
+        raise ValueError(f"spec={type(spec).__name__} is not a wear.repeat.RepeatSpec")
+    ball, plate = case.ball.material(), case.plate.material()
+    if plate.is_rigid:
+        raise ValueError("plate.rigid=true: repeated impacts need a deformable FE plate (set plate.rigid = false)")
+    t_start = time.perf_counter()
+    estimate = _impact(case, ball, plate)
+    mesh_overlap = (1.0 + case.fem.overshoot) * estimate.max_overlap
+    mesh = fe_mesh(case, ball, plate, mesh_overlap)
+    ball_arg = None if ball.is_rigid else ball
+    # the wear displacement fades over about one contact radius: the top element rows keep their shape for worn
+    # depths up to a fraction of it (the run stops at half of it, see below)
+    taper = fem.estimate_contact_radius(case.ball.radius, effective_modulus(ball, plate), plate, mesh_overlap)
+    fe_plate = fem.Plate(case.ball.radius, plate, mesh_overlap, ball=ball_arg, mesh=mesh, taper_depth=taper)
+    wear_limit = 0.5 * fe_plate.taper_depth
+    h = estimate.history
+    axis_x = float(h.contact_x[int(np.argmax(h.overlap))])
+    tolerance = spec.shakedown_tolerance * _yield_strain(case)
+    records: list[ImpactRecord] = []
+    notes: list[str] = []
+    acc = None
+    done, computed, shakedown, plastic_run = 0, 0, None, 0
+    last = None
+    shaken = False
+    d_est = estimate.max_overlap
+    while done < spec.impacts:
+        if last is None or not shaken or records[-1].kind == "block":
+            kind, count = "computed", 1
+        else:
+            kind = "block"
+            count = spec.impacts - done
+            change = float(last.wear_profile.max())
+            if spec.geometry_update and change > 0.0:
+                elastic_approach = last.contact_radius**2 / case.ball.radius
+                count = max(1, min(count, int(spec.surface_fraction * elastic_approach / change)))
+        if kind == "computed":
+            alpha_before = fe_plate.state.alpha
+            last = impact_on_plate(case, fe_plate, d_est, axis_x)
+            d_est = last.impact.max_overlap
+            computed += 1
+            increment = float(np.max(fe_plate.state.alpha - alpha_before))
+            shaken = increment <= tolerance
+            if shaken and shakedown is None:
+                shakedown = done + 1
+            plastic_run = 0 if shaken else plastic_run + 1
+            if not shaken and plastic_run >= spec.max_plastic_impacts:
+                notes.append(
+                    f"no shakedown after {plastic_run} impacts computed one by one (Δᾱ = {increment:.3g} > "
+                    f"{tolerance:.3g}): the following blocks extrapolate the last impact's wear anyway"
+                )
+                shaken, plastic_run = True, 0
+        else:
+            increment = 0.0
+        step_depth = float(last.wear_profile.max())
+        if spec.geometry_update and step_depth > 0.0:
+            room = wear_limit - float(fe_plate.wear_depth.max())
+            if count * step_depth > room:
+                count = int(room / step_depth)
+                if count < 1:
+                    notes.append(f"stopped after impact {done}: the worn depth would exceed {wear_limit:.3g} m, half "
+                                 "the depth over which the FE mesh's nodes follow the wear (about the contact radius);"
+                                 " beyond it the small-strain FE plate and its moved mesh are not valid")  # fmt: skip
+                    break
+        if acc is None:
+            acc = _Accumulator(last.wear)
+        acc.add(last.wear, count)
+        if spec.geometry_update:
+            fe_plate.move_surface(count * last.wear_profile)
+        done += count
+        total = acc.map()
+        imp = last.impact
+        profile_max = float(last.wear_profile.max())
+        records.append(
+            ImpactRecord(
+                first=done - count + 1,
+                last=done,
+                count=count,
+                kind=kind,
+                normal_restitution=imp.normal_restitution,
+                max_force=imp.max_force,
+                max_pressure=last.max_pressure,
+                contact_radius=last.contact_radius,
+                max_overlap=imp.max_overlap,
+                first_contact_overlap=last.first_contact,
+                plastic_strain_increment=increment,
+                wear_volume=last.wear.volume_m3,
+                wear_max_depth=last.wear.max_depth_m,
+                max_plastic_strain=float(fe_plate.state.alpha.max()),
+                dent_depth=float(fe_plate.dent_depth.max()),
+                total_wear_volume=total.volume_m3,
+                total_wear_max_depth=total.max_depth_m,
+                surface_depth=float(np.max(fe_plate.dent_depth + fe_plate.wear_depth)),
+                wear_peak_to_mean=last.wear.max_depth_m / profile_max if profile_max > 0 else 1.0,
+                shaken_down=bool(shaken),
+            )
+        )
+        if kind == "computed" and on_computed is not None:
+            on_computed(done, fe_plate)
+        if progress is not None:
+            progress(done, spec.impacts)
+    if shakedown is None:
+        notes.append(f"no impact without new plastic strain (tolerance Δᾱ <= {tolerance:.3g})")
+    return RepeatResult(case, spec, records, fe_plate, acc.map(), shakedown, computed,
+                        time.perf_counter() - t_start, notes)  # fmt: skip
