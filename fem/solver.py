@@ -274,7 +274,7 @@ class PlateSolver:
             self.stats.factor_time += t2 - t1
             if not np.all(np.isfinite(step)):
                 break
-            u, cached = self._line_search(start, u, step, free_mask, residual, not prescribed)
+            u, cached = self._line_search(start, u, step, free_mask, residual, prescribed)
         self._last_residual = residual
         raise _NotConverged(residual)
 
