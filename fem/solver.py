@@ -60,6 +60,7 @@ class SolverStats:
     iterations: int = 0
     cuts: int = 0
     relaxed: int = 0
+    elastic_retries: int = 0
     cg_iterations: int = 0
     increments: int = 0
     assembly_time: float = 0.0
@@ -112,7 +113,9 @@ class PlateSolver:
         self.surface_uz = 2 * d.surface_nodes + 1
         self.mass_lu = spla.splu(d.surface_mass.tocsc())
         self.stats = SolverStats()
+        self._elastic_K = None
         self._lu = None
+        self._refresh = False
         self.cg_rtol = 1e-9
         self.cg_max_iterations = 12
         nel, nq = d.weight.shape
@@ -139,6 +142,11 @@ class PlateSolver:
         """Contact forces (N, positive = compressive) at the surface nodes sorted by r."""
         upd = self.stress_update(state)
         return -internal_force(self.disc, upd.stress)[self.surface_uz]
+
+    def _elastic_stiffness(self) -> sp.csr_matrix:
+        if self._elastic_K is None:
+            self._elastic_K = assemble(self.disc, self.elastic_element_matrices)
+        return self._elastic_K
 
     def _tangent(self, upd) -> np.ndarray:
         d = self.disc
@@ -168,10 +176,19 @@ class PlateSolver:
         u = u0.copy()
         active = active0.copy()
         seen: set[bytes] = set()
+        # a plastic increment changes the tangent in the whole plastic zone: the last increment's LU is a poor
+        # preconditioner for its first solve, so factorise afresh (CG on that LU serves the later iterations)
+        self._refresh = bool(np.any(start.alpha))
         iterations = 0
         best = None
         for _ in range(self.max_set_updates):
-            u, upd, f, spent, active = self._equilibrate(start, u, active, obstacle, seen)
+            try:
+                u, upd, f, spent, active = self._equilibrate(start, u, active, obstacle, seen)
+            except _NotConverged:
+                # the consistent tangent misleads where quadrature points flip between reverse yield and elastic
+                # unloading (the plate set free of a conforming dent): the elastic stiffness converges there
+                u, upd, f, spent, active = self._equilibrate(start, u, active, obstacle, seen, elastic=True)
+                self.stats.elastic_retries += 1
             iterations += spent
             reactions = -f[uz]
             gap = obstacle - u[uz]
@@ -213,12 +230,15 @@ class PlateSolver:
         self._last_residual = 0.0
         raise _NotConverged(float("nan"))
 
-    def _equilibrate(self, start: PlateState, u: np.ndarray, active: np.ndarray, obstacle: np.ndarray, seen: set):
+    def _equilibrate(
+        self, start: PlateState, u: np.ndarray, active: np.ndarray, obstacle: np.ndarray, seen: set, elastic=False
+    ):
         """Newton at the contact set ``active``: u_z = ``obstacle`` there (prescribed on the first iteration, so
         the constraint holds exactly afterwards), equilibrium of the free DOFs. Free nodes that penetrate join
         the set during the first ``early_joins`` iterations (a set not in ``seen``): that saves a restart when
         the increment's guess of the set was too small, as on every loading step. Returns (u, stress update,
-        internal force, iterations, set); raises :class:`_NotConverged`."""
+        internal force, iterations, set); raises :class:`_NotConverged`. ``elastic``: iterate with the elastic
+        stiffness (initial-stiffness method: slower, linear convergence, but robust), up to 4 × the iterations."""
         import time
 
         d = self.disc
@@ -234,7 +254,7 @@ class PlateSolver:
         cached = None
         first_residual = None
         residual = np.inf
-        for it in range(self.max_iterations):
+        for it in range(self.max_iterations * (4 if elastic else 1)):
             if cached is None:
                 upd = radial_return(self.material, strain(d, u), start.plastic_strain, start.alpha)
                 f = internal_force(d, upd.stress)
@@ -257,7 +277,7 @@ class PlateSolver:
             elif first_residual is not None and residual > 1e4 * first_residual:
                 break  # diverging: cut the increment now
             t0 = time.perf_counter()
-            K = self._tangent(upd)
+            K = self._elastic_stiffness() if elastic else self._tangent(upd)
             du = np.zeros(d.ndofs)
             du[constrained] = du_c
             rhs = -f - K @ du
@@ -307,6 +327,9 @@ class PlateSolver:
         """Solve K_mod x = rhs: preconditioned CG with the LU of an earlier tangent (the tangent changes only
         in the plastic zone and at the contact edge), refactorising when CG needs more than
         ``cg_max_iterations`` (or on the first call)."""
+        if self._refresh:
+            self._refresh = False
+            self._lu = None
         if self._lu is not None:
             count = [0]
 
@@ -340,6 +363,15 @@ class PlateSolver:
                 gap = self.obstacle(overlap) - u0[self.surface_uz]
                 # nodes the extrapolation keeps on the sphere (gap ≈ 0) or pushes into it
                 return u0, gap <= 1e-6 * abs(step) + self.gap_tol
+        if previous is not None and step < 0.0 and state.n_active and previous.n_active:
+            # unloading: the edge recedes about as many nodes as in the last increment (scaled by the step);
+            # nodes released too early penetrate and join again in the first iterations
+            last = state.overlap - previous.overlap
+            if last < 0.0:
+                edge = int(np.flatnonzero(state.active)[-1])
+                receded = int(np.flatnonzero(previous.active)[-1]) - edge
+                keep = np.arange(state.active.size) <= edge - int(max(receded, 0) * min(step / last, 4.0))
+                return state.u, state.active & keep
         return state.u, state.active
 
     def advance(self, state: PlateState, previous: PlateState | None, overlap: float, depth: int = 0) -> PlateState:
