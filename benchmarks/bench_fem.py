@@ -68,7 +68,10 @@ def main() -> None:
     print(f"one linear elastic solve (assemble + factorise + solve): {solve:.3f} s")
     print(f"standard cycle: {n} increments in {total:.2f} s (target <= 60 s)")
     print(f"Newton iterations per increment: {res.newton_iterations.mean():.2f} (max {res.newton_iterations.max()})")
-    print(f"LU factorisations per increment: {stats.factorisations / n:.2f}; step cuts: {stats.cuts}")
+    print(
+        f"LU factorisations per increment: {stats.factorisations / n:.2f}; step cuts: {stats.cuts}; "
+        f"elastic-stiffness retries: {stats.elastic_retries}; relaxed contact sets: {stats.relaxed}"
+    )
     print(f"time in assembly {stats.assembly_time:.2f} s, in factorisation+solve {stats.factor_time:.2f} s")
     print(
         f"solve-equivalents per increment: total / (increments x one solve) = {total / (n * solve):.2f} (target <= 4)"

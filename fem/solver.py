@@ -1,16 +1,19 @@
-r"""Newton solver of the plate pressed by the sphere: plasticity and contact in one semi-smooth loop.
+r"""Newton solver of the plate pressed by the sphere: plasticity inside, the contact set outside.
 
-Each increment prescribes the overlap δ. Per Newton iteration: return-map every quadrature point
-from the converged state of the previous increment, assemble f_int and (where points yield) the
-consistent tangent into the fixed CSR pattern, update the contiguous active set of surface
-nodes, and solve the reduced system (constraints u_r = 0 on the axis, u_z = 0 at the bottom,
-u_z = z_s(r) at active nodes) with one sparse LU (SuperLU, minimum-degree ordering on AᵀA + A,
-symmetric mode). Convergence: unchanged active set and ‖f_free‖₂ ≤ rtol · ‖reactions‖₂. An
-increment that does not converge is cut in halves (up to ``max_cuts`` times) before
-:class:`ConvergenceError` is raised naming the increment and the residual.
+Each increment prescribes the overlap δ. Inner loop (:meth:`PlateSolver._equilibrate`): Newton at a fixed
+contact set — return-map every quadrature point from the converged state of the previous increment, assemble
+f_int and (where points yield) the consistent tangent into the fixed CSR pattern, solve the reduced system
+(u_r = 0 on the axis, u_z = 0 at the bottom, u_z = z_s(r) − z_node at the contact nodes) by conjugate gradients
+preconditioned with the LU of an earlier tangent (SuperLU, refactorised when CG is slow and at each plastic
+increment); backtracking once the constraints hold. Outer loop (:meth:`PlateSolver._newton`): the set is
+corrected — pulling nodes leave, penetrating nodes join — until the converged state violates neither
+(complementarity: reactions ≥ 0 on the set, gaps ≥ 0 off it, to ``rtol`` and 1e-7 of the path's overlap).
+The set may take any shape; a cycling set is broken by one-node corrections. Where Newton fails as the plate is
+set free of a conforming dent, an elastic-stiffness (initial-stiffness) retry converges. An increment that still
+does not converge is cut in halves (up to ``max_cuts`` times) before :class:`ConvergenceError` names it.
 
-States (u, ε_p, ᾱ, active count) are plain frozen records so a loading run can keep them and an
-unloading run can restart from any of them (path independence of the loading branch).
+States (u, ε_p, ᾱ, contact set) are plain frozen records so a loading run can keep them and an unloading run can
+restart from any of them (path independence of the loading branch).
 """
 
 from __future__ import annotations

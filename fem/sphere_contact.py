@@ -5,10 +5,8 @@ The sphere's lower surface at overlap δ is exact (no paraboloid approximation):
 .. math:: z_s(r) = -\delta + R - \sqrt{R^2 - r^2},
 
 and the surface nodes obey u_z(r_i) ≤ z_s(r_i) (small strain: gaps measured at the reference
-radius). The contact set of a sphere pressed into a flat is a disc, so the active set is the
-set of surface nodes (a disc while loading): the semi-smooth Newton of :mod:`fem.solver` adds
-nodes that penetrate and releases nodes that pull (negative reaction), see
-:func:`update_active_set`. No penalty parameter.
+radius, and to the node's own reference height: a worn node sits below z = 0). The contact set is
+found by :mod:`fem.solver` (nodes that penetrate join, nodes that pull leave). No penalty parameter.
 """
 
 from __future__ import annotations
@@ -16,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse.linalg as spla
 
-__all__ = ["sphere_surface", "update_active_set", "contact_radius", "pressure_from_reactions"]
+__all__ = ["sphere_surface", "contact_radius", "pressure_from_reactions"]
 
 
 def sphere_surface(r: np.ndarray, overlap: float, radius: float) -> np.ndarray:
@@ -26,31 +24,6 @@ def sphere_surface(r: np.ndarray, overlap: float, radius: float) -> np.ndarray:
     z = np.full(r.shape, np.inf)
     z[inside] = -overlap + radius - np.sqrt(radius**2 - r[inside] ** 2)
     return z
-
-
-def update_active_set(
-    active: np.ndarray, reactions: np.ndarray, gap: np.ndarray, gap_tol: float, equilibrated: bool
-) -> np.ndarray:
-    """New active set (bool mask over the surface nodes sorted by r).
-
-    ``reactions`` (N, positive = compressive), ``gap`` = z_s − u_z (m, negative = penetration).
-    Penetrating free nodes join. Otherwise pulling nodes at the outer edge of the set leave; pulling
-    nodes inside the set leave only once the iterate is ``equilibrated`` for the current set (an
-    unconverged iterate, or a P2 vertex carrying a small negative share of a positive pressure, is
-    not a separation), which lets the contact open from the centre at the end of unloading.
-    """
-    new = active.copy()
-    penetrating = ~active & (gap < -gap_tol)
-    if penetrating.any():
-        return new | penetrating
-    idx = np.flatnonzero(active)
-    for i in idx[::-1]:
-        if reactions[i] >= 0.0:
-            break
-        new[i] = False
-    if equilibrated and not (new != active).any():
-        new &= reactions >= 0.0
-    return new
 
 
 def contact_radius(surface_r: np.ndarray, active: np.ndarray, gap: np.ndarray) -> float:
