@@ -365,7 +365,12 @@ class PlateSolver:
                 u0 = state.u + factor * (state.u - previous.u)
                 gap = self.obstacle(overlap) - u0[self.surface_uz]
                 # nodes the extrapolation keeps on the sphere (gap ≈ 0) or pushes into it
-                return u0, gap <= 1e-6 * abs(step) + self.gap_tol
+                guess = gap <= 1e-6 * abs(step) + self.gap_tol
+                if guess.any():
+                    # one node short: a missing node joins within the first iterations, while a node too many
+                    # (it would pull) can only leave after the set has converged, costing a second solve
+                    guess[np.flatnonzero(guess)[-1]] = False
+                return u0, guess
         if previous is not None and step < 0.0 and state.n_active and previous.n_active:
             # unloading: the edge recedes about as many nodes as in the last increment (scaled by the step);
             # nodes released too early penetrate and join again in the first iterations
