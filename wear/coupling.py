@@ -93,13 +93,14 @@ def fe_indent(case, ball: Material, plate: Material, overlaps: np.ndarray, keep_
 
 
 def fe_unload(case, fe_load, max_overlap: float):
-    """Unload the kept loading run ``fe_load`` from ``max_overlap`` (m) (``IndentationResult.unload_from``).
+    """Unload the kept loading run ``fe_load`` from ``max_overlap`` (m) to separation
+    (``IndentationResult.unload_from``, ``fem.unload_steps`` steps).
 
-    For a plate that yields, :func:`unload_before_separation` instead: fem (as of this version) does not converge
-    at the step where the ball leaves a plastically dented plate, and finding that out costs ~60 s of step cuts."""
-    if case.plate.material().yield_strength is None:
-        return fe_load.unload_from(max_overlap, steps=case.fem.unload_steps)
-    return unload_before_separation(case, fe_load, max_overlap)
+    Since fem's contact set converges through the loss of contact (any step size), this is used for yielding
+    plates too. :func:`unload_before_separation` (the earlier workaround: stop ~3% of F* before separation and
+    extrapolate δ_p) is kept for comparison: on the default case the two agree on the dent to 0.2% (3.660 vs
+    3.653 µm) and on e_n to 4e-4 (0.8097 vs 0.8100)."""
+    return fe_load.unload_from(max_overlap, steps=case.fem.unload_steps)
 
 
 @dataclass(frozen=True, eq=False)
