@@ -6,7 +6,7 @@ The case is a run case (``impactwear run``'s tables ``[ball]``, ``[plate]``, ``[
 worn surface, shakedown, cycle jump). Output folder (written atomically, see :mod:`wear.app.outputs`):
 
 - ``repeat.csv``: one row per computed impact or cycle-jump block (columns with units, see
-  :data:`wear.repeat.CSV_COLUMNS`); ``summary.json`` (case, [repeat], results, notes, wall time);
+  :data:`wear.repeat_records.CSV_COLUMNS`); ``summary.json`` (case, [repeat], results, notes, wall time);
 - ``repeat.pvd`` + ``frames/plate_NNNNNN.vtu``: the FE mesh after each saved computed impact (time = impact
   number; point data ``u``, ``wear_depth``, ``surface``; cell data ``equivalent_plastic_strain``, ``von_mises``);
 - ``wear_map.npz``: the cumulative 2-D wear map (``x``, ``y``, ``depth``, m); ``repeat.png`` (with
