@@ -238,34 +238,37 @@ class _Run:
         return result
 
     def write(self, path: Path, result: IndentationResult) -> Path:
-        import meshio
-
-        s = self.solver
-        d = s.disc
-        state = self.final
-        mesh = d.mesh
-        nv = mesh.p.shape[1]
-        u = state.u.reshape(-1, 2)[:nv]
-        upd = s.stress_update(state)
-        vm = von_mises(upd.stress).mean(axis=1)
-        alpha = state.alpha.mean(axis=1)
+        d = self.solver.disc
+        nv = d.mesh.p.shape[1]
         pressure = np.zeros(nv)
         surf = d.surface_nodes
         on_vertices = surf < nv
         if result.pressure.size:
             pressure[surf[on_vertices]] = result.pressure[-1][on_vertices]
-        points = np.column_stack([mesh.p.T + u, np.zeros(nv)])
-        out = meshio.Mesh(
-            points,
-            [("triangle", mesh.t.T)],
-            point_data={"u": np.column_stack([u, np.zeros(nv)]), "pressure": pressure},
-            cell_data={"von_mises": [vm], "equivalent_plastic_strain": [alpha]},
-        )
-        path = Path(path)
-        tmp = path.with_name(f".{path.stem}.tmp{os.getpid()}{path.suffix}")
-        meshio.write(str(tmp), out)
-        os.replace(tmp, path)
-        return path
+        return write_state(self.solver, self.final, path, {"pressure": pressure})
+
+
+def write_state(solver: PlateSolver, state: PlateState, path, point_data: dict) -> Path:
+    """Write ``state`` on ``solver``'s mesh (meshio, format from the suffix): the mesh deformed by u, point data
+    ``u`` (m) plus ``point_data`` (one value per vertex), cell data ``von_mises`` (Pa) and
+    ``equivalent_plastic_strain`` (element averages). Atomic: temporary file, then os.replace."""
+    import meshio
+
+    mesh = solver.disc.mesh
+    nv = mesh.p.shape[1]
+    u = state.u.reshape(-1, 2)[:nv]
+    vm = von_mises(solver.stress_update(state).stress).mean(axis=1)
+    out = meshio.Mesh(
+        np.column_stack([mesh.p.T + u, np.zeros(nv)]),
+        [("triangle", mesh.t.T)],
+        point_data={"u": np.column_stack([u, np.zeros(nv)]), **point_data},
+        cell_data={"von_mises": [vm], "equivalent_plastic_strain": [state.alpha.mean(axis=1)]},
+    )
+    path = Path(path)
+    tmp = path.with_name(f".{path.stem}.tmp{os.getpid()}{path.suffix}")
+    meshio.write(str(tmp), out)
+    os.replace(tmp, path)
+    return path
 
 
 def _check_path(overlaps) -> np.ndarray:

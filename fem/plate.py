@@ -35,8 +35,7 @@ from skfem import MeshTri
 from contact.materials import Material
 from contact.validation import check_array, check_number
 
-from .indent import _plate_model, _Run, plate_mesh
-from .plasticity import von_mises
+from .indent import _plate_model, _Run, plate_mesh, write_state
 from .result import IndentationResult
 from .solver import PlateSolver, PlateState
 
@@ -76,10 +75,8 @@ class Plate:
         d = self.solver.disc
         #: cumulative wear depth (m, ≥ 0) at each surface node (sorted by r, :attr:`surface_r`)
         self.wear_depth = np.zeros(d.surface_r.size)
-        on_surface = np.zeros(mesh.p.shape[1], bool)
-        on_surface[mesh.facets[:, mesh.boundaries["surface"]].ravel()] = True
-        self._surface_vertices = np.flatnonzero(on_surface)
         facets = mesh.facets[:, mesh.boundaries["surface"]]
+        self._surface_vertices = np.unique(facets)
         facet_length = np.abs(mesh.p[0, facets[1]] - mesh.p[0, facets[0]])
         #: depth (m) over which the wear displacement of the vertices fades out (see the module docstring)
         self.taper_depth = 4.0 * float(facet_length.min())
@@ -194,29 +191,15 @@ class Plate:
         point data ``u`` (m), ``wear_depth`` (m, the surface vertices' cumulative wear, 0 elsewhere),
         ``surface`` (1 on the surface vertices), cell data ``von_mises`` (Pa) and ``equivalent_plastic_strain``
         (element averages). Atomic: temporary file, then os.replace."""
-        import meshio
-
         s = self.solver
         mesh = s.disc.mesh
         nv = mesh.p.shape[1]
-        u = self.state.u.reshape(-1, 2)[:nv]
-        vm = von_mises(s.stress_update(self.state).stress).mean(axis=1)
         wear = np.zeros(nv)
         surface = np.zeros(nv)
         sv = self._surface_vertices
         wear[sv] = np.interp(mesh.p[0, sv], s.disc.surface_r, self.wear_depth)
         surface[sv] = 1.0
-        out = meshio.Mesh(
-            np.column_stack([mesh.p.T + u, np.zeros(nv)]),
-            [("triangle", mesh.t.T)],
-            point_data={"u": np.column_stack([u, np.zeros(nv)]), "wear_depth": wear, "surface": surface},
-            cell_data={"von_mises": [vm], "equivalent_plastic_strain": [self.state.alpha.mean(axis=1)]},
-        )
-        path = Path(path)
-        tmp = path.with_name(f".{path.stem}.tmp{os.getpid()}{path.suffix}")
-        meshio.write(str(tmp), out)
-        os.replace(tmp, path)
-        return path
+        return write_state(s, self.state, path, {"wear_depth": wear, "surface": surface})
 
 
 def _concat(a: IndentationResult, b: IndentationResult) -> IndentationResult:

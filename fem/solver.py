@@ -19,7 +19,8 @@ restart from any of them (path independence of the loading branch).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+import time
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import scipy.sparse as sp
@@ -228,9 +229,7 @@ class PlateSolver:
             self.stats.iterations += iterations
             self.stats.history.append(iterations)
             self.stats.relaxed += 1
-            state = best[1]
-            return PlateState(state.overlap, state.u, state.plastic_strain, state.alpha, state.active, iterations)
-        self._last_residual = 0.0
+            return replace(best[1], iterations=iterations)
         raise _NotConverged(float("nan"))
 
     def _equilibrate(
@@ -242,8 +241,6 @@ class PlateSolver:
         the increment's guess of the set was too small, as on every loading step. Returns (u, stress update,
         internal force, iterations, set); raises :class:`_NotConverged`. ``elastic``: iterate with the elastic
         stiffness (initial-stiffness method: slower, linear convergence, but robust), up to 4 × the iterations."""
-        import time
-
         d = self.disc
         uz = self.surface_uz
 
@@ -298,7 +295,6 @@ class PlateSolver:
             if not np.all(np.isfinite(step)):
                 break
             u, cached = self._line_search(start, u, step, free_mask, residual, prescribed)
-        self._last_residual = residual
         raise _NotConverged(residual)
 
     def _line_search(self, start: PlateState, u: np.ndarray, step: np.ndarray, free_mask, residual: float,
