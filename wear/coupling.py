@@ -36,10 +36,7 @@ from contact.theory import hertz_impact, sphere_mass
 
 __all__ = [
     "CouplingResult",
-    "TruncatedUnloading",
-    "coupled_law",
     "hertz_surface_displacement",
-    "unload_before_separation",
     "FeCycle",
     "RestitutionSweep",
     "couple",
@@ -97,95 +94,9 @@ def fe_unload(case, fe_load, max_overlap: float):
     (``IndentationResult.unload_from``, ``fem.unload_steps`` steps).
 
     Since fem's contact set converges through the loss of contact (any step size), this is used for yielding
-    plates too. :func:`unload_before_separation` (the earlier workaround: stop ~3% of F* before separation and
-    extrapolate δ_p) is kept for comparison: on the default case the two agree on the dent to 0.2% (3.660 vs
-    3.653 µm) and on e_n to 4e-4 (0.8097 vs 0.8100)."""
+    plates too. It replaced a workaround that stopped ~3% of F* before separation and extrapolated δ_p; on the
+    default case the two agreed on the dent to 0.2% (3.660 vs 3.653 µm) and on e_n to 4e-4 (0.8097 vs 0.8100)."""
     return fe_load.unload_from(max_overlap, steps=case.fem.unload_steps)
-
-
-@dataclass(frozen=True, eq=False)
-class TruncatedUnloading:
-    """An FE unloading that stops just before the ball leaves the plate (arrays per step from δ*, as in
-    ``fem.IndentationResult``), its ``residual_overlap`` δ_p (m) extrapolated with F^{2/3} linear in δ (the
-    Hertz-like tail), and ``end_force_fraction`` F_end/F*. ``loaded_depth`` is the surface u_z (m, into the
-    plate) at the last step; ``residual_depth`` removes from it the elastic half-space displacement of a Hertz
-    pressure carrying F_end over the last contact radius (Johnson 1985, Eqs. 3.41), with the FE plate's E*. In
-    the default case this puts the dent's centre at 3.6527 µm against the extrapolated δ_p = 3.6528 µm (two
-    independent estimates; uncorrected: 4.31 µm)."""
-
-    overlap: np.ndarray
-    force: np.ndarray
-    contact_radius: np.ndarray
-    pressure: np.ndarray
-    regime: list
-    max_equivalent_plastic_strain: np.ndarray
-    surface_r: np.ndarray
-    residual_depth: np.ndarray
-    residual_overlap: float
-    end_force_fraction: float
-    result: Any
-    loaded_depth: np.ndarray = None
-
-    def write(self, path):
-        return self.result.write(path)
-
-
-def unload_before_separation(case, fe_load, max_overlap: float, recovery_factors=(0.6, 0.5, 0.4)):
-    r"""One FE cycle (load to δ*, unload) whose unloading stops before the contact is lost.
-
-    The unloading ends at :math:`\delta_{end} = \delta^* - c\,F^*/(E^*a^*)` with c = 0.6 (then 0.5, 0.4 if the
-    FE still fails): elastic recovery from a flattened (Mesarovic–Johnson) contact is 2F*/(πE*a*) = 0.64 F*/(E*a*)
-    and from a Hertz one 0.75 F*/(E*a*), so c = 0.6 stops short of the residual overlap. δ_p is extrapolated from
-    the last two steps with F^{2/3} linear in δ. Costs a second FE loading (used only when ``unload_from`` fails).
-    """
-    import fem
-
-    ball, plate = case.ball.material(), case.plate.material()
-    d, f, a = _loading_table(fe_load)
-    f_star, a_star = float(np.interp(max_overlap, d, f)), float(np.interp(max_overlap, d, a))
-    scale = f_star / (fe_load.effective_modulus * a_star)
-    load = _loading_path(max_overlap, case.fem.load_steps, _first_yield_overlap(case, ball, plate))
-    for factor in recovery_factors:
-        d_end = max_overlap - factor * scale
-        if d_end <= 0.0:
-            continue
-        # steps denser towards the end, where the last two points extrapolate δ_p
-        s = np.linspace(0.0, 1.0, case.fem.unload_steps + 1)[1:]
-        path = np.r_[load, max_overlap - (max_overlap - d_end) * (1.0 - (1.0 - s) ** 2)]
-        try:
-            # on the loading run's mesh, so that loading and unloading tables come from the same discretisation
-            res = fe_indent(case, ball, plate, path, mesh_overlap=float(np.max(fe_load.overlap)))
-        except fem.ConvergenceError:
-            continue
-        k = int(np.argmax(res.overlap))
-        uf = np.asarray(res.force, float)[k:]
-        ud = np.asarray(res.overlap, float)[k:]
-        if uf[-1] <= 0.0 or uf[-2] <= uf[-1]:
-            continue
-        g1, g0 = uf[-1] ** (2 / 3), uf[-2] ** (2 / 3)
-        d_p = float(ud[-1] - g1 * (ud[-2] - ud[-1]) / (g0 - g1))
-        surface_r = np.asarray(res.surface_r, float)
-        loaded = np.asarray(res.residual_depth, float)
-        elastic = hertz_surface_displacement(surface_r, float(uf[-1]), float(res.contact_radius[-1]),
-                                             float(res.effective_modulus))  # fmt: skip
-        return TruncatedUnloading(
-            overlap=ud,
-            force=uf,
-            contact_radius=np.asarray(res.contact_radius, float)[k:],
-            pressure=np.asarray(res.pressure, float)[k:],
-            regime=list(res.regime[k:]),
-            max_equivalent_plastic_strain=np.asarray(res.max_equivalent_plastic_strain, float)[k:],
-            surface_r=surface_r,
-            residual_depth=loaded - elastic,
-            residual_overlap=max(d_p, 0.0),
-            end_force_fraction=float(uf[-1] / uf[0]),
-            result=res,
-            loaded_depth=loaded,
-        )
-    raise ValueError(
-        f"fem: the plate could not be unloaded from max_overlap={max_overlap:.6g} m (no convergence near the loss "
-        "of contact); try fem.mesh_scale or fem.unload_steps"
-    )
 
 
 def hertz_surface_displacement(r, force: float, contact_radius: float, effective_modulus: float) -> np.ndarray:
@@ -206,26 +117,6 @@ def hertz_surface_displacement(r, force: float, contact_radius: float, effective
         p0 / (2.0 * a * effective_modulus) * ((2.0 * a * a - rs**2) * np.arcsin(a / rs) + a * np.sqrt(rs**2 - a * a))
     )
     return np.where(r <= a, inside, outside)
-
-
-def coupled_law(fe_load, unloading) -> TabulatedLaw:
-    """The FE law of the coupled impact: ``fe_load.force_law()`` (fem's loading + every ``unload_from``), or for
-    a :class:`TruncatedUnloading` the loading table plus its unloading closed at the extrapolated δ_p."""
-    if not isinstance(unloading, TruncatedUnloading):
-        return fe_load.force_law()
-    d, f, a = _loading_table(fe_load)
-    ud = np.append(unloading.overlap, unloading.residual_overlap)
-    uf = np.append(unloading.force, 0.0)
-    ua = np.append(unloading.contact_radius, 0.0)
-    keep = np.concatenate([[True], np.diff(ud) < 0])
-    ud, uf, ua = ud[keep], uf[keep], ua[keep]
-    # resample on 41 points with F^(2/3) interpolated linearly in δ (exact for a Hertz-like unloading): linear
-    # interpolation of the convex F(δ) between coarse FE steps would overestimate the returned energy
-    grid = np.linspace(ud[0], ud[-1], 41)
-    order = np.argsort(ud)
-    force = np.interp(grid, ud[order], uf[order] ** (2.0 / 3.0)) ** 1.5
-    radius = np.interp(grid, ud[order], ua[order])
-    return TabulatedLaw(d, f, a, np.array([grid[0]]), grid[None, :], force[None, :], radius[None, :])
 
 
 @dataclass(frozen=True, eq=False)
@@ -410,10 +301,8 @@ def couple(case, ball: Material, plate: Material, fe_load, estimate: ImpactResul
                 f"loading to {load_top:.4g} m"
             )
         unloading = unload(case, fe_load, d_star)
-        # a truncated unloading is a whole cycle on its own mesh: take its loading steps too
-        head = unloading.result if isinstance(unloading, TruncatedUnloading) else fe_load
-        fe = FeCycle.join(head, unloading, d_star)
-        law = coupled_law(fe_load, unloading)
+        fe = FeCycle.join(fe_load, unloading, d_star)
+        law = fe_load.force_law()  # the loading plus every unloading computed so far
         impact = _run_impact(case, ball, plate, law)
         iterations += 1
         overlaps.append(impact.max_overlap)

@@ -319,24 +319,10 @@ class RunResult:
             "dent": {
                 "max_depth_m": self.surface.max_dent_depth,
                 "centre_x_m": self.surface.dent_centre[0],
-                **_dent_notes(self.fe),
             },
             "coupling": coupling,
             "stage_times_s": dict(self.stage_times),
         }
-
-
-def _dent_notes(fe) -> dict:
-    """How the dent was obtained: after a truncated FE unloading, the remaining force fraction and δ_p."""
-    unloading = getattr(fe, "unloading", None)
-    if unloading is None or not hasattr(unloading, "end_force_fraction"):
-        return {}
-    return {
-        "end_force_fraction": unloading.end_force_fraction,
-        "end_overlap_m": float(unloading.overlap[-1]),
-        "residual_overlap_m": unloading.residual_overlap,
-        "note": "FE unloading stopped before separation: the dent is the surface under the remaining force",
-    }
 
 
 def _yield_info(case: Case, ball: Material, plate: Material, fe) -> dict:
