@@ -5,7 +5,8 @@ contact set — return-map every quadrature point from the converged state of th
 f_int and (where points yield) the consistent tangent into the fixed CSR pattern, solve the reduced system
 (u_r = 0 on the axis, u_z = 0 at the bottom, u_z = z_s(r) − z_node at the contact nodes) by conjugate gradients
 preconditioned with the LU of an earlier tangent (SuperLU, refactorised when CG is slow and at each plastic
-increment); backtracking once the constraints hold. Outer loop (:meth:`PlateSolver._newton`): the set is
+increment) to an inexact-Newton tolerance (Eisenstat–Walker); backtracking once the constraints hold, and a
+direction along which no step lowers the residual ends the attempt. Outer loop (:meth:`PlateSolver._newton`): the set is
 corrected — pulling nodes leave, penetrating nodes join — until the converged state violates neither
 (complementarity: reactions ≥ 0 on the set, gaps ≥ 0 off it, to ``rtol`` and 1e-7 of the path's overlap).
 The set may take any shape; a cycling set is broken by one-node corrections. Where Newton fails as the plate is
@@ -190,8 +191,11 @@ class PlateSolver:
                 u, upd, f, spent, active = self._equilibrate(start, u, active, obstacle, seen)
             except _NotConverged:
                 # the consistent tangent misleads where quadrature points flip between reverse yield and elastic
-                # unloading (the plate set free of a conforming dent): the elastic stiffness converges there
-                u, upd, f, spent, active = self._equilibrate(start, u, active, obstacle, seen, elastic=True)
+                # unloading (the plate set free of a conforming dent): the elastic stiffness converges there,
+                # restarted from the increment's start so its first iterate is the elastic trial state (exact when
+                # the release is elastic, as at the last contact loss: one iteration instead of ~90 from the
+                # failed iterate, whose spuriously yielding points creep back one by one)
+                u, upd, f, spent, active = self._equilibrate(start, start.u, active, obstacle, seen, elastic=True)
                 self.stats.elastic_retries += 1
             iterations += spent
             reactions = -f[uz]
@@ -254,6 +258,7 @@ class PlateSolver:
         cached = None
         first_residual = None
         residual = np.inf
+        previous_residual = None
         for it in range(self.max_iterations * (4 if elastic else 1)):
             if cached is None:
                 upd = radial_return(self.material, strain(d, u), start.plastic_strain, start.alpha)
@@ -288,14 +293,26 @@ class PlateSolver:
             rhs[constrained] = diag_scale * du_c
             K_mod = (sp.diags(keep) @ K @ sp.diags(keep) + sp.diags(diag_scale * (1.0 - keep))).tocsr()
             t1 = time.perf_counter()
-            step = self._linear_solve(K_mod, rhs)
+            step = self._linear_solve(K_mod, rhs, self._forcing(residual, previous_residual, self.rtol * scale, rhs))
+            previous_residual = residual
             t2 = time.perf_counter()
             self.stats.assembly_time += t1 - t0
             self.stats.factor_time += t2 - t1
             if not np.all(np.isfinite(step)):
                 break
             u, cached = self._line_search(start, u, step, free_mask, residual, prescribed)
+            if prescribed and np.linalg.norm(cached[1][free_mask]) > residual:
+                break  # no step length along the Newton direction lowers the residual: not a descent direction
         raise _NotConverged(residual)
+
+    def _forcing(self, residual: float, previous: float | None, target: float, rhs: np.ndarray) -> float:
+        r"""Relative tolerance of the inner linear solve (inexact Newton, Eisenstat & Walker 1996, choice 2):
+        :math:`\eta_k = 0.9\,(r_k / r_{k-1})^2`, at most 1e-2 (1e-2 on the first iteration), and no tighter
+        than needed to bring the residual to a tenth of the ``target`` (N) — solving the linearisation to 1e-9
+        when the nonlinearity limits the next residual anyway was half the cost of an increment."""
+        eta = 1e-2 if not previous else 0.9 * (residual / previous) ** 2
+        floor = 0.1 * target / max(float(np.linalg.norm(rhs)), 1e-300)
+        return max(min(max(eta, floor), 1e-2), self.cg_rtol)
 
     def _line_search(self, start: PlateState, u: np.ndarray, step: np.ndarray, free_mask, residual: float,
                      backtrack: bool):  # fmt: skip
@@ -322,7 +339,7 @@ class PlateSolver:
         )
         self.stats.factorisations += 1
 
-    def _linear_solve(self, K_mod: sp.csr_matrix, rhs: np.ndarray) -> np.ndarray:
+    def _linear_solve(self, K_mod: sp.csr_matrix, rhs: np.ndarray, tolerance: float) -> np.ndarray:
         """Solve K_mod x = rhs: preconditioned CG with the LU of an earlier tangent (the tangent changes only
         in the plastic zone and at the contact edge), refactorising when CG needs more than
         ``cg_max_iterations`` (or on the first call)."""
@@ -337,7 +354,7 @@ class PlateSolver:
 
             M = spla.LinearOperator(K_mod.shape, matvec=self._lu.solve, dtype=float)
             x, info = spla.cg(
-                K_mod, rhs, x0=self._lu.solve(rhs), rtol=self.cg_rtol, maxiter=self.cg_max_iterations, M=M,
+                K_mod, rhs, x0=self._lu.solve(rhs), rtol=tolerance, maxiter=self.cg_max_iterations, M=M,
                 callback=callback,
             )  # fmt: skip
             self.stats.cg_iterations += count[0]
