@@ -3,6 +3,7 @@
 Knows nothing of meshes or wear. SI units throughout; angles in degrees from the plate normal.
 """
 
+from .halfspace import HalfspaceContact, halfspace_contact
 from .impact import simulate_impact, simulate_impacts
 from .materials import Material, effective_modulus, effective_shear_modulus
 from .results import BatchResult, History, ImpactResult
@@ -11,12 +12,14 @@ from .theory import yield_velocity
 
 __all__ = [
     "BatchResult",
+    "HalfspaceContact",
     "History",
     "ImpactResult",
     "Material",
     "TabulatedLaw",
     "effective_modulus",
     "effective_shear_modulus",
+    "halfspace_contact",
     "simulate_impact",
     "simulate_impacts",
     "yield_velocity",
