@@ -177,6 +177,7 @@ def impact_on_plate(case, fe_plate, estimate: float, axis_x: float = 0.0, unload
     if vol > 0.0:
         profile *= wm.volume_m3 / vol
     p_in = _inside_contact(cycle.pressure, cycle.surface_r, cycle.contact_radius)
+    p_loading = _inside_contact(np.asarray(loading.pressure, float), cycle.surface_r, loading.contact_radius)
     return ComputedImpact(
         impact=impact,
         law=law,
@@ -189,6 +190,7 @@ def impact_on_plate(case, fe_plate, estimate: float, axis_x: float = 0.0, unload
         contact_radius=float(np.interp(d0 + d_star, loading.overlap, loading.contact_radius)),
         iterations=iterations,
         change=change,
+        peak_pressure_curve=(np.asarray(loading.force, float), p_loading.max(axis=1)),
     )
 
 
@@ -346,6 +348,7 @@ def repeat(case, spec: RepeatSpec, progress: Callable[[int, int], None] | None =
                 surface_depth=float(np.max(fe_plate.dent_depth + fe_plate.wear_depth)),
                 wear_peak_to_mean=last.wear.max_depth_m / profile_max if profile_max > 0 else 1.0,
                 shaken_down=bool(shaken),
+                max_pressure_at_first_force=last.peak_pressure_at(records[0].max_force if records else imp.max_force),
             )
         )
         if kind == "computed" and on_computed is not None:

@@ -59,7 +59,10 @@ class ImpactRecord:
     ``wear_volume`` (m³), ``wear_max_depth`` (m); after the row: ``max_plastic_strain`` ᾱ_max, ``dent_depth``
     (m, largest −u_z of the surface), ``total_wear_volume`` (m³), ``total_wear_max_depth`` (m, of the 2-D map),
     ``surface_depth`` (m, largest dent + axisymmetric wear of the FE surface), ``wear_peak_to_mean`` (2-D max
-    depth / azimuthal-average max depth of the impact), ``shaken_down``."""
+    depth / azimuthal-average max depth of the impact), ``shaken_down``, ``max_pressure_at_first_force`` (Pa, the
+    impact's FE peak pressure when its force passes the first impact's max force: the conforming-dent effect at
+    equal force, whereas ``max_pressure`` is at equal impact energy, where a re-impact on its stiffer, elastic
+    seat reaches a higher force; NaN if the force never gets there)."""
 
     first: int
     last: int
@@ -81,6 +84,7 @@ class ImpactRecord:
     surface_depth: float
     wear_peak_to_mean: float
     shaken_down: bool
+    max_pressure_at_first_force: float = float("nan")
 
 
 #: repeat.csv columns (record field → column name with units).
@@ -105,6 +109,7 @@ CSV_COLUMNS = {
     "surface_depth": "surface_depth_m",
     "wear_peak_to_mean": "wear_peak_to_azimuthal_mean",
     "shaken_down": "shaken_down",
+    "max_pressure_at_first_force": "max_pressure_at_first_max_force_Pa",
 }
 
 
@@ -113,7 +118,8 @@ class ComputedImpact:
     """One impact solved on the plate: ``impact`` (:class:`contact.ImpactResult`), ``law`` (shifted FE law),
     ``loading``/``unloading`` (fem results, overlaps from the original plane), ``first_contact`` δ₀ (m),
     ``wear`` (:class:`wear.WearMap`, x in the first impact's frame), ``wear_profile`` (m, azimuthal average on the
-    FE surface nodes), ``max_pressure`` (Pa), ``contact_radius`` (m), ``iterations``, ``change``."""
+    FE surface nodes), ``max_pressure`` (Pa), ``contact_radius`` (m), ``iterations``, ``change``,
+    ``peak_pressure_curve`` (force (N), FE peak pressure (Pa)) along the loading steps."""
 
     impact: ImpactResult
     law: TabulatedLaw
@@ -126,6 +132,16 @@ class ComputedImpact:
     contact_radius: float
     iterations: int
     change: float
+    peak_pressure_curve: tuple = ((), ())
+
+    def peak_pressure_at(self, force: float) -> float:
+        """FE peak pressure (Pa) when this impact's loading passes ``force`` (N), interpolated between the
+        loading steps; NaN beyond its largest force."""
+        f, p = (np.asarray(v, float) for v in self.peak_pressure_curve)
+        if f.size == 0 or force > f.max():
+            return float("nan")
+        f = np.maximum.accumulate(f)
+        return float(np.interp(force, f, p))
 
 
 @dataclass(frozen=True, eq=False)

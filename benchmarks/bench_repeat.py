@@ -1,0 +1,69 @@
+"""Benchmark of repeated impacts at one site (issue 6 §1; not a timed test): ``python benchmarks/bench_repeat.py``.
+
+The embedded default case (alumina ball R 2.5 mm on Ti-6Al-4V, 3 m/s at 30° from the normal, FE plate, wear on)
+hit ``--impacts`` times (default 10⁴, the issue's target: "10⁴ impacts in minutes") at the default cycle-jump
+fraction: wall time, impacts solved with the coupled FE impact, blocks, and the final state.
+
+``--fractions 0.025,0.05,0.1`` adds the cycle-jump study, side by side in the same run: the same sequence at each
+``surface_fraction`` (a block moves the surface by at most that × a²/R), each compared with the smallest fraction
+(the reference) on the final surface depth, wear volume, dent, normal restitution and peak pressure — the error the
+cycle jump costs against the time it saves.
+"""
+
+from __future__ import annotations
+
+import argparse
+import time
+import warnings
+
+from wear.app.run_case import load_run_case
+from wear.repeat import RepeatSpec, repeat
+
+QUANTITIES = {
+    "surface depth (m)": lambda r: r.records[-1].surface_depth,
+    "total wear volume (m^3)": lambda r: r.records[-1].total_wear_volume,
+    "dent depth (m)": lambda r: r.records[-1].dent_depth,
+    "normal restitution": lambda r: r.records[-1].normal_restitution,
+    "max pressure (Pa)": lambda r: r.records[-1].max_pressure,
+}
+
+
+def run(impacts: int, fraction: float):
+    case = load_run_case(None)
+    t0 = time.perf_counter()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        result = repeat(case, RepeatSpec(impacts=impacts, surface_fraction=fraction))
+    return result, time.perf_counter() - t0
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--impacts", type=int, default=10_000)
+    parser.add_argument("--fractions", default="", help="comma-separated surface fractions for the cycle-jump study")
+    args = parser.parse_args()
+    default = RepeatSpec().surface_fraction
+    fractions = sorted({float(f) for f in args.fractions.split(",") if f} | {default})
+    results = {}
+    for fraction in fractions if args.fractions else [default]:
+        result, wall = run(args.impacts, fraction)
+        results[fraction] = result
+        blocks = sum(r.kind == "block" for r in result.records)
+        print(
+            f"surface_fraction {fraction:g}: {args.impacts} impacts in {wall:.0f} s ({wall / 60:.1f} min), "
+            f"{result.computed} solved with the FE plate, {blocks} blocks, {wall / result.computed:.1f} s per "
+            f"solved impact; shakedown at impact {result.shakedown_impact}"
+        )
+        for note in result.notes:
+            print(f"  note: {note}")
+    reference = results[min(results)]
+    print(f"\nfinal state after {args.impacts} impacts (relative difference to surface_fraction {min(results):g}):")
+    print(f"{'quantity':28s}" + "".join(f"{f:>22g}" for f in results))
+    for name, get in QUANTITIES.items():
+        ref = get(reference)
+        cells = "".join(f"{get(r):>12.4g} ({(get(r) - ref) / ref:+6.1%})" for r in results.values())
+        print(f"{name:28s}{cells}")
+
+
+if __name__ == "__main__":
+    main()
