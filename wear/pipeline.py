@@ -373,6 +373,16 @@ def _impact(case: Case, ball: Material, plate: Material, **overrides) -> ImpactR
     return simulate_impact(**kwargs)
 
 
+def impact_wear(case: Case, impact: ImpactResult, fe_table=None):
+    """Stage ``wear``: the pressure history p(r, t) of ``impact`` (``case.wear.pressure``; ``fe_table`` the FE
+    (time s, r m, pressure Pa) table where it is "fe") and the wear map of Eq. 15 integrated over the moving
+    patch (m). Returns (:class:`wear.pressure.PressureHistory`, :class:`wear.WearMap`)."""
+    ph = pressure_history(impact, case.wear.pressure, fe=fe_table, limiting_pressure=case.impact.limiting_pressure)
+    wm = integrate_wear(ph, sliding_speed(impact, case.wear.speed), case.wear.law(),
+                        density=case.plate.material().density, points_across=case.wear.points_across)  # fmt: skip
+    return ph, wm
+
+
 def run(case: Case, progress: Callable[[str], None] | None = None) -> RunResult:
     """Run the whole chain for ``case`` (see the module docstring). ``progress(stage)`` is called as each stage
     starts ("impact", "fem", "coupling", "wear", "surface")."""
@@ -408,23 +418,7 @@ def run(case: Case, progress: Callable[[str], None] | None = None) -> RunResult:
             times["coupling"] = 0.0
             fe_table = coupling_module.pressure_table_one_way(fe)
 
-    def wear_stage():
-        ph = pressure_history(
-            impact,
-            case.wear.pressure,
-            fe=fe_table,
-            limiting_pressure=case.impact.limiting_pressure,
-        )
-        wm = integrate_wear(
-            ph,
-            sliding_speed(impact, case.wear.speed),
-            case.wear.law(),
-            density=plate.density,
-            points_across=case.wear.points_across,
-        )
-        return ph, wm
-
-    ph, wm = timed("wear", wear_stage)
+    ph, wm = timed("wear", impact_wear, case, impact, fe_table)
 
     def surface_stage():
         h = impact.history

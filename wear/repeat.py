@@ -58,8 +58,7 @@ from contact import ImpactResult, TabulatedLaw, effective_modulus
 
 from .coupling import UNLOAD_MARGIN, _first_yield_overlap, _inside_contact, _loading_path, _run_impact, fe_mesh
 from .coupling import pressure_table as _pressure_table
-from .integrate import WearMap, integrate_wear
-from .pressure import pressure_history, sliding_speed
+from .integrate import WearMap
 from .repeat_records import ComputedImpact, ImpactRecord, RepeatResult, RepeatSpec, _yield_strain
 
 __all__ = ["RepeatSpec", "ImpactRecord", "RepeatResult", "ComputedImpact", "impact_on_plate", "repeat",
@@ -206,9 +205,9 @@ def _unload(case, fe_plate, loading, max_overlap: float, steps: int):
 
 
 def _wear_map(case, impact: ImpactResult, table) -> WearMap:
-    ph = pressure_history(impact, case.wear.pressure, fe=table, limiting_pressure=case.impact.limiting_pressure)
-    return integrate_wear(ph, sliding_speed(impact, case.wear.speed), case.wear.law(),
-                          density=case.plate.material().density, points_across=case.wear.points_across)  # fmt: skip
+    from .pipeline import impact_wear
+
+    return impact_wear(case, impact, table)[1]
 
 
 class _Accumulator:
