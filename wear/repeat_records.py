@@ -22,7 +22,9 @@ class RepeatSpec:
     ``shakedown_tolerance`` (Δᾱ of an impact below this × Y/E counts as no new plastic strain);
     ``surface_fraction`` (a cycle-jump block moves the surface by at most this × a²/R); ``max_plastic_impacts``
     (impacts computed one by one before giving up on shakedown: then blocks continue, see the module docstring);
-    ``save_every`` (the CLI writes the FE mesh of every k-th computed impact, plus the first and the last; 0 = none)."""
+    ``save_every`` (the CLI writes the FE mesh of every k-th computed impact, plus the first and the last; 0 = none);
+    ``wear_smoothing`` (width of the Gaussian filter of the wear profile the FE surface takes, × the contact radius;
+    0 = off, which lets a node-scale ripple grow: see :func:`wear.repeat.smooth_profile`)."""
 
     impacts: int = 100
     geometry_update: bool = True
@@ -30,6 +32,7 @@ class RepeatSpec:
     surface_fraction: float = 0.05
     max_plastic_impacts: int = 20
     save_every: int = 1
+    wear_smoothing: float = 0.1
 
     def __post_init__(self) -> None:
         if isinstance(self.impacts, bool) or not isinstance(self.impacts, (int, np.integer)):
@@ -39,6 +42,8 @@ class RepeatSpec:
         check_bool("repeat.geometry_update", self.geometry_update)
         check_number("repeat.shakedown_tolerance", self.shakedown_tolerance, low=0.0, low_open=True, high=1.0,
                      what="shakedown tolerance (fraction of the yield strain)")  # fmt: skip
+        check_number("repeat.wear_smoothing", self.wear_smoothing, low=0.0, high=1.0,
+                     what="width of the wear profile's filter (fraction of the contact radius)")  # fmt: skip
         check_number("repeat.surface_fraction", self.surface_fraction, low=0.0, low_open=True, high=1.0,
                      what="surface change per cycle-jump block (fraction of a^2/R)")  # fmt: skip
         for name in ("max_plastic_impacts", "save_every"):
@@ -149,7 +154,9 @@ class RepeatResult:
     """``records`` (:class:`ImpactRecord` per computed impact or block), ``plate`` (the :class:`fem.Plate` after
     the last impact), ``wear`` (cumulative 2-D :class:`wear.WearMap` on the first impact's grid, padded),
     ``shakedown_impact`` (first impact with Δᾱ below the tolerance, or None), ``computed`` (number of impacts
-    solved), ``wall_time`` (s), ``notes``."""
+    solved), ``wall_time`` (s), ``notes``, ``axis_x`` (m: x of the FE axis, the dent centre, in the wear map's
+    frame), ``met_surface``: the surface the last computed impact met — (dent depth, axisymmetric wear depth) on
+    the FE surface nodes (m) and the 2-D wear map before it (None before the first impact's wear)."""
 
     case: Any
     spec: RepeatSpec
@@ -160,6 +167,8 @@ class RepeatResult:
     computed: int
     wall_time: float
     notes: list = field(default_factory=list)
+    axis_x: float = 0.0
+    met_surface: tuple = ()
 
     def columns(self) -> dict[str, list]:
         """repeat.csv columns (name with units → values; ``computed`` 1 for a solved impact, 0 for a block;

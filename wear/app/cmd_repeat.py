@@ -6,7 +6,8 @@ The case is a run case (``impactwear run``'s tables ``[ball]``, ``[plate]``, ``[
 worn surface, shakedown, cycle jump). Output folder (written atomically, see :mod:`wear.app.outputs`):
 
 - ``repeat.csv``: one row per computed impact or cycle-jump block (columns with units, see
-  :data:`wear.repeat_records.CSV_COLUMNS`); ``summary.json`` (case, [repeat], results, notes, wall time);
+  :data:`wear.repeat_records.CSV_COLUMNS`); ``summary.json`` (case, [repeat], results, notes, wall time, and
+  ``halfspace_check``: the last pressure against the half-space solution, :mod:`wear.repeat_check`);
 - ``repeat.pvd`` + ``frames/plate_NNNNNN.vtu``: the FE mesh after each saved computed impact (time = impact
   number; point data ``u``, ``wear_depth``, ``surface``; cell data ``equivalent_plastic_strain``, ``von_mises``);
 - ``wear_map.npz``: the cumulative 2-D wear map (``x``, ``y``, ``depth``, m); ``repeat.png`` (with
@@ -47,6 +48,9 @@ def _repeat_table() -> dict[str, Key]:
                                    high=100000),
         "save_every": Key(int, d["save_every"], "save the FE mesh of every k-th computed impact (0 = none)", low=0,
                           high=1e9),
+        "wear_smoothing": Key(float, d["wear_smoothing"],
+                              "width of the filter of the wear profile on the FE surface, fraction of the contact "
+                              "radius (0 = off)", low=0.0, high=1.0),
     }  # fmt: skip
 
 
@@ -120,6 +124,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
 def _table(summary: dict, out: str) -> str:
     first, last = summary["first_impact"], summary["last_computed_impact"]
     after = summary["after_last_impact"]
+    check = summary["halfspace_check"]
     rows = [
         ("impacts (computed one by one)", f"{summary['impacts']} ({summary['computed_impacts']})", ""),
         ("shakedown at impact", str(summary["shakedown_impact"]), ""),
@@ -127,6 +132,9 @@ def _table(summary: dict, out: str) -> str:
                                                       f"{last['normal_restitution']:.4g}", ""),
         ("max pressure first / last computed", f"{first['max_pressure'] / 1e9:.4g} / "
                                                 f"{last['max_pressure'] / 1e9:.4g}", "GPa"),
+        ("last computed: max pressure FE / half-space (FE surface) / half-space (2-D scar)",
+         f"{check['fe_max_pressure_Pa'] / 1e9:.4g} / {check['halfspace_axisymmetric_max_pressure_Pa'] / 1e9:.4g} / "
+         f"{check['halfspace_2d_scar_max_pressure_Pa'] / 1e9:.4g}", "GPa"),
         ("dent depth after the last impact", f"{after['dent_depth_m'] * 1e6:.4g}", "um"),
         ("wear: max depth / volume", f"{after['total_wear_max_depth_m'] * 1e6:.4g} um / "
                                      f"{after['total_wear_volume_m3']:.4g}", "m^3"),
@@ -142,6 +150,7 @@ def main(args: argparse.Namespace) -> int:
     case, spec, table = load_repeat_case(args.case, args.impacts)  # bad input raises here, before any output
 
     from wear.repeat import repeat
+    from wear.repeat_check import halfspace_check
 
     from .cmd_erode import write_pvd
     from .outputs import atomic_output_dir, to_jsonable, versions, write_csv, write_json, write_npz
@@ -184,6 +193,7 @@ def main(args: argparse.Namespace) -> int:
             wm = result.wear
             write_npz(out / "wear_map.npz", {"x": wm.x, "y": wm.y, "depth": wm.depth})
             summary = {"case": case.to_dict(), "repeat": table, "versions": versions(), **result.summary()}
+            summary["halfspace_check"] = halfspace_check(result)
             notes = list(dict.fromkeys(str(w.message) for w in caught)) + list(result.notes)
             summary["notes"] = notes
             write_json(out / "summary.json", summary)
