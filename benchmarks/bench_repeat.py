@@ -2,7 +2,8 @@
 
 The embedded default case (alumina ball R 2.5 mm on Ti-6Al-4V, 3 m/s at 30° from the normal, FE plate, wear on)
 hit ``--impacts`` times (default 10⁴, the issue's target: "10⁴ impacts in minutes") at the default cycle-jump
-fraction: wall time, impacts solved with the coupled FE impact, blocks, and the final state.
+fraction: wall time, impacts solved with the coupled FE impact, blocks, the final state, and the last computed
+impact's peak pressure against the half-space solution of the surface it met (:mod:`wear.repeat_check`).
 
 ``--fractions 0.025,0.05,0.1`` adds the cycle-jump study, side by side in the same run: the same sequence at each
 ``surface_fraction`` (a block moves the surface by at most that × a²/R), each compared with the smallest fraction
@@ -18,6 +19,7 @@ import warnings
 
 from wear.app.run_case import load_run_case
 from wear.repeat import RepeatSpec, repeat
+from wear.repeat_check import halfspace_check
 
 QUANTITIES = {
     "surface depth (m)": lambda r: r.records[-1].surface_depth,
@@ -56,6 +58,12 @@ def main() -> None:
         )
         for note in result.notes:
             print(f"  note: {note}")
+        check = halfspace_check(result)
+        print(
+            f"  last computed impact ({check['impact']}): peak pressure FE {check['fe_max_pressure_Pa']:.4g} Pa, "
+            f"half-space on the surface it met {check['halfspace_axisymmetric_max_pressure_Pa']:.4g} Pa "
+            f"(2-D worn scar: {check['halfspace_2d_scar_max_pressure_Pa']:.4g} Pa) at {check['force_N']:.4g} N"
+        )
     reference = results[min(results)]
     print(f"\nfinal state after {args.impacts} impacts (relative difference to surface_fraction {min(results):g}):")
     print(f"{'quantity':28s}" + "".join(f"{f:>22g}" for f in results))

@@ -306,3 +306,25 @@ def tabulated_law(quick: bool) -> list[Check]:
                  float(theory.thornton_restitution(5.0)), "Thornton 1997 closed form", b.normal_restitution[0], 5e-3)
     )  # fmt: skip
     return out
+
+
+@register("contact")
+def contact_halfspace(quick: bool) -> list[Check]:
+    """The half-space contact solver (contact.halfspace) on a sphere: peak pressure and approach against Hertz."""
+    from contact.halfspace import halfspace_contact
+
+    radius, e_star, force = 2.5e-3, 1.5e11, 200.0
+    a = float(theory.hertz_contact_radius_from_force(force, radius, e_star))
+    cells = 48 if quick else 128
+    spacing = 4.0 * a / cells
+    x = (np.arange(cells) - (cells - 1) / 2) * spacing
+    xx, yy = np.meshgrid(x, x)
+    sol = halfspace_contact((xx**2 + yy**2) / (2.0 * radius), spacing, force, e_star)
+    case = f"sphere R 2.5 mm, E* 150 GPa, 200 N, {cells // 4} cells across a"
+    src = "Hertz (Johnson 1985 §4.2)"
+    return [
+        relative("contact", "half-space solver: peak pressure", case, float(theory.hertz_peak_pressure(force, radius,
+                 e_star)), src, sol.max_pressure, 0.01, "Pa"),
+        relative("contact", "half-space solver: approach", case, float(theory.hertz_overlap(force, radius, e_star)),
+                 src, sol.approach, 0.01, "m"),
+    ]  # fmt: skip

@@ -176,3 +176,32 @@ def fem_elastic_plastic(quick: bool) -> list[Check]:
                   rms, 0.15, "RMS(p − Eq. 19)/p* over r ≤ a*", "Pa")
         )  # fmt: skip
     return out
+
+
+@register("fem")
+def fem_worn_surface(quick: bool) -> list[Check]:
+    """FE plate with a worn pit w = D(1 − r²/a₀²)², D = 0.5 a₀²/R (fem.Plate.move_surface), elastic, against the
+    half-space solution of the same gap and force (contact.halfspace, itself checked against Hertz)."""
+    from contact.halfspace import halfspace_contact
+
+    a0 = 0.01 * R
+    d0 = a0**2 / R
+    plate_material = _plate(None)
+    mesh = fem.plate_mesh(R, plate_material, 2.0 * d0, contact_elements=16 if quick else 32, yield_elements=10)
+    plate = fem.Plate(R, plate_material, 2.0 * d0, mesh=mesh)
+    r = plate.surface_r
+    plate.move_surface(0.5 * d0 * np.clip(1.0 - (r / a0) ** 2, 0.0, None) ** 2)
+    res = plate.load(plate.first_contact_overlap() + np.linspace(0.0, 1.0, 5)[1:] * d0)
+    cells = 128
+    spacing = 6.4 * a0 / cells
+    x = (np.arange(cells) - (cells - 1) / 2) * spacing
+    rr = np.hypot(*np.meshgrid(x, x))
+    gap = rr**2 / (2.0 * R) + 0.5 * d0 * np.clip(1.0 - (rr / a0) ** 2, 0.0, None) ** 2
+    bem = halfspace_contact(gap, spacing, float(res.force[-1]), E_STAR)
+    case = f"elastic {CASE}, worn pit 0.5 a₀²/R deep, a₀ wide"
+    src = "half-space BEM (Love 1929; Polonsky & Keer 1999), same gap and force"
+    return [
+        relative("fem", "peak pressure on a worn pit", case, bem.max_pressure, src, float(res.pressure[-1].max()),
+                 0.03, "Pa"),
+        relative("fem", "approach on a worn pit", case, bem.approach, src, float(res.overlap[-1]), 0.01, "m"),
+    ]  # fmt: skip
