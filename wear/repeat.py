@@ -25,20 +25,23 @@ impact).
 Δᾱ is below ``spec.shakedown_tolerance`` × the yield strain Y/E (default 1e-3 Y/E). From then on the impact
 response is elastic and repeats itself while the surface is unchanged; **cycle jump**: the last computed
 impact's wear is applied ``n`` times at once (one block), with n such that the surface moves by at most
-``spec.surface_fraction`` × the elastic approach a²/R of the last computed impact, then the coupled impact is
-computed again on the new surface (which also checks that it is still shaken down: if not, back to impact by
-impact). If no impact shakes down within ``spec.max_plastic_impacts`` computed one by one (e.g. wear keeps
-changing the seat, so each impact yields a little), the run says so and goes on with blocks anyway, one computed
-impact between blocks; the plastic strain increments of block impacts are then reported (the last computed
-one's) but not added to the FE plate.
+``spec.surface_fraction`` × the approach δ_e of the last computed impact (its max overlap from first contact),
+then the coupled impact is computed again on the new surface (which also checks that it is still shaken down: if
+not, back to impact by impact). If no impact shakes down within ``spec.max_plastic_impacts`` computed one by one
+(e.g. wear keeps changing the seat, so each impact yields a little), the run says so and goes on with blocks
+anyway, one computed impact between blocks; the plastic strain increments of block impacts are then reported
+(the last computed one's) but not added to the FE plate.
 
-Why a fraction of a²/R and not of a: the pressure is set by the gap profile between ball and surface inside the
-contact, whose scale is the elastic approach δ_e = a²/R (the sphere's gap at the contact edge of a flat is
-a²/2R). A surface change Δh = f·δ_e changes that profile, hence the pressure, by a fraction of order f; the
-contact radius is R/a ≈ 20–50 times longer than δ_e, so a fraction of it would let the wear change the pressure
-by order one between re-solves (measured: a worn depth of 0.14 δ_e lowers the max pressure of an elastic
-oblique impact by 20%, tests/test_repeat.py). Without geometry update the surface never changes after shakedown
-and the remaining impacts are one block (N impacts wear exactly N × one impact after shakedown).
+Why a fraction of the approach and not of a: the pressure is set by the gap profile between ball and surface
+inside the contact, whose scale is the approach δ_e (a²/R on a flat, where the sphere's gap at the contact edge is
+a²/2R; a²/R_eff on a conforming seat, 1/R_eff = 1/R − 1/R_seat, much less than a²/R). A surface change Δh = f·δ_e
+changes that profile, hence the pressure, by a fraction of order f; the contact radius is 20–50 times longer than
+δ_e, so a fraction of it would let the wear change the pressure by order one between re-solves (measured: a worn
+depth of 0.12 δ_e lowers the max pressure of an elastic oblique impact by 21%, tests/test_repeat.py). Measuring
+blocks by a²/R instead let them grow tenfold too large on the default case's conforming seat (after 10⁴ impacts
+δ_e = 0.07 a²/R): a block of 962 impacts turned an elastic re-impact (e_n 0.9993) into a yielding one (0.972).
+Without geometry update the surface never changes after shakedown and the remaining impacts are one block
+(N impacts wear exactly N × one impact after shakedown).
 
 SI units throughout.
 """
@@ -316,8 +319,8 @@ def repeat(case, spec: RepeatSpec, progress: Callable[[int, int], None] | None =
             count = spec.impacts - done
             change = float(last.wear_profile.max())
             if spec.geometry_update and change > 0.0:
-                elastic_approach = last.contact_radius**2 / case.ball.radius
-                count = max(1, min(count, int(spec.surface_fraction * elastic_approach / change)))
+                approach = last.impact.max_overlap  # from first contact: a²/R on a flat, less on a seat
+                count = max(1, min(count, int(spec.surface_fraction * approach / change)))
         if kind == "computed":
             alpha_before = fe_plate.state.alpha
             met = (fe_plate.dent_depth.copy(), fe_plate.wear_depth.copy(), None if acc is None else acc.map())

@@ -20,7 +20,8 @@ __all__ = ["CSV_COLUMNS", "ComputedImpact", "ImpactRecord", "RepeatResult", "Rep
 class RepeatSpec:
     """The repetition: ``impacts`` N (≥ 1); ``geometry_update`` (the wear moves the FE surface nodes);
     ``shakedown_tolerance`` (Δᾱ of an impact below this × Y/E counts as no new plastic strain);
-    ``surface_fraction`` (a cycle-jump block moves the surface by at most this × a²/R); ``max_plastic_impacts``
+    ``surface_fraction`` (a cycle-jump block moves the surface by at most this × the approach of the
+    last computed impact, its max overlap from first contact); ``max_plastic_impacts``
     (impacts computed one by one before giving up on shakedown: then blocks continue, see the module docstring);
     ``save_every`` (the CLI writes the FE mesh of every k-th computed impact, plus the first and the last; 0 = none);
     ``wear_smoothing`` (width of the Gaussian filter of the wear profile the FE surface takes, × the contact radius;
@@ -45,7 +46,7 @@ class RepeatSpec:
         check_number("repeat.wear_smoothing", self.wear_smoothing, low=0.0, high=1.0,
                      what="width of the wear profile's filter (fraction of the contact radius)")  # fmt: skip
         check_number("repeat.surface_fraction", self.surface_fraction, low=0.0, low_open=True, high=1.0,
-                     what="surface change per cycle-jump block (fraction of a^2/R)")  # fmt: skip
+                     what="surface change per cycle-jump block (fraction of the impact's approach)")  # fmt: skip
         for name in ("max_plastic_impacts", "save_every"):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, (int, np.integer)):

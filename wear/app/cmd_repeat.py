@@ -41,7 +41,8 @@ def _repeat_table() -> dict[str, Key]:
                                    "largest plastic strain increment of a shaken-down impact, over Y/E", low=0.0,
                                    low_open=True, high=1.0),
         "surface_fraction": Key(float, d["surface_fraction"],
-                                "surface change per cycle-jump block, fraction of the elastic approach a^2/R",
+                                "surface change per cycle-jump block, fraction of the impact's approach (max "
+                                "overlap from first contact)",
                                 low=0.0, low_open=True, high=1.0),
         "max_plastic_impacts": Key(int, d["max_plastic_impacts"],
                                    "impacts computed one by one before blocks go on without shakedown", low=1,
