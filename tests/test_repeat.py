@@ -272,3 +272,25 @@ def test_wear_profile_filter_follows_the_gaussian_transfer_function():
         assert kept == pytest.approx(expected, abs=0.01)
     even = smooth_profile(r, np.exp(-((r / 1e-4) ** 2)), sigma)
     assert even[1] == pytest.approx(even[0], rel=1e-3)  # zero slope on the axis
+
+
+def test_wear_accumulator_grows_with_the_scar():
+    """The cumulative 2-D map keeps the volume of a later impact whose map reaches past the first impact's padded
+    grid (the scar widens as the seat conforms): before, the wear outside was dropped. Reference: the volumes of the
+    maps added (Gaussian bumps, zero at their edges; bilinear transfer between grids of the same spacing)."""
+    from wear.integrate import _finish
+    from wear.repeat import _Accumulator
+
+    h = 1e-5
+
+    def bump(half_x: int, half_y: int, width: float):
+        x, y = np.arange(-half_x, half_x + 1) * h, np.arange(-half_y, half_y + 1) * h
+        depth = 1e-7 * np.exp(-(x[None, :] ** 2 + y[:, None] ** 2) / width**2)
+        return _finish(x, y, depth, 4430.0, 0.01)
+
+    small, large = bump(20, 20, 4 * h), bump(80, 80, 16 * h)
+    acc = _Accumulator(small)
+    acc.add(small, 3)
+    acc.add(large, 2)
+    assert acc.x[0] <= large.x[0] and acc.x[-1] >= large.x[-1] and acc.y[-1] >= large.y[-1]
+    assert acc.map().volume_m3 == pytest.approx(3 * small.volume_m3 + 2 * large.volume_m3, rel=1e-6)

@@ -248,7 +248,9 @@ def _wear_map(case, impact: ImpactResult, table) -> WearMap:
 
 
 class _Accumulator:
-    """Cumulative 2-D wear on a fixed grid: the first impact's grid padded by half its size on each side."""
+    """Cumulative 2-D wear on a grid of the first impact's spacing, at first its grid padded by half its size on each
+    side, extended (zeros) whenever a later impact's map reaches past it — the scar widens as the seat conforms
+    (contact radius 0.18 → 0.43 mm over 10⁴ impacts of the default case), and wear outside the grid would be lost."""
 
     def __init__(self, first: WearMap):
         h = first.spacing
@@ -260,8 +262,21 @@ class _Accumulator:
         self.depth = np.zeros((self.y.size, self.x.size))
         self.density = first.density
 
+    def _cover(self, wm: WearMap) -> None:
+        h = self.x[1] - self.x[0]
+        left = max(0, math.ceil((self.x[0] - wm.x[0]) / h - 1e-9))
+        right = max(0, math.ceil((wm.x[-1] - self.x[-1]) / h - 1e-9))
+        half = (self.y.size - 1) // 2
+        ny = max(half, math.ceil(max(abs(wm.y[0]), abs(wm.y[-1])) / h - 1e-9))
+        if left or right or ny > half:
+            self.x = self.x[0] + (np.arange(self.x.size + left + right) - left) * h
+            self.y = np.arange(-ny, ny + 1) * h
+            self.depth = np.pad(self.depth, ((ny - half, ny - half), (left, right)))
+
     def add(self, wm: WearMap, count: int) -> None:
         from scipy.interpolate import RegularGridInterpolator
+
+        self._cover(wm)
 
         f = RegularGridInterpolator((wm.y, wm.x), wm.depth, bounds_error=False, fill_value=0.0)
         yy, xx = np.meshgrid(self.y, self.x, indexing="ij")
