@@ -69,17 +69,19 @@ def plate_mesh(
     ball: Material | None = None,
     contact_elements: int | None = None,
     yield_elements: int | None = None,
+    growth: float = 1.0,
 ) -> MeshTri:
     """Mesh (m) for a path reaching ``max_overlap`` (m): the default mesh scaled to the expected
-    largest contact radius, or (if element counts are given) a mesh generated for this case with
-    :func:`fem.mesh.generate_mesh` (its yield box sized at the case's first-yield contact radius)."""
+    largest contact radius, or (if element counts are given, or ``growth`` > 1: a contact that will widen to
+    ``growth`` × that radius, see :func:`fem.mesh.generate_mesh`) a mesh generated for this case (its yield box
+    sized at the case's first-yield contact radius)."""
     radius = check_number("radius", radius, low=1e-6, high=10.0, units="m", what="ball radius")
     max_overlap = check_number("max_overlap", max_overlap, low=0.0, low_open=True, high=radius, units="m")
     _, e_star = _plate_model(plate, ball, 0.0)
     a_max = estimate_contact_radius(radius, e_star, plate, max_overlap)
-    if contact_elements is None and yield_elements is None:
+    if contact_elements is None and yield_elements is None and growth == 1.0:
         return default_mesh(a_max)
-    params = dict(DEFAULT_PARAMETERS)
+    params = dict(DEFAULT_PARAMETERS, growth=growth)
     if contact_elements is not None:
         params["contact_elements"] = contact_elements
     if yield_elements is not None:

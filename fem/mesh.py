@@ -69,6 +69,7 @@ def generate_mesh(
     yield_elements: int = 20,
     yield_radius_ratio: float = 1.0 / 5.5,
     grading: float = 0.5,
+    growth: float = 1.0,
 ) -> MeshTri:
     """Dimensionless mesh (unit length = largest contact radius a_max) of the block [0, L] × [−L, 0].
 
@@ -83,11 +84,17 @@ def generate_mesh(
         A/A_c = 0.94 w^1.146 gives a/a_y ≈ 5.4).
     grading : float
         Growth of h per unit distance outside the refined boxes (dimensionless).
+    growth : float
+        Largest contact radius the mesh must resolve later, over a_max (≥ 1): a box r ≤ 1.2·growth,
+        depth ≤ 0.8·growth with h = growth / contact_elements keeps as many elements across a contact grown to
+        growth·a_max as across a_max (repeated impacts: the seat conforms and the contact widens, 2.35× over 10⁴
+        impacts of the default case). 1 adds nothing.
     """
     contact_elements = int(check_number("contact_elements", contact_elements, low=2, high=1000))
     yield_elements = int(check_number("yield_elements", yield_elements, low=0, high=1000))
     ratio = check_number("yield_radius_ratio", yield_radius_ratio, low=0.0, low_open=True, high=1.0)
     grading = check_number("grading", grading, low=0.05, high=2.0)
+    growth = check_number("growth", growth, low=1.0, high=10.0)
     size = mesh_block_size(contact_elements)
     h_contact = 1.0 / contact_elements
     h_yield = ratio / yield_elements if yield_elements else h_contact
@@ -96,7 +103,9 @@ def generate_mesh(
         # ∞-norm distance outside each box, scaled so the boxes have the stated extents
         d_contact = np.maximum(np.maximum(r - 1.2, depth - 0.8), 0.0)
         d_yield = np.maximum(np.maximum(r - 1.2 * ratio, depth - 1.0 * ratio), 0.0)
-        return np.minimum(h_contact + grading * d_contact, h_yield + grading * d_yield)
+        d_growth = np.maximum(np.maximum(r - 1.2 * growth, depth - 0.8 * growth), 0.0)
+        h = np.minimum(h_contact + grading * d_contact, h_yield + grading * d_yield)
+        return np.minimum(h, growth * h_contact + grading * d_growth) if growth > 1.0 else h
 
     mesh = MeshTri.init_tensor(np.array([0.0, size]), np.array([-size, 0.0]))
     for _ in range(40):

@@ -47,3 +47,25 @@ def test_user_mesh_file_with_boundaries_is_used(tmp_path):
     m.save(str(path))
     loaded = load_mesh(path)
     assert loaded.p.shape == m.p.shape
+
+
+def test_growth_box_keeps_the_contact_resolution_of_a_widened_contact():
+    """generate_mesh(growth=g): the surface elements out to r = 1.2 g (units of a_max) are no larger than
+    g / contact_elements, so a contact grown to g·a_max has as many elements across as the first one (the issue's
+    rule of ≥ 30 across the contact, scaled); growth = 1 is the mesh without the box."""
+    import numpy as np
+
+    from fem.mesh import generate_mesh
+
+    plain = generate_mesh(contact_elements=8, yield_elements=4)
+    grown = generate_mesh(contact_elements=8, yield_elements=4, growth=3.0)
+    assert np.array_equal(generate_mesh(contact_elements=8, yield_elements=4, growth=1.0).p, plain.p)
+
+    def largest_surface_facet(mesh, r_max):
+        facets = mesh.facets[:, mesh.boundaries["surface"]]
+        r0, r1 = mesh.p[0, facets[0]], mesh.p[0, facets[1]]
+        inside = np.maximum(r0, r1) <= r_max
+        return float(np.max(np.abs(r1 - r0)[inside]))
+
+    assert largest_surface_facet(grown, 3.6) <= 3.0 / 8 * (1 + 1e-9)
+    assert largest_surface_facet(plain, 3.6) > 3.0 / 8  # the graded mesh is coarser there

@@ -56,16 +56,17 @@ __all__ = [
 UNLOAD_MARGIN = 1e-3
 
 
-def fe_mesh(case, ball: Material, plate: Material, max_overlap: float):
+def fe_mesh(case, ball: Material, plate: Material, max_overlap: float, growth: float = 1.0):
     """The FE mesh for a path reaching ``max_overlap`` (m): fem's default mesh scaled to it, or with
     ``fem.mesh_scale`` ≠ 1 a generated mesh with fem's default element counts across the contact and first-yield
-    radii divided by ``mesh_scale``."""
+    radii divided by ``mesh_scale``; ``growth``: the contact will widen to that × its first radius
+    (:func:`fem.mesh.generate_mesh`)."""
     import fem
     from fem.mesh import DEFAULT_PARAMETERS
 
     ball_arg = None if ball.is_rigid else ball
     if case.fem.mesh_scale == 1.0:
-        return fem.plate_mesh(case.ball.radius, plate, max_overlap, ball_arg)
+        return fem.plate_mesh(case.ball.radius, plate, max_overlap, ball_arg, growth=growth)
     scale = case.fem.mesh_scale
     return fem.plate_mesh(
         case.ball.radius,
@@ -74,6 +75,7 @@ def fe_mesh(case, ball: Material, plate: Material, max_overlap: float):
         ball_arg,
         contact_elements=max(6, round(DEFAULT_PARAMETERS["contact_elements"] / scale)),
         yield_elements=max(4, round(DEFAULT_PARAMETERS["yield_elements"] / scale)),
+        growth=growth,
     )
 
 
