@@ -60,9 +60,9 @@ def main() -> None:
             print(f"  note: {note}")
         check = halfspace_check(result)
         print(
-            f"  last computed impact ({check['impact']}): peak pressure FE {check['fe_max_pressure_Pa']:.4g} Pa, "
-            f"half-space on the surface it met {check['halfspace_axisymmetric_max_pressure_Pa']:.4g} Pa "
-            f"(2-D worn scar: {check['halfspace_2d_scar_max_pressure_Pa']:.4g} Pa) at {check['force_N']:.4g} N"
+            f"  last computed impact ({check['impact']}, Δᾱ {check['plastic_strain_increment']:.2g}): peak pressure "
+            f"FE {check['fe_max_pressure_Pa']:.4g} Pa, half-space on the surface it met "
+            f"{check['halfspace_max_pressure_Pa']:.4g} Pa at {check['force_N']:.4g} N"
         )
     reference = results[min(results)]
     print(f"\nfinal state after {args.impacts} impacts (relative difference to surface_fraction {min(results):g}):")

@@ -342,7 +342,7 @@ def repeat(case, spec: RepeatSpec, progress: Callable[[int, int], None] | None =
                 count = max(1, min(count, int(spec.surface_fraction * approach / change)))
         if kind == "computed":
             alpha_before = fe_plate.state.alpha
-            met = (fe_plate.dent_depth.copy(), fe_plate.wear_depth.copy(), None if acc is None else acc.map())
+            met = (fe_plate.dent_depth.copy(), fe_plate.wear_depth.copy())
             last = impact_on_plate(case, fe_plate, d_est, axis_x, smoothing=spec.wear_smoothing)
             d_est = last.impact.max_overlap
             computed += 1

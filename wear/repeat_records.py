@@ -157,7 +157,7 @@ class RepeatResult:
     ``shakedown_impact`` (first impact with Δᾱ below the tolerance, or None), ``computed`` (number of impacts
     solved), ``wall_time`` (s), ``notes``, ``axis_x`` (m: x of the FE axis, the dent centre, in the wear map's
     frame), ``met_surface``: the surface the last computed impact met — (dent depth, axisymmetric wear depth) on
-    the FE surface nodes (m) and the 2-D wear map before it (None before the first impact's wear)."""
+    the FE surface nodes (m)."""
 
     case: Any
     spec: RepeatSpec
