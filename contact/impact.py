@@ -18,7 +18,7 @@ from .results import BatchResult, History, ImpactResult
 from .tabulated import TabulatedLaw
 from .validation import check_array, check_bool, check_choice, check_number
 
-__all__ = ["simulate_impact", "simulate_impacts", "NORMAL_MODELS", "TANGENTIAL_MODELS", "SCHEMES"]
+__all__ = ["simulate_impact", "simulate_impacts", "ForceLawRangeError", "NORMAL_MODELS", "TANGENTIAL_MODELS", "SCHEMES"]
 
 NORMAL_MODELS = {"hertz": laws.HERTZ, "thornton": laws.THORNTON, "tabulated": laws.TABULATED}
 TANGENTIAL_MODELS = {"hdd": 2.0 / 3.0, "mindlin": 1.0}
@@ -90,6 +90,11 @@ def _setup(radius, ball, plate, restitution, normal_model, tangential_model, lim
         prm[laws.P_FY] = prm[laws.P_HERTZ_K] * d_y**1.5
     tab = laws.tabulated_arrays(force_law if model == "tabulated" else None)
     return radius, ball, plate, restitution, model, e_star, mass, p_y, prm, tab
+
+
+class ForceLawRangeError(ValueError):
+    """The overlap left the range a tabulated ``force_law`` covers (beyond its loading curve, or unloading from
+    beyond its last unloading curve): a caller that builds the table can extend it and run again."""
 
 
 _ERRORS = {
@@ -198,7 +203,8 @@ def simulate_impacts(
         i = int(np.flatnonzero(errors)[0])
         why = _ERRORS[errors[i]].format(load=tab[0][0, -1], unload=tab[1][-1], steps=int(max_steps[i]))
         name = "force_law" if errors[i] != laws.ERR_MAX_STEPS else "time_step"
-        raise ValueError(f"{name}: impact {i} (speed={speed[i]:g} m/s, angle={angle[i]:g} deg): {why}")
+        error = ValueError if errors[i] == laws.ERR_MAX_STEPS else ForceLawRangeError
+        raise error(f"{name}: impact {i} (speed={speed[i]:g} m/s, angle={angle[i]:g} deg): {why}")
     hist = None
     if histories:
         hist = []

@@ -107,8 +107,11 @@ def test_tabulated_hertz_table_matches_hertz_closed_form():
 
 
 def test_tabulated_beyond_table_is_an_error():
-    # Documented behaviour: no extrapolation beyond the table; the error names force_law.
+    # Documented behaviour: no extrapolation beyond the table; the error names force_law, and is the ValueError
+    # subclass a table-building caller (wear.repeat) catches to extend its table.
+    from contact.impact import ForceLawRangeError
+
     e_star = effective_modulus(BALL, RIGID)
     law = _thornton_table(e_star, theory.default_limiting_pressure(BALL, RIGID), R, dmax_table=3e-7)
-    with pytest.raises(ValueError, match="force_law"):
+    with pytest.raises(ForceLawRangeError, match="force_law: .*beyond the loading curve"):
         simulate_impact(R, BALL, RIGID, 5.0, 0.0, 0.0, normal_model="tabulated", force_law=law)

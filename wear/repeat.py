@@ -57,11 +57,13 @@ from typing import Any
 
 import numpy as np
 
-from contact import ImpactResult, TabulatedLaw, effective_modulus
+from contact import TabulatedLaw, effective_modulus
+from contact.impact import ForceLawRangeError
 
 from .coupling import UNLOAD_MARGIN, _first_yield_overlap, _inside_contact, _loading_path, _run_impact, fe_mesh
 from .coupling import pressure_table as _pressure_table
 from .integrate import WearMap
+from .pipeline import impact_wear
 from .repeat_records import ComputedImpact, ImpactRecord, RepeatResult, RepeatSpec, _yield_strain
 
 __all__ = ["RepeatSpec", "ImpactRecord", "RepeatResult", "ComputedImpact", "impact_on_plate", "repeat",
@@ -179,11 +181,9 @@ def impact_on_plate(case, fe_plate, estimate: float, axis_x: float = 0.0, unload
         law = _law(loading, d0, e_star=e_star)
         try:
             impact = _run_impact(case, ball, plate, law)
-        except ValueError as exc:
+        except ForceLawRangeError:
             # the engine stops where the overlap leaves the table: after a cycle-jump block the surface (hence the
             # depth an impact reaches) can change by more than the overshoot allows for
-            if "beyond the loading curve" not in str(exc):
-                raise
             target *= 1.5
             continue
         if impact.max_overlap * (1.0 + 2.0 * UNLOAD_MARGIN) < float(law.loading_overlap[-1]):
@@ -204,7 +204,7 @@ def impact_on_plate(case, fe_plate, estimate: float, axis_x: float = 0.0, unload
             break
     cycle = _fe_cycle(loading, unloading, d0, d0 + d_star)
     table = _pressure_table(cycle, impact)
-    wm = _wear_map(case, impact, table)
+    wm = impact_wear(case, impact, table)[1]
     # the ball flies d0·V_t/V_n along x before it touches the dented surface: same spot, shifted first contact
     v_n = case.impact.speed * math.cos(math.radians(case.impact.angle))
     v_t = case.impact.speed * math.sin(math.radians(case.impact.angle))
@@ -243,12 +243,6 @@ def _unload(case, fe_plate, loading, max_overlap: float, steps: int):
         return fe_plate.unload(loading, max_overlap, steps=steps)
     except fem.ConvergenceError:
         return fe_plate.unload(loading, max_overlap, steps=2 * steps)
-
-
-def _wear_map(case, impact: ImpactResult, table) -> WearMap:
-    from .pipeline import impact_wear
-
-    return impact_wear(case, impact, table)[1]
 
 
 class _Accumulator:
