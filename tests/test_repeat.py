@@ -181,6 +181,23 @@ def test_with_geometry_update_a_later_impact_meets_lower_pressure():
     assert check["fe_max_pressure_Pa"] == pytest.approx(check["halfspace_max_pressure_Pa"], rel=0.03)
 
 
+def test_elastic_response_after_shakedown_is_the_elastic_plastic_fe():
+    """After a shaken-down impact the next computed impact is solved on the plate's elastic response (fem.
+    elastic_reload) instead of the elastic–plastic FE: on an elastic plate the two are the same discrete solution
+    (tests/test_fem_reload.py), so every record agrees; the worn-surface pressure of the elastic path is checked
+    against the half-space solution in test_with_geometry_update_a_later_impact_meets_lower_pressure."""
+    case = _case(1.0, angle=30.0, elastic=True, scale=4.0)
+    fast = repeat(case, RepeatSpec(impacts=4, geometry_update=True))
+    full = repeat(case, RepeatSpec(impacts=4, geometry_update=True, elastic_after_shakedown=False))
+    assert [r.elastic_response for r in fast.records if r.kind == "computed"] == [False, True]
+    assert fast.elastic_computed == 1 and full.elastic_computed == 0
+    for a, b in zip(fast.records, full.records, strict=True):
+        assert (a.first, a.count) == (b.first, b.count)
+        for name in ("max_pressure", "max_force", "wear_volume", "contact_radius", "surface_depth"):
+            assert getattr(a, name) == pytest.approx(getattr(b, name), rel=1e-4), name
+        assert a.normal_restitution == pytest.approx(b.normal_restitution, abs=1e-6)
+
+
 @pytest.mark.parametrize(
     "kwargs, text",
     [
@@ -193,6 +210,7 @@ def test_with_geometry_update_a_later_impact_meets_lower_pressure():
         ({"geometry_update": "yes"}, "repeat.geometry_update"),
         ({"save_every": -1}, "repeat.save_every=-1"),
         ({"max_plastic_impacts": 0}, "repeat.max_plastic_impacts=0"),
+        ({"elastic_after_shakedown": 1}, "repeat.elastic_after_shakedown"),
     ],
 )
 def test_bad_repeat_spec_names_the_parameter(kwargs, text):

@@ -66,8 +66,8 @@ from .integrate import WearMap
 from .pipeline import impact_wear
 from .repeat_records import ComputedImpact, ImpactRecord, RepeatResult, RepeatSpec, _yield_strain
 
-__all__ = ["RepeatSpec", "ImpactRecord", "RepeatResult", "ComputedImpact", "impact_on_plate", "repeat",
-           "azimuthal_average", "smooth_profile"]  # fmt: skip
+__all__ = ["RepeatSpec", "ImpactRecord", "RepeatResult", "ComputedImpact", "impact_on_plate",
+           "elastic_impact_on_plate", "repeat", "azimuthal_average", "smooth_profile"]  # fmt: skip
 
 #: Azimuths of the azimuthal average of the wear map.
 AZIMUTHS = 64
@@ -202,6 +202,57 @@ def impact_on_plate(case, fe_plate, estimate: float, axis_x: float = 0.0, unload
         change = abs(overlaps[-1] - overlaps[-2]) / overlaps[-2]
         if change < case.fem.tolerance:
             break
+    return _finish(case, fe_plate, impact, law, loading, unloading, d0, d_star, axis_x, smoothing, iterations,
+                   change)  # fmt: skip
+
+
+def elastic_impact_on_plate(case, fe_plate, estimate: float, tolerance: float, axis_x: float = 0.0,
+                            smoothing: float = 0.1):  # fmt: skip
+    """One impact of ``case`` on the FE plate's elastic response (:func:`fem.elastic_reload`: its state is not
+    changed, the reloading and unloading retrace each other), or None when the elastic field yields: a return
+    mapping of any loading step up to the impact's maximum gives Δᾱ > ``tolerance`` (then the plastic problem must
+    be solved, :func:`impact_on_plate`). Arguments as :func:`impact_on_plate`. Exact, on the FE's own mesh, for a
+    plate that does not yield (tests/test_repeat_elastic.py: equal to the elastic–plastic FE to 1e-6)."""
+    import fem
+
+    ball, plate = case.ball.material(), case.plate.material()
+    d0 = fe_plate.first_contact_overlap()
+    target = (1.0 + case.fem.overshoot) * estimate
+    for _ in range(4):
+        reload = fem.elastic_reload(fe_plate, d0 + _loading_path(target, case.fem.load_steps, None))
+        loading = reload.result
+        law = _law(loading, d0, e_star=fe_plate.effective_modulus)
+        try:
+            impact = _run_impact(case, ball, plate, law)
+        except ForceLawRangeError:
+            target *= 1.5
+            continue
+        if impact.max_overlap * (1.0 + 2.0 * UNLOAD_MARGIN) < float(law.loading_overlap[-1]):
+            break
+        target = 1.3 * impact.max_overlap
+    else:
+        return None
+    d_star = impact.max_overlap * (1.0 + UNLOAD_MARGIN)
+    # steps past the impact's maximum were never reached: their trial plastic strain does not count
+    reached = np.asarray(loading.overlap) <= d0 + d_star
+    if float(np.max(reload.trial_plastic_strain_increment[reached], initial=0.0)) > tolerance:
+        return None
+    steps = case.fem.unload_steps
+    down = np.linspace(d0 + d_star, max(0.0, d0 - 0.05 * d_star), steps + 1)
+    unloading = fem.elastic_reload(fe_plate, down, check_yield=False).result
+    law = _law(loading, d0, unloading)
+    first = impact.max_overlap
+    impact = _run_impact(case, ball, plate, law)
+    change = abs(impact.max_overlap - first) / first
+    solved = _finish(case, fe_plate, impact, law, loading, unloading, d0, d_star, axis_x, smoothing, 2, change)
+    trial = float(np.max(reload.trial_plastic_strain_increment[reached], initial=0.0))
+    return replace(solved, elastic=True, trial_increment=trial)
+
+
+def _finish(case, fe_plate, impact, law, loading, unloading, d0, d_star, axis_x, smoothing, iterations,
+            change) -> ComputedImpact:  # fmt: skip
+    """The solved impact's pressure table, wear map (shifted to the first impact's frame) and the smoothed,
+    azimuthally averaged wear profile on the FE surface nodes."""
     cycle = _fe_cycle(loading, unloading, d0, d0 + d_star)
     table = _pressure_table(cycle, impact)
     wm = impact_wear(case, impact, table)[1]
@@ -318,7 +369,7 @@ def repeat(case, spec: RepeatSpec, progress: Callable[[int, int], None] | None =
     records: list[ImpactRecord] = []
     notes: list[str] = []
     acc = None
-    done, computed, shakedown, plastic_run = 0, 0, None, 0
+    done, computed, elastic, shakedown, plastic_run = 0, 0, 0, None, 0
     last = None
     shaken = False
     gave_up = False  # no shakedown within max_plastic_impacts: blocks go on, one computed impact between them
@@ -337,10 +388,15 @@ def repeat(case, spec: RepeatSpec, progress: Callable[[int, int], None] | None =
         if kind == "computed":
             alpha_before = fe_plate.state.alpha
             met = (fe_plate.dent_depth.copy(), fe_plate.wear_depth.copy())
-            last = impact_on_plate(case, fe_plate, d_est, axis_x, smoothing=spec.wear_smoothing)
+            # a shaken-down plate answers elastically: no plastic problem to solve unless the elastic field yields
+            attempt = None
+            if shaken and spec.elastic_after_shakedown:
+                attempt = elastic_impact_on_plate(case, fe_plate, d_est, tolerance, axis_x, spec.wear_smoothing)
+                elastic += attempt is not None
+            last = attempt or impact_on_plate(case, fe_plate, d_est, axis_x, smoothing=spec.wear_smoothing)
             d_est = last.impact.max_overlap
             computed += 1
-            increment = float(np.max(fe_plate.state.alpha - alpha_before))
+            increment = last.trial_increment if last.elastic else float(np.max(fe_plate.state.alpha - alpha_before))
             shaken = increment <= tolerance
             if shaken and shakedown is None:
                 shakedown = done + 1
@@ -399,6 +455,7 @@ def repeat(case, spec: RepeatSpec, progress: Callable[[int, int], None] | None =
                 wear_peak_to_mean=last.wear.max_depth_m / profile_max if profile_max > 0 else 1.0,
                 shaken_down=bool(shaken),
                 max_pressure_at_first_force=last.peak_pressure_at(records[0].max_force if records else imp.max_force),
+                elastic_response=last.elastic,
             )
         )
         if kind == "computed" and on_computed is not None:
@@ -408,4 +465,4 @@ def repeat(case, spec: RepeatSpec, progress: Callable[[int, int], None] | None =
     if shakedown is None:
         notes.append(f"no impact without new plastic strain (tolerance Δᾱ <= {tolerance:.3g})")
     return RepeatResult(case, spec, records, fe_plate, acc.map(), shakedown, computed,
-                        time.perf_counter() - t_start, notes, axis_x, met)  # fmt: skip
+                        time.perf_counter() - t_start, notes, axis_x, met, elastic)  # fmt: skip

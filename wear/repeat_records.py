@@ -25,7 +25,9 @@ class RepeatSpec:
     (impacts computed one by one before giving up on shakedown: then blocks continue, see the module docstring);
     ``save_every`` (the CLI writes the FE mesh of every k-th computed impact, plus the first and the last; 0 = none);
     ``wear_smoothing`` (width of the Gaussian filter of the wear profile the FE surface takes, × the contact radius;
-    0 = off, which lets a node-scale ripple grow: see :func:`wear.repeat.smooth_profile`)."""
+    0 = off, which lets a node-scale ripple grow: see :func:`wear.repeat.smooth_profile`);
+    ``elastic_after_shakedown`` (after a shaken-down impact the next computed one is solved on the plate's elastic
+    response, :func:`fem.elastic_reload`, unless its elastic field yields; false: always the elastic–plastic FE)."""
 
     impacts: int = 100
     geometry_update: bool = True
@@ -34,6 +36,7 @@ class RepeatSpec:
     max_plastic_impacts: int = 20
     save_every: int = 1
     wear_smoothing: float = 0.1
+    elastic_after_shakedown: bool = True
 
     def __post_init__(self) -> None:
         if isinstance(self.impacts, bool) or not isinstance(self.impacts, (int, np.integer)):
@@ -41,6 +44,7 @@ class RepeatSpec:
                              "integer in [1, 1e9]")  # fmt: skip
         check_number("repeat.impacts", self.impacts, low=1, high=1e9, what="number of impacts")
         check_bool("repeat.geometry_update", self.geometry_update)
+        check_bool("repeat.elastic_after_shakedown", self.elastic_after_shakedown)
         check_number("repeat.shakedown_tolerance", self.shakedown_tolerance, low=0.0, low_open=True, high=1.0,
                      what="shakedown tolerance (fraction of the yield strain)")  # fmt: skip
         check_number("repeat.wear_smoothing", self.wear_smoothing, low=0.0, high=1.0,
@@ -68,7 +72,8 @@ class ImpactRecord:
     depth / azimuthal-average max depth of the impact), ``shaken_down``, ``max_pressure_at_first_force`` (Pa, the
     impact's FE peak pressure when its force passes the first impact's max force: the conforming-dent effect at
     equal force, whereas ``max_pressure`` is at equal impact energy, where a re-impact on its stiffer, elastic
-    seat reaches a higher force; NaN if the force never gets there)."""
+    seat reaches a higher force; NaN if the force never gets there), ``elastic_response`` (the impact was solved on
+    the plate's elastic response, :func:`wear.repeat.elastic_impact_on_plate`; for a block: its impacts')."""
 
     first: int
     last: int
@@ -91,6 +96,7 @@ class ImpactRecord:
     wear_peak_to_mean: float
     shaken_down: bool
     max_pressure_at_first_force: float = float("nan")
+    elastic_response: bool = False
 
 
 #: repeat.csv columns (record field → column name with units).
@@ -116,6 +122,7 @@ CSV_COLUMNS = {
     "wear_peak_to_mean": "wear_peak_to_azimuthal_mean",
     "shaken_down": "shaken_down",
     "max_pressure_at_first_force": "max_pressure_at_first_max_force_Pa",
+    "elastic_response": "elastic_response",
 }
 
 
@@ -125,7 +132,9 @@ class ComputedImpact:
     ``loading``/``unloading`` (fem results, overlaps from the original plane), ``first_contact`` δ₀ (m),
     ``wear`` (:class:`wear.WearMap`, x in the first impact's frame), ``wear_profile`` (m, azimuthal average on the
     FE surface nodes), ``max_pressure`` (Pa), ``contact_radius`` (m), ``iterations``, ``change``,
-    ``peak_pressure_curve`` (force (N), FE peak pressure (Pa)) along the loading steps."""
+    ``peak_pressure_curve`` (force (N), FE peak pressure (Pa)) along the loading steps, ``elastic`` (solved on the
+    plate's elastic response, the plate's state unchanged) and then ``trial_increment``, the largest Δᾱ a return
+    mapping of its elastic field gives (below the shakedown tolerance)."""
 
     impact: ImpactResult
     law: TabulatedLaw
@@ -139,6 +148,8 @@ class ComputedImpact:
     iterations: int
     change: float
     peak_pressure_curve: tuple = ((), ())
+    elastic: bool = False
+    trial_increment: float = 0.0
 
     def peak_pressure_at(self, force: float) -> float:
         """FE peak pressure (Pa) when this impact's loading passes ``force`` (N), interpolated between the
@@ -157,7 +168,8 @@ class RepeatResult:
     ``shakedown_impact`` (first impact with Δᾱ below the tolerance, or None), ``computed`` (number of impacts
     solved), ``wall_time`` (s), ``notes``, ``axis_x`` (m: x of the FE axis, the dent centre, in the wear map's
     frame), ``met_surface``: the surface the last computed impact met — (dent depth, axisymmetric wear depth) on
-    the FE surface nodes (m)."""
+    the FE surface nodes (m), ``elastic_computed``: how many of the computed impacts were solved on the plate's
+    elastic response (after shakedown)."""
 
     case: Any
     spec: RepeatSpec
@@ -170,6 +182,7 @@ class RepeatResult:
     notes: list = field(default_factory=list)
     axis_x: float = 0.0
     met_surface: tuple = ()
+    elastic_computed: int = 0
 
     def columns(self) -> dict[str, list]:
         """repeat.csv columns (name with units → values; ``computed`` 1 for a solved impact, 0 for a block;
@@ -187,6 +200,7 @@ class RepeatResult:
         return {
             "impacts": self.spec.impacts,
             "computed_impacts": self.computed,
+            "elastic_computed_impacts": self.elastic_computed,
             "rows": len(self.records),
             "shakedown_impact": self.shakedown_impact,
             "shakedown_tolerance_strain": self.spec.shakedown_tolerance * _yield_strain(self.case),

@@ -52,6 +52,9 @@ def _repeat_table() -> dict[str, Key]:
         "wear_smoothing": Key(float, d["wear_smoothing"],
                               "width of the filter of the wear profile on the FE surface, fraction of the contact "
                               "radius (0 = off)", low=0.0, high=1.0),
+        "elastic_after_shakedown": Key(bool, d["elastic_after_shakedown"],
+                                       "after a shaken-down impact, solve the next on the plate's elastic response "
+                                       "unless its elastic field yields"),
     }  # fmt: skip
 
 
@@ -127,7 +130,8 @@ def _table(summary: dict, out: str) -> str:
     after = summary["after_last_impact"]
     check = summary["halfspace_check"]
     rows = [
-        ("impacts (computed one by one)", f"{summary['impacts']} ({summary['computed_impacts']})", ""),
+        ("impacts (computed; of them elastic)",
+         f"{summary['impacts']} ({summary['computed_impacts']}; {summary['elastic_computed_impacts']})", ""),
         ("shakedown at impact", str(summary["shakedown_impact"]), ""),
         ("normal restitution first / last computed", f"{first['normal_restitution']:.4g} / "
                                                       f"{last['normal_restitution']:.4g}", ""),
