@@ -128,6 +128,7 @@ class _Run:
             else:
                 regime = "surface-plastic"
         return {
+            "reactions": reactions,
             "force": force,
             "contact_radius": a,
             "pressure": pressure,
@@ -137,7 +138,11 @@ class _Run:
             "regime": regime,
         }
 
-    def run(self, overlaps: np.ndarray, start: PlateState | None = None, keep: bool = False, times=None):
+    def run(self, overlaps: np.ndarray, start: PlateState | None = None, keep: bool = False, times=None,
+            predictor: bool = False):  # fmt: skip
+        """States along ``overlaps`` (m) from ``start`` (None: the virgin plate). ``predictor`` (only with a
+        ``start``): try each step as an elastic step (:class:`fem.reload.SurfaceCompliance`) and keep it when its
+        return mapping yields nowhere (then it is the FE solution, no Newton needed); else a Newton increment."""
         s = self.solver
         state = s.initial_state() if start is None else start
         previous = None
@@ -145,10 +150,25 @@ class _Run:
         yield_point = None
         last_elastic = None
         reach = 0.0 if start is None else self.reach
+        compliance = reactions = None
+        if predictor and start is not None and len(overlaps):
+            from .reload import SurfaceCompliance, candidate_nodes
+
+            nodes = candidate_nodes(s, state, float(np.max(overlaps)))
+            if nodes.size:
+                compliance = SurfaceCompliance(s, nodes)
+                reactions = s.reactions(state) * state.active
         for overlap in overlaps:
-            new = s.advance(state, previous, float(overlap))
+            new = None
+            if compliance is not None:
+                trial, trial_reactions, _, increment, outside = compliance.step(state, reactions, float(overlap))
+                if increment == 0.0 and not outside:
+                    new = trial
+            if new is None:
+                new = s.advance(state, previous, float(overlap))
             previous, state = state, new
             row = self.measure(state, reach)
+            reactions = row.pop("reactions")
             reach = max(reach, row["contact_radius"])
             row["iterations"] = state.iterations
             row["overlap"] = state.overlap

@@ -50,12 +50,14 @@ class Plate:
     ``ball`` None (rigid) or a Material; ``mesh`` None (:func:`fem.plate_mesh`) or a :class:`skfem.MeshTri` with
     boundaries ``axis``, ``surface``, ``bottom``; ``hardening`` H (Pa); ``rtol`` Newton tolerance (as
     :func:`fem.indent`); ``taper_depth`` (m) over which the wear displacement of the vertices fades (default and
-    smallest: 4 × the smallest surface facet).
+    smallest: 4 × the smallest surface facet); ``elastic_predictor``: after the first indentation, each step is
+    first tried as an elastic step condensed onto the surface (:mod:`fem.reload`) and kept when it yields nowhere
+    (it is then the FE solution without Newton iterations); else the Newton increment.
     """
 
     def __init__(self, radius: float, plate: Material, max_overlap: float, ball: Material | None = None,
                  mesh: MeshTri | None = None, hardening: float = 0.0, rtol: float = 1e-6,
-                 taper_depth: float | None = None) -> None:  # fmt: skip
+                 taper_depth: float | None = None, elastic_predictor: bool = True) -> None:  # fmt: skip
         self.radius = check_number("radius", radius, low=1e-6, high=10.0, units="m", what="ball radius")
         max_overlap = check_number("max_overlap", max_overlap, low=0.0, low_open=True, high=radius, units="m")
         hardening = check_number("hardening", hardening, low=0.0, high=1e12, units="Pa", what="hardening modulus")
@@ -67,6 +69,7 @@ class Plate:
         self._force_scale = 4.0 / 3.0 * self.effective_modulus * math.sqrt(radius) * max_overlap**1.5
         self._gap_scale = max_overlap
         self._rtol = rtol
+        self.elastic_predictor = bool(elastic_predictor)
         self._reference_points = np.array(mesh.p, float)
         self.solver = PlateSolver(mesh, self.material, self.radius, self._force_scale, self._gap_scale, rtol=rtol)
         self.state: PlateState = self.solver.initial_state()
@@ -118,7 +121,7 @@ class Plate:
         run = _Run(self.solver, self.effective_modulus, self.radius)
         # the state and first contact before this loading (an unload may be repeated: it must not see its own commit)
         self._before = (self.state, self.first_contact_overlap())
-        return run.run(path, start=None if self._virgin else self.state, keep=True)
+        return run.run(path, start=None if self._virgin else self.state, keep=True, predictor=self.elastic_predictor)
 
     def unload(self, loading: IndentationResult, max_overlap: float, steps: int = 8, end: float | None = None,
                commit: bool = True) -> IndentationResult:  # fmt: skip
@@ -140,10 +143,10 @@ class Plate:
         if start.overlap < max_overlap:
             path = np.r_[max_overlap, path]
         kept = run.kept
-        result = run.run(path, start=start, keep=False)
+        result = run.run(path, start=start, keep=False, predictor=self.elastic_predictor)
         if run.final.n_active and end > 0.0:
             # still touching (pile-up, or a surface that rose): continue to the original plane
-            more = run.run(np.linspace(end, 0.0, 4)[1:], start=run.final, keep=False)
+            more = run.run(np.linspace(end, 0.0, 4)[1:], start=run.final, keep=False, predictor=self.elastic_predictor)
             result = _concat(result, more)
         run.kept = kept
         loading.unloadings.append(result)

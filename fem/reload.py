@@ -24,7 +24,6 @@ refactorised tangent per step (measured on the repeated-impact mesh: see ``bench
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -32,12 +31,13 @@ import scipy.sparse.linalg as spla
 
 from contact.validation import check_array
 
+from .forms import strain
 from .plasticity import radial_return
 from .result import IndentationResult
 from .solver import PlateState
 from .sphere_contact import contact_radius
 
-__all__ = ["ElasticReload", "elastic_reload"]
+__all__ = ["ElasticReload", "SurfaceCompliance", "candidate_nodes", "elastic_reload"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -51,28 +51,77 @@ class ElasticReload:
     trial_plastic_strain_increment: np.ndarray
 
 
-def _candidates(plate, obstacle_top: np.ndarray, u_z: np.ndarray, widen: float) -> np.ndarray:
-    """Surface nodes that may touch at the path's largest overlap: those the undeformed sphere reaches, and
-    out to ``widen`` × that radius (the surface outside the contact sinks under load, so the set can only be
-    smaller than the rigid overlap's, but a finite plate may lift a little: checked after the solve)."""
-    r = plate.solver.disc.surface_r
-    reached = np.flatnonzero(obstacle_top - u_z <= 0.0)
-    if reached.size == 0:
+def candidate_nodes(solver, state: PlateState, top: float, widen: float = 1.3) -> np.ndarray:
+    """Surface nodes (indices, sorted by r) that may touch along a path up to overlap ``top`` (m) from ``state``:
+    out to ``widen`` × the larger of the radius the undeformed sphere reaches and the state's contact radius
+    (the surface outside the contact sinks under load, so the set can only be smaller than the rigid overlap's, but
+    a finite plate may lift a little: a step that penetrates outside them is refused)."""
+    r = solver.disc.surface_r
+    reached = np.flatnonzero(solver.obstacle(top) - state.u[solver.surface_uz] <= 0.0)
+    reach = max(float(r[reached[-1]]) if reached.size else 0.0,
+                float(r[np.flatnonzero(state.active)[-1]]) if state.active.any() else 0.0)  # fmt: skip
+    if reach == 0.0:
         return np.zeros(0, int)
-    reach = widen * float(r[reached[-1]])
-    return np.flatnonzero(r <= reach)
+    return np.flatnonzero(r <= widen * reach)
 
 
-def _factorisation(solver):
-    """(free DOFs, LU of the elastic stiffness on them, cached unit responses) of this solver's mesh: kept on the
-    solver, which is rebuilt whenever the mesh moves (:meth:`fem.Plate.move_surface`)."""
-    cache = getattr(solver, "_reload_cache", None)
-    if cache is None:
-        free = np.setdiff1d(np.arange(solver.disc.ndofs), solver.fixed_dofs)
-        stiffness = solver._elastic_stiffness()[free][:, free].tocsc()
-        lu = spla.splu(stiffness, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True})
-        cache = solver._reload_cache = (free, lu, None)
-    return cache
+class SurfaceCompliance:
+    r"""The elastic compliance of ``solver``'s mesh condensed onto the surface ``nodes``: C = S K_e⁻¹ Sᵀ (m/N) and
+    the free-DOF response to a unit reaction at each node. The LU of K_e (and the last node set's responses) is
+    kept on the solver, which is rebuilt whenever the mesh moves (:meth:`fem.Plate.move_surface`)."""
+
+    def __init__(self, solver, nodes: np.ndarray) -> None:
+        self.solver, self.nodes = solver, nodes
+        cache = getattr(solver, "_reload_cache", None)
+        if cache is None:
+            free = np.setdiff1d(np.arange(solver.disc.ndofs), solver.fixed_dofs)
+            stiffness = solver._elastic_stiffness()[free][:, free].tocsc()
+            lu = spla.splu(stiffness, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                           options={"SymmetricMode": True})  # fmt: skip
+            cache = (free, lu, None)
+        free, lu, cached = cache
+        self.free = free
+        position = np.full(solver.disc.ndofs, -1)
+        position[free] = np.arange(free.size)
+        rows = position[solver.surface_uz[nodes]]
+        if cached is not None and np.isin(nodes, cached[0]).all():
+            self.response = cached[1][:, np.searchsorted(cached[0], nodes)]
+        else:
+            unit = np.zeros((free.size, nodes.size))
+            unit[rows, np.arange(nodes.size)] = -1.0  # a compressive reaction pushes the node down (−z)
+            self.response = lu.solve(unit)  # free-DOF displacement per unit reaction
+            cached = (nodes, self.response)
+        solver._reload_cache = (free, lu, cached)
+        compliance = -self.response[rows]  # C_ij = −u_z,i per unit f_j (positive definite)
+        self.matrix = 0.5 * (compliance + compliance.T)
+        self.cholesky = np.linalg.cholesky(self.matrix)
+
+    def step(self, start: PlateState, start_reactions: np.ndarray, overlap: float, check_yield: bool = True):
+        r"""Elastic step from the converged ``start`` (its contact reactions ``start_reactions``, N, one per surface
+        node) to ``overlap`` (m): the LCP of the module docstring with q = z_s − z − u_{s,z} − C f_s. Returns
+        (state, reactions N, gap m, trial Δᾱ, penetration outside the nodes: bool)."""
+        from scipy.optimize import nnls
+
+        solver = self.solver
+        nodes = self.nodes
+        rigid_gap = solver.obstacle(overlap) - start.u[solver.surface_uz]
+        q = rigid_gap[nodes] - self.matrix @ start_reactions[nodes]
+        reactions = np.zeros(solver.disc.surface_r.size)
+        if np.any(q < 0.0):
+            # min ½fᵀCf + qᵀf = ½‖Lᵀf + L⁻¹q‖² − const with C = LLᵀ
+            f, _ = nnls(self.cholesky.T, -np.linalg.solve(self.cholesky, q), maxiter=50 * nodes.size)
+            reactions[nodes] = f
+        u = start.u.copy()
+        u[self.free] += self.response @ (reactions - start_reactions)[nodes]
+        gap = solver.obstacle(overlap) - u[solver.surface_uz]
+        outside = np.ones(gap.size, bool)
+        outside[nodes] = False
+        increment = 0.0
+        if check_yield and reactions.any():
+            upd = radial_return(solver.material, strain(solver.disc, u), start.plastic_strain, start.alpha)
+            increment = float(np.max(upd.alpha - start.alpha))
+        state = PlateState(float(overlap), u, start.plastic_strain, start.alpha, reactions > 0.0)
+        return state, reactions, gap, increment, bool(np.any(gap[outside] < -solver.gap_tol))
 
 
 def elastic_reload(plate, overlaps, check_yield: bool = True) -> ElasticReload:
@@ -84,88 +133,41 @@ def elastic_reload(plate, overlaps, check_yield: bool = True) -> ElasticReload:
     solver = plate.solver
     disc = solver.disc
     state: PlateState = plate.state
-    u0 = state.u
-    u0_z = u0[solver.surface_uz]
-    free, lu, cached = _factorisation(solver)
-    position = np.full(disc.ndofs, -1)
-    position[free] = np.arange(free.size)
+    start_reactions = solver.reactions(state) * state.active
     top = float(path.max())
     for widen in (1.3, 2.0, 3.0):
-        nodes = _candidates(plate, solver.obstacle(top), u0_z, widen)
+        nodes = candidate_nodes(solver, state, top, widen)
         if nodes.size == 0:
             raise ValueError(f"overlaps reach at most {top:.6g} m: the sphere does not touch the surface "
                              f"(first contact at {plate.first_contact_overlap():.6g} m)")  # fmt: skip
-        rows = position[solver.surface_uz[nodes]]
-        if cached is not None and np.isin(nodes, cached[0]).all():
-            response = cached[1][:, np.searchsorted(cached[0], nodes)]
-        else:
-            unit = np.zeros((free.size, nodes.size))
-            unit[rows, np.arange(nodes.size)] = -1.0  # a compressive reaction pushes the node down (−z)
-            response = lu.solve(unit)  # free-DOF displacement per unit reaction
-            cached = (nodes, response)
-            solver._reload_cache = (free, lu, cached)
-        compliance = -response[rows]  # C_ij = −u_z,i per unit f_j (positive definite)
-        compliance = 0.5 * (compliance + compliance.T)
-        cholesky = np.linalg.cholesky(compliance)
-        steps = [_step(solver, plate, overlap, nodes, compliance, cholesky, response, free, check_yield)
-                 for overlap in path]  # fmt: skip
-        outside = np.ones(disc.surface_r.size, bool)
-        outside[nodes] = False
-        if not any(np.any(s["gap"][outside] < -solver.gap_tol) for s in steps):
+        compliance = SurfaceCompliance(solver, nodes)
+        steps = [compliance.step(state, start_reactions, overlap, check_yield) for overlap in path]
+        if not any(s[4] for s in steps):
             break
     else:
         raise ValueError("elastic_reload: surface nodes outside 3 × the reached radius penetrate the sphere")
+    force, radius, pressure = [], [], []
+    for new, reactions, gap, _, _ in steps:
+        force.append(float(reactions.sum()))
+        radius.append(contact_radius(disc.surface_r, new.active, gap) if new.active.any() else 0.0)
+        pressure.append(solver.mass_lu.solve(reactions))
+    increments = np.array([s[3] for s in steps])
+    force, radius = np.array(force), np.array(radius)
+    area = np.pi * radius**2
     result = IndentationResult(
         overlap=path.copy(),
-        force=np.array([s["force"] for s in steps]),
-        contact_radius=np.array([s["contact_radius"] for s in steps]),
-        max_pressure=np.array([float(s["pressure"].max(initial=0.0)) for s in steps]),
-        mean_pressure=np.array(
-            [s["force"] / (math.pi * s["contact_radius"] ** 2) if s["contact_radius"] > 0 else 0.0 for s in steps]
-        ),  # fmt: skip
+        force=force,
+        contact_radius=radius,
+        max_pressure=np.array([float(p.max(initial=0.0)) for p in pressure]),
+        mean_pressure=np.divide(force, area, out=np.zeros_like(force), where=area > 0.0),
         surface_r=disc.surface_r.copy(),
-        pressure=np.array([s["pressure"] for s in steps]),
+        pressure=np.array(pressure),
         first_yield=None,
-        residual_depth=-u0_z.copy(),
-        max_equivalent_plastic_strain=np.array([s["alpha"] for s in steps]),
+        residual_depth=-state.u[solver.surface_uz].copy(),
+        max_equivalent_plastic_strain=float(state.alpha.max(initial=0.0)) + increments,
         regime=["elastic"] * path.size,
         newton_iterations=np.zeros(path.size, int),
         radius=plate.radius,
         effective_modulus=plate.effective_modulus,
     )
-    return ElasticReload(result, np.array([s["increment"] for s in steps]))
-
-
-def _step(solver, plate, overlap, nodes, compliance, cholesky, response, free, check_yield) -> dict:
-    from scipy.optimize import nnls
-
-    disc = solver.disc
-    state = plate.state
-    u0_z = state.u[solver.surface_uz]
-    rigid_gap = solver.obstacle(overlap) - u0_z
-    q = rigid_gap[nodes]
-    reactions = np.zeros(disc.surface_r.size)
-    if np.any(q < 0.0):
-        # min ½fᵀCf + qᵀf = ½‖Lᵀf + L⁻¹q‖² − const with C = LLᵀ
-        f, _ = nnls(cholesky.T, -np.linalg.solve(cholesky, q), maxiter=50 * nodes.size)
-        reactions[nodes] = f
-    du_free = response @ reactions[nodes]
-    u = state.u.copy()
-    u[free] += du_free
-    gap = solver.obstacle(overlap) - u[solver.surface_uz]
-    active = reactions > 0.0
-    increment, alpha = 0.0, float(state.alpha.max(initial=0.0))
-    if check_yield and active.any():
-        from .forms import strain
-
-        upd = radial_return(solver.material, strain(disc, u), state.plastic_strain, state.alpha)
-        increment = float(np.max(upd.alpha - state.alpha))
-        alpha = float(upd.alpha.max())
-    return {
-        "force": float(reactions.sum()),
-        "contact_radius": contact_radius(disc.surface_r, active, gap) if active.any() else 0.0,
-        "pressure": solver.mass_lu.solve(reactions),
-        "gap": gap,
-        "increment": increment,
-        "alpha": alpha,
-    }
+    return ElasticReload(result, increments)

@@ -112,3 +112,30 @@ def test_reload_of_a_dent_agrees_with_the_halfspace_solution_of_the_dent(dented)
 def test_a_path_that_does_not_reach_the_surface_is_refused(dented):
     with pytest.raises(ValueError, match="does not touch"):
         fem.elastic_reload(dented, [0.0])
+
+
+def test_elastic_predictor_steps_give_the_newton_solution():
+    """fem.Plate tries each step after the first indentation as an elastic step and keeps it when its return mapping
+    yields nowhere: a second, deeper cycle (reload past the previous maximum, so part of it is plastic) is the same
+    with and without (the Newton solution of the same increments; measured: forces 1e-9, peak pressures 2e-6,
+    ᾱ 2e-10 apart) while most of its increments skip Newton (measured 7 of 25 solved on the default mesh)."""
+    runs = []
+    for predictor in (False, True):
+        plate = _plate(STEEL, 1.5 * D_MAX)
+        plate.elastic_predictor = predictor
+        loading = plate.load(np.linspace(0.0, D_MAX, 9)[1:])
+        first = plate.unload(loading, D_MAX, steps=6)
+        d0 = plate.first_contact_overlap()
+        before = plate.solver.stats.increments
+        again = plate.load(d0 + np.linspace(0.0, 1.0, 9)[1:] * (1.3 * D_MAX - d0))
+        back = plate.unload(again, 1.3 * D_MAX, steps=6)
+        runs.append((first, again, back, plate, plate.solver.stats.increments - before))
+    (*newton, plate_n, solved_n), (*predicted, plate_p, solved_p) = runs
+    for a, b in zip(newton, predicted, strict=True):
+        np.testing.assert_allclose(b.force, a.force, rtol=1e-6, atol=1e-9 * a.force.max())
+        np.testing.assert_allclose(b.max_pressure, a.max_pressure, rtol=1e-4, atol=1e-6 * a.max_pressure.max())
+    np.testing.assert_allclose(plate_p.state.alpha, plate_n.state.alpha, atol=1e-8)
+    np.testing.assert_allclose(plate_p.dent_depth, plate_n.dent_depth, rtol=1e-6, atol=1e-6 * D_MAX)
+    assert plate_p.state.alpha.max() > plate_n.state.alpha.max() * 0.999 > 0.0
+    print(f"Newton increments of the second cycle: {solved_n} without, {solved_p} with the elastic predictor")
+    assert solved_p < 0.6 * solved_n
