@@ -255,7 +255,7 @@ class _Run:
         if start.overlap == max_overlap:
             path = path[1:]
         kept = self.kept
-        result = self.run(path, start=start, keep=False)
+        result = self.run(path, start=start, keep=False, predictor=True)
         self.kept = kept
         return result
 

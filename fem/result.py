@@ -63,8 +63,9 @@ class IndentationResult:
 
         Restarts from the kept loading state just below δ_max (the run must use
         ``keep_states=True``), loads to δ_max in one increment and unloads; the loading branch is
-        path independent, so this costs one FE increment plus the unloading. The unloading curve
-        is recorded here, so :meth:`force_law` returns one unloading curve per call.
+        path independent, so this costs one FE increment plus the unloading; unloading steps whose elastic field
+        yields nowhere are taken without Newton iterations (:mod:`fem.reload`: the same solution). The unloading
+        curve is recorded here, so :meth:`force_law` returns one unloading curve per call.
         """
         if self._run is None:
             raise ValueError("unload_from needs the states of the loading run: call fem.indent(..., keep_states=True)")
