@@ -6,9 +6,13 @@ fraction: wall time, impacts solved with the coupled FE impact, blocks, the fina
 impact's peak pressure against the half-space solution of the surface it met (:mod:`wear.repeat_check`).
 
 ``--fractions 0.025,0.05,0.1`` adds the cycle-jump study, side by side in the same run: the same sequence at each
-``surface_fraction`` (a block moves the surface by at most that × a²/R), each compared with the smallest fraction
-(the reference) on the final surface depth, wear volume, dent, normal restitution and peak pressure — the error the
-cycle jump costs against the time it saves.
+``surface_fraction`` (a block moves the surface by at most that × the last computed impact's approach), each
+compared with the smallest fraction (the reference) on the final surface depth, wear volume, dent, normal
+restitution and peak pressure — the error the cycle jump costs against the time it saves.
+
+``--solvers N`` first runs N impacts twice, side by side: with the plate's elastic shortcuts (the elastic predictor
+of :class:`fem.Plate` and the elastic response after shakedown, :func:`fem.elastic_reload`) and with the
+elastic–plastic Newton solution of every step: the speed-up and the largest difference of the records.
 """
 
 from __future__ import annotations
@@ -30,21 +34,54 @@ QUANTITIES = {
 }
 
 
-def run(impacts: int, fraction: float):
+def run(impacts: int, fraction: float, shortcuts: bool = True):
+    import fem
+
     case = load_run_case(None)
+    init = fem.Plate.__init__
+
+    def plate_init(self, *args, **kwargs):
+        init(self, *args, **kwargs)
+        self.elastic_predictor = shortcuts
+
+    fem.Plate.__init__ = plate_init
     t0 = time.perf_counter()
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        result = repeat(case, RepeatSpec(impacts=impacts, surface_fraction=fraction))
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            spec = RepeatSpec(impacts=impacts, surface_fraction=fraction, elastic_after_shakedown=shortcuts)
+            result = repeat(case, spec)
+    finally:
+        fem.Plate.__init__ = init
     return result, time.perf_counter() - t0
+
+
+def compare_solvers(impacts: int, fraction: float) -> None:
+    fast, t_fast = run(impacts, fraction, shortcuts=True)
+    full, t_full = run(impacts, fraction, shortcuts=False)
+    print(f"{impacts} impacts, surface_fraction {fraction:g}: elastic shortcuts {t_fast:.1f} s "
+          f"({fast.computed} computed, {fast.elastic_computed} of them elastic), Newton every step {t_full:.1f} s "
+          f"({full.computed} computed): speed-up {t_full / t_fast:.2f}x")  # fmt: skip
+    worst = {}
+    for a, b in zip(fast.records, full.records, strict=False):
+        for name in ("surface_depth", "total_wear_volume", "dent_depth", "max_pressure", "max_force"):
+            ref = getattr(b, name)
+            if ref:
+                worst[name] = max(worst.get(name, 0.0), abs(getattr(a, name) / ref - 1.0))
+    same_rows = [(r.first, r.count) for r in fast.records] == [(r.first, r.count) for r in full.records]
+    print(f"  same rows: {same_rows}; largest relative difference: "
+          + ", ".join(f"{k} {v:.1e}" for k, v in worst.items()) + "\n")  # fmt: skip
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--impacts", type=int, default=10_000)
     parser.add_argument("--fractions", default="", help="comma-separated surface fractions for the cycle-jump study")
+    parser.add_argument("--solvers", type=int, default=0, help="impacts of the side-by-side solver comparison")
     args = parser.parse_args()
     default = RepeatSpec().surface_fraction
+    if args.solvers:
+        compare_solvers(args.solvers, default)
     fractions = sorted({float(f) for f in args.fractions.split(",") if f} | {default})
     results = {}
     for fraction in fractions if args.fractions else [default]:
@@ -53,8 +90,9 @@ def main() -> None:
         blocks = sum(r.kind == "block" for r in result.records)
         print(
             f"surface_fraction {fraction:g}: {args.impacts} impacts in {wall:.0f} s ({wall / 60:.1f} min), "
-            f"{result.computed} solved with the FE plate, {blocks} blocks, {wall / result.computed:.1f} s per "
-            f"solved impact; shakedown at impact {result.shakedown_impact}"
+            f"{result.computed} solved with the FE plate ({result.elastic_computed} of them on its elastic response), "
+            f"{blocks} blocks, {wall / result.computed:.1f} s per solved impact; shakedown at impact "
+            f"{result.shakedown_impact}"
         )
         for note in result.notes:
             print(f"  note: {note}")
