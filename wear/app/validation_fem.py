@@ -205,3 +205,34 @@ def fem_worn_surface(quick: bool) -> list[Check]:
                  0.03, "Pa"),
         relative("fem", "approach on a worn pit", case, bem.approach, src, float(res.overlap[-1]), 0.01, "m"),
     ]  # fmt: skip
+
+
+@register("fem")
+def fem_elastic_reload(quick: bool) -> list[Check]:
+    """Elastic reload of a dent (fem.elastic_reload: the plate's elastic response condensed onto its surface, used for
+    repeated impacts after shakedown): a plate indented to 8 δ_y and unloaded, reloaded half-way back, against the
+    half-space solution of the dent's gap at the same force (contact.halfspace, itself checked against Hertz)."""
+    from contact.halfspace import halfspace_contact
+
+    material = _plate()
+    d_max = 8.0 * _critical().overlap
+    mesh = fem.plate_mesh(R, material, d_max, contact_elements=16, yield_elements=10)
+    plate = fem.Plate(R, material, d_max, mesh=mesh)
+    plate.unload(plate.load(np.linspace(0.0, d_max, 9)[1:]), d_max, steps=6)
+    d0 = plate.first_contact_overlap()
+    res = fem.elastic_reload(plate, [d0 + 0.5 * (d_max - d0)]).result
+    a = float(res.contact_radius[0])
+    cells = 128
+    spacing = 6.0 * a / cells
+    x = (np.arange(cells) - (cells - 1) / 2) * spacing
+    rho = np.hypot(*np.meshgrid(x, x))
+    gap = R - np.sqrt(R * R - rho * rho) + np.interp(rho, plate.surface_r, plate.dent_depth)
+    bem = halfspace_contact(gap, spacing, float(res.force[0]), E_STAR)
+    case = f"{CASE}, Y 210 MPa, dent of 8 δ_y, elastic reload"
+    src = "half-space BEM (Love 1929; Polonsky & Keer 1999), the dent's gap, same force"
+    return [
+        relative("fem", "peak pressure, elastic reload of a dent", case, bem.max_pressure, src,
+                 float(res.max_pressure[0]), 0.03, "Pa"),
+        relative("fem", "approach, elastic reload of a dent", case, bem.approach, src, float(res.overlap[0]), 0.02,
+                 "m"),
+    ]  # fmt: skip
