@@ -23,9 +23,11 @@ impact).
 
 **Shakedown.** An impact is *shaken down* when its largest pointwise increment of equivalent plastic strain
 Δᾱ is below ``spec.shakedown_tolerance`` × the yield strain Y/E (default 1e-3 Y/E). From then on the impact
-response is elastic and repeats itself while the surface is unchanged; **cycle jump**: the last computed
-impact's wear is applied ``n`` times at once (one block), with n such that the surface moves by at most
-``spec.surface_fraction`` × the approach δ_e of the last computed impact (its max overlap from first contact),
+response is elastic and repeats itself while the surface is unchanged: the next computed impact is solved on the
+plate's elastic response (:func:`elastic_impact_on_plate`, :func:`fem.elastic_reload`: no Newton iterations, the
+plate's state unchanged) unless a return mapping of its elastic field yields beyond the tolerance; **cycle jump**:
+the last computed impact's wear is applied ``n`` times at once (one block), with n such that the surface moves by at
+most ``spec.surface_fraction`` × the approach δ_e of the last computed impact (its max overlap from first contact),
 then the coupled impact is computed again on the new surface (which also checks that it is still shaken down: if
 not, back to impact by impact). If no impact shakes down within ``spec.max_plastic_impacts`` computed one by one
 (e.g. wear keeps changing the seat, so each impact yields a little), the run says so and goes on with blocks
@@ -41,7 +43,8 @@ depth of 0.12 δ_e lowers the max pressure of an elastic oblique impact by 21%, 
 blocks by a²/R instead let them grow tenfold too large on the default case's conforming seat (after 10⁴ impacts
 δ_e = 0.07 a²/R): a block of 962 impacts turned an elastic re-impact (e_n 0.9993) into a yielding one (0.972).
 Without geometry update the surface never changes after shakedown and the remaining impacts are one block
-(N impacts wear exactly N × one impact after shakedown).
+(N impacts wear exactly N × one impact after shakedown). The cycle-jump error, measured on the default case over
+2000 impacts against fraction 0.025: 0.3% on the surface depth at 0.1 (the default), 1.1% at 0.2, 7–13% at 0.4.
 
 SI units throughout.
 """

@@ -32,7 +32,7 @@ class RepeatSpec:
     impacts: int = 100
     geometry_update: bool = True
     shakedown_tolerance: float = 1e-3
-    surface_fraction: float = 0.05
+    surface_fraction: float = 0.1
     max_plastic_impacts: int = 20
     save_every: int = 1
     wear_smoothing: float = 0.1
