@@ -58,7 +58,7 @@ def surface_profile(r: np.ndarray, depth: np.ndarray, where: np.ndarray) -> np.n
     return np.where(where <= r[-1], value, 0.0)
 
 
-def halfspace_check(result, cells: int = 96) -> dict:
+def halfspace_check(result, cells: int = 192) -> dict:
     """Peak pressures (Pa) of the last computed impact of ``result`` (:class:`wear.repeat.RepeatResult`) at its
     max force: the FE's, and the half-space solution's on the surface that impact met (``result.met_surface``);
     grid of ``cells``² over ±2.5 contact radii about the FE axis."""
