@@ -3,7 +3,7 @@
 Knows nothing of meshes or wear. SI units throughout; angles in degrees from the plate normal.
 """
 
-from .halfspace import HalfspaceContact, halfspace_contact
+from .halfspace import HalfspaceContact, halfspace_contact, sphere_on_axisymmetric_surface
 from .impact import simulate_impact, simulate_impacts
 from .materials import Material, effective_modulus, effective_shear_modulus
 from .results import BatchResult, History, ImpactResult
@@ -20,6 +20,7 @@ __all__ = [
     "effective_modulus",
     "effective_shear_modulus",
     "halfspace_contact",
+    "sphere_on_axisymmetric_surface",
     "simulate_impact",
     "simulate_impacts",
     "yield_velocity",

@@ -34,7 +34,7 @@ import numpy as np
 
 from .validation import check_number
 
-__all__ = ["HalfspaceContact", "influence_coefficients", "halfspace_contact"]
+__all__ = ["HalfspaceContact", "influence_coefficients", "halfspace_contact", "sphere_on_axisymmetric_surface"]
 
 
 @dataclass(frozen=True)
@@ -159,3 +159,21 @@ def halfspace_contact(
     approach = float(np.mean((h + u)[in_contact]))
     return HalfspaceContact(p, approach + float(gap.min()), np.maximum(h + u - approach, 0.0), in_contact,
                             iterations, spacing)  # fmt: skip
+
+
+def sphere_on_axisymmetric_surface(radius: float, depth, force: float, effective_modulus: float, half_width: float,
+                                   cells: int = 128) -> tuple[HalfspaceContact, np.ndarray]:  # fmt: skip
+    r"""A sphere of radius ``radius`` R (m) pressed with ``force`` W (N) onto a half-space (effective modulus E*, Pa)
+    whose unloaded surface lies ``depth``\ (ρ) (m, a callable, positive below the original plane: a dent or a worn
+    pit) below the plane, about the sphere's axis: :func:`halfspace_contact` on ``cells``² cells over
+    ±``half_width`` (m) with the gap h(ρ) = R − √(R² − ρ²) + depth(ρ) (exact sphere). Returns the solution and ρ (m)
+    of each cell (for radial profiles)."""
+    radius = check_number("radius", radius, low=0.0, low_open=True, units="m", what="sphere radius")
+    half_width = check_number("half_width", half_width, low=0.0, low_open=True, high=radius, units="m",
+                              what="half-width of the grid")  # fmt: skip
+    cells = int(check_number("cells", cells, low=8, high=4096, what="cells along each side"))
+    spacing = 2.0 * half_width / cells
+    x = (np.arange(cells) - (cells - 1) / 2) * spacing
+    rho = np.hypot(*np.meshgrid(x, x))
+    gap = radius - np.sqrt(radius * radius - rho * rho) + np.asarray(depth(rho), float)
+    return halfspace_contact(gap, spacing, force, effective_modulus), rho

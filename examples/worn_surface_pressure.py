@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 
 import fem
-from contact import Material, halfspace_contact
+from contact import Material, sphere_on_axisymmetric_surface
 from contact.theory import hertz_peak_pressure
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -44,12 +44,9 @@ force = float(res.force[-1])
 p_fe = res.pressure[-1]
 
 cells = 128
-spacing = 6.4 * a0 / cells
-x = (np.arange(cells) - (cells - 1) / 2) * spacing
-rr = np.hypot(*np.meshgrid(x, x))
-bem = halfspace_contact(rr**2 / (2.0 * radius) + pit(rr), spacing, force, e_star)
+bem, rho = sphere_on_axisymmetric_surface(radius, pit, force, e_star, 3.2 * a0, cells)
 row = bem.pressure[cells // 2, cells // 2 :]
-x_row = x[cells // 2 :]
+x_row = rho[cells // 2, cells // 2 :]  # a row through the centre (half a cell off the axis)
 
 print(f"first contact at δ = {first:.4g} m (closed form 0.375 a0²/R = {0.375 * d0:.4g} m)")
 print(f"force {force:.4g} N at δ = {res.overlap[-1]:.4g} m (half-space approach {bem.approach:.4g} m)")
@@ -64,7 +61,7 @@ try:
 
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.plot(r[inside] / a0, p_fe[inside] / 1e9, "o-", ms=3, label="FE plate (fem.Plate)")
-    ax.plot(x_row / a0, row / 1e9, "-", label="half-space (contact.halfspace_contact)")
+    ax.plot(x_row / a0, row / 1e9, "-", label="half-space (contact.sphere_on_axisymmetric_surface)")
     ax.set_xlim(0, 1.5)
     ax.set_xlabel("r / a0")
     ax.set_ylabel("contact pressure (GPa)")

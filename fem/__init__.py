@@ -8,7 +8,7 @@ Entry points: :func:`indent` (overlap path → :class:`IndentationResult`), :fun
 
 from .indent import estimate_contact_radius, indent, indent_impact, plate_mesh
 from .mesh import generate_mesh, load_mesh
-from .plate import Plate
+from .plate import Plate, surface_profile
 from .reload import ElasticReload, elastic_reload
 from .result import FirstYieldPoint, IndentationResult
 from .solver import ConvergenceError
@@ -26,4 +26,5 @@ __all__ = [
     "indent_impact",
     "load_mesh",
     "plate_mesh",
+    "surface_profile",
 ]

@@ -39,7 +39,7 @@ from .indent import _plate_model, _Run, plate_mesh, write_state
 from .result import IndentationResult
 from .solver import PlateSolver, PlateState
 
-__all__ = ["Plate"]
+__all__ = ["Plate", "surface_profile"]
 
 
 class Plate:
@@ -229,3 +229,24 @@ def _concat(a: IndentationResult, b: IndentationResult) -> IndentationResult:
         newton_iterations=cat("newton_iterations"),
         unloadings=[],
     )
+
+
+def surface_profile(r: np.ndarray, depth: np.ndarray, where: np.ndarray) -> np.ndarray:
+    """Depth (m) of the FE surface at radii ``where`` (m) from its nodal values ``depth`` at the sorted surface nodes
+    ``r`` (m), interpolated as the P2 elements carry it: quadratic through (vertex, mid-side, vertex) when the nodes
+    alternate so (every odd node halfway between its neighbours), else linear; 0 beyond the last node.
+
+    Why not linear: the pressure of a conforming seat follows the gap's curvature, and a piecewise-linear surface has a
+    slope kink at every node — the half-space solution on it then depends on the grid (its peak rose 2.6 → 3.0 GPa as
+    the cells shrank from 16 to 2.4 µm on a 2000-impact seat; on the P2 or a cubic-spline surface it converges)."""
+    r, depth = np.asarray(r, float), np.asarray(depth, float)
+    where = np.asarray(where, float)
+    odd = r[1:-1:2]
+    if r.size < 3 or r.size % 2 == 0 or not np.allclose(odd, 0.5 * (r[0:-2:2] + r[2::2]), rtol=1e-9, atol=0.0):
+        return np.interp(where, r, depth, right=0.0)
+    k = np.clip(np.searchsorted(r[0::2], where, side="right") - 1, 0, (r.size - 1) // 2 - 1)
+    x0, x2 = r[2 * k], r[2 * k + 2]
+    y0, y1, y2 = depth[2 * k], depth[2 * k + 1], depth[2 * k + 2]
+    t = (where - x0) / (x2 - x0)  # the mid-side node sits at t = 1/2
+    value = y0 * (2.0 * t - 1.0) * (t - 1.0) + y1 * 4.0 * t * (1.0 - t) + y2 * t * (2.0 * t - 1.0)
+    return np.where(where <= r[-1], value, 0.0)

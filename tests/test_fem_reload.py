@@ -10,7 +10,7 @@ import pytest
 
 import fem
 from contact import Material
-from contact.halfspace import halfspace_contact
+from contact.halfspace import sphere_on_axisymmetric_surface
 from contact.theory import first_yield, hertz_force, hertz_peak_pressure
 
 R = 10e-3
@@ -94,12 +94,8 @@ def test_reload_of_a_dent_agrees_with_the_halfspace_solution_of_the_dent(dented)
     res = fem.elastic_reload(plate, [d0 + 0.5 * (D_MAX - d0)]).result
     force = float(res.force[0])
     a = float(res.contact_radius[0])
-    cells = 128
-    spacing = 2.0 * 3.0 * a / cells
-    x = (np.arange(cells) - (cells - 1) / 2) * spacing
-    rho = np.hypot(*np.meshgrid(x, x))
-    gap = R - np.sqrt(R * R - rho * rho) + np.interp(rho, plate.surface_r, plate.dent_depth)
-    bem = halfspace_contact(gap, spacing, force, plate.effective_modulus)
+    bem, _ = sphere_on_axisymmetric_surface(R, lambda rho: fem.surface_profile(plate.surface_r, plate.dent_depth, rho),
+                                            force, plate.effective_modulus, 3.0 * a)  # fmt: skip
     print(f"peak FE {res.max_pressure[0]:.4g} Pa, half-space {bem.max_pressure:.4g} Pa; area FE "
           f"{math.pi * a * a:.4g}, half-space {bem.contact_area:.4g} m^2; approach {res.overlap[0]:.4g} vs "
           f"{bem.approach:.4g} m")  # fmt: skip

@@ -76,3 +76,17 @@ def test_bad_input():
     with pytest.raises(ValueError, match="edge of the grid"):
         small, h = sphere_gap(16, 0.3 * hertz_contact_radius_from_force(W, R, E_STAR))
         halfspace_contact(small, h, W, E_STAR)
+
+
+def test_sphere_on_a_flat_axisymmetric_surface_is_hertz():
+    """sphere_on_axisymmetric_surface with depth 0: Hertz (exact sphere; (a/R)² = 4e-3 from the paraboloid)."""
+    from contact.halfspace import sphere_on_axisymmetric_surface
+
+    a = hertz_contact_radius_from_force(W, R, E_STAR)
+    sol, rho = sphere_on_axisymmetric_surface(R, np.zeros_like, W, E_STAR, 2.0 * a, 96)
+    assert rho.shape == (96, 96) and rho.min() > 0.0
+    assert sol.max_pressure == pytest.approx(hertz_peak_pressure(W, R, E_STAR), rel=0.01)
+    assert sol.approach == pytest.approx(hertz_overlap(W, R, E_STAR), rel=0.01)
+    assert sol.contact_area == pytest.approx(math.pi * a * a, rel=0.03)
+    with pytest.raises(ValueError, match=r"half_width=0\.01 .*m"):
+        sphere_on_axisymmetric_surface(R, np.zeros_like, W, E_STAR, 0.01)

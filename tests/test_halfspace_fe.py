@@ -15,7 +15,7 @@ import pytest
 
 import fem
 from contact import Material
-from contact.halfspace import halfspace_contact
+from contact.halfspace import sphere_on_axisymmetric_surface
 from contact.theory import hertz_peak_pressure
 
 R = 10e-3
@@ -38,12 +38,7 @@ def fe_and_halfspace(depth: float):
     plate.move_surface(pit(r, depth))
     first = plate.first_contact_overlap()
     res = plate.load(first + np.linspace(0.0, 1.0, 5)[1:] * D0)
-    cells = 128
-    half_width = 3.2 * A0
-    spacing = 2.0 * half_width / cells
-    x = (np.arange(cells) - (cells - 1) / 2) * spacing
-    rr = np.hypot(*np.meshgrid(x, x))
-    bem = halfspace_contact(rr**2 / (2.0 * R) + pit(rr, depth), spacing, float(res.force[-1]), E_STAR)
+    bem, rr = sphere_on_axisymmetric_surface(R, lambda rho: pit(rho, depth), float(res.force[-1]), E_STAR, 3.2 * A0)
     return res, r, rr, bem, first
 
 

@@ -18,7 +18,7 @@ within 0.3% and approach within 0.1% of the half-space solution, FE peak 2.05–
 surface and 1.79 GPa on a cubic-spline one): the pressure sits on the worn scar's shoulder at r ≈ 0.94a and drops to
 zero within two FE elements, where the FE nodal pressure, an L2 projection of the nodal reactions, overshoots (the
 reaction over its tributary area gives 1.93 GPa). The surface is read as the FE's P2 elements carry it
-(:func:`surface_profile`).
+(:func:`fem.surface_profile`).
 
 Not done: the same check on the 2-D worn scar. The cumulative 2-D map of a cycle-jumped run multiplies single
 impacts' maps by the block sizes (hundreds), which magnifies their time-sampling streaks into ±30% ripples that the
@@ -30,32 +30,10 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
+from contact.halfspace import sphere_on_axisymmetric_surface
+from fem import surface_profile
 
-from contact.halfspace import halfspace_contact
-
-__all__ = ["halfspace_check", "surface_profile"]
-
-
-def surface_profile(r: np.ndarray, depth: np.ndarray, where: np.ndarray) -> np.ndarray:
-    """Depth (m) of the FE surface at radii ``where`` (m) from its nodal values ``depth`` at the sorted surface nodes
-    ``r`` (m), interpolated as the P2 elements carry it: quadratic through (vertex, mid-side, vertex) when the nodes
-    alternate so (every odd node halfway between its neighbours), else linear; 0 beyond the last node.
-
-    Why not linear: the pressure of a conforming seat follows the gap's curvature, and a piecewise-linear surface has a
-    slope kink at every node — the half-space solution on it then depends on the grid (its peak rose 2.6 → 3.0 GPa as
-    the cells shrank from 16 to 2.4 µm on a 2000-impact seat; on the P2 or a cubic-spline surface it converges)."""
-    r, depth = np.asarray(r, float), np.asarray(depth, float)
-    where = np.asarray(where, float)
-    odd = r[1:-1:2]
-    if r.size < 3 or r.size % 2 == 0 or not np.allclose(odd, 0.5 * (r[0:-2:2] + r[2::2]), rtol=1e-9, atol=0.0):
-        return np.interp(where, r, depth, right=0.0)
-    k = np.clip(np.searchsorted(r[0::2], where, side="right") - 1, 0, (r.size - 1) // 2 - 1)
-    x0, x2 = r[2 * k], r[2 * k + 2]
-    y0, y1, y2 = depth[2 * k], depth[2 * k + 1], depth[2 * k + 2]
-    t = (where - x0) / (x2 - x0)  # the mid-side node sits at t = 1/2
-    value = y0 * (2.0 * t - 1.0) * (t - 1.0) + y1 * 4.0 * t * (1.0 - t) + y2 * t * (2.0 * t - 1.0)
-    return np.where(where <= r[-1], value, 0.0)
+__all__ = ["halfspace_check"]
 
 
 def halfspace_check(result, cells: int = 192) -> dict:
@@ -64,15 +42,14 @@ def halfspace_check(result, cells: int = 192) -> dict:
     grid of ``cells``² over ±2.5 contact radii about the FE axis."""
     last = [r for r in result.records if r.kind == "computed"][-1]
     plate = result.plate
-    radius = plate.radius
     r = plate.surface_r
-    half_width = 2.5 * last.contact_radius
-    spacing = 2.0 * half_width / cells
-    x = (np.arange(cells) - (cells - 1) / 2) * spacing
-    rho = np.hypot(*np.meshgrid(x, x))
     dent_depth, wear_depth = result.met_surface
-    gap = radius - np.sqrt(radius * radius - rho * rho) + surface_profile(r, dent_depth + wear_depth, rho)
-    solution = halfspace_contact(gap, spacing, last.max_force, plate.effective_modulus)
+
+    def met(rho):
+        return surface_profile(r, dent_depth + wear_depth, rho)
+
+    solution, _ = sphere_on_axisymmetric_surface(plate.radius, met, last.max_force, plate.effective_modulus,
+                                                 2.5 * last.contact_radius, cells)  # fmt: skip
     return {
         "impact": last.first,
         # the check holds for an elastic (shaken-down) impact; with new plastic strain the FE pressure is capped by
@@ -84,5 +61,5 @@ def halfspace_check(result, cells: int = 192) -> dict:
         "halfspace_max_pressure_Pa": solution.max_pressure,
         "fe_contact_area_m2": math.pi * last.contact_radius**2,
         "halfspace_contact_area_m2": solution.contact_area,
-        "grid_spacing_m": spacing,
+        "grid_spacing_m": solution.spacing,
     }

@@ -182,22 +182,21 @@ def fem_elastic_plastic(quick: bool) -> list[Check]:
 def fem_worn_surface(quick: bool) -> list[Check]:
     """FE plate with a worn pit w = D(1 − r²/a₀²)², D = 0.5 a₀²/R (fem.Plate.move_surface), elastic, against the
     half-space solution of the same gap and force (contact.halfspace, itself checked against Hertz)."""
-    from contact.halfspace import halfspace_contact
+    from contact.halfspace import sphere_on_axisymmetric_surface
 
     a0 = 0.01 * R
     d0 = a0**2 / R
+
+    def pit(rho):
+        return 0.5 * d0 * np.clip(1.0 - (rho / a0) ** 2, 0.0, None) ** 2
+
     plate_material = _plate(None)
     mesh = fem.plate_mesh(R, plate_material, 2.0 * d0, contact_elements=16 if quick else 32, yield_elements=10)
     plate = fem.Plate(R, plate_material, 2.0 * d0, mesh=mesh)
     r = plate.surface_r
-    plate.move_surface(0.5 * d0 * np.clip(1.0 - (r / a0) ** 2, 0.0, None) ** 2)
+    plate.move_surface(pit(r))
     res = plate.load(plate.first_contact_overlap() + np.linspace(0.0, 1.0, 5)[1:] * d0)
-    cells = 128
-    spacing = 6.4 * a0 / cells
-    x = (np.arange(cells) - (cells - 1) / 2) * spacing
-    rr = np.hypot(*np.meshgrid(x, x))
-    gap = rr**2 / (2.0 * R) + 0.5 * d0 * np.clip(1.0 - (rr / a0) ** 2, 0.0, None) ** 2
-    bem = halfspace_contact(gap, spacing, float(res.force[-1]), E_STAR)
+    bem, _ = sphere_on_axisymmetric_surface(R, pit, float(res.force[-1]), E_STAR, 3.2 * a0)
     case = f"elastic {CASE}, worn pit 0.5 a₀²/R deep, a₀ wide"
     src = "half-space BEM (Love 1929; Polonsky & Keer 1999), same gap and force"
     return [
@@ -212,7 +211,7 @@ def fem_elastic_reload(quick: bool) -> list[Check]:
     """Elastic reload of a dent (fem.elastic_reload: the plate's elastic response condensed onto its surface, used for
     repeated impacts after shakedown): a plate indented to 8 δ_y and unloaded, reloaded half-way back, against the
     half-space solution of the dent's gap at the same force (contact.halfspace, itself checked against Hertz)."""
-    from contact.halfspace import halfspace_contact
+    from contact.halfspace import sphere_on_axisymmetric_surface
 
     material = _plate()
     d_max = 8.0 * _critical().overlap
@@ -221,13 +220,11 @@ def fem_elastic_reload(quick: bool) -> list[Check]:
     plate.unload(plate.load(np.linspace(0.0, d_max, 9)[1:]), d_max, steps=6)
     d0 = plate.first_contact_overlap()
     res = fem.elastic_reload(plate, [d0 + 0.5 * (d_max - d0)]).result
-    a = float(res.contact_radius[0])
-    cells = 128
-    spacing = 6.0 * a / cells
-    x = (np.arange(cells) - (cells - 1) / 2) * spacing
-    rho = np.hypot(*np.meshgrid(x, x))
-    gap = R - np.sqrt(R * R - rho * rho) + np.interp(rho, plate.surface_r, plate.dent_depth)
-    bem = halfspace_contact(gap, spacing, float(res.force[0]), E_STAR)
+
+    def dent(rho):
+        return fem.surface_profile(plate.surface_r, plate.dent_depth, rho)
+
+    bem, _ = sphere_on_axisymmetric_surface(R, dent, float(res.force[0]), E_STAR, 3.0 * float(res.contact_radius[0]))
     case = f"{CASE}, Y 210 MPa, dent of 8 δ_y, elastic reload"
     src = "half-space BEM (Love 1929; Polonsky & Keer 1999), the dent's gap, same force"
     return [
