@@ -140,13 +140,14 @@ def tabulated_arrays(law: TabulatedLaw | None) -> tuple[np.ndarray, ...]:
 
 
 @njit(cache=True, error_model="numpy")
-def _interp(x, xs, ys):
-    """Linear interpolation in increasing ``xs`` (clamped to the end values)."""
+def _bracket(x, xs):
+    """(lo, w): the interval [xs[lo], xs[lo + 1]] of increasing ``xs`` holding ``x`` and the weight of its upper end
+    (clamped: (0, 0) below the first value, (n − 2, 1) above the last)."""
     n = xs.shape[0]
     if x <= xs[0]:
-        return ys[0]
+        return 0, 0.0
     if x >= xs[n - 1]:
-        return ys[n - 1]
+        return n - 2, 1.0
     lo, hi = 0, n - 1
     while hi - lo > 1:
         mid = (lo + hi) // 2
@@ -154,8 +155,14 @@ def _interp(x, xs, ys):
             lo = mid
         else:
             hi = mid
-    w = (x - xs[lo]) / (xs[hi] - xs[lo])
-    return ys[lo] + w * (ys[hi] - ys[lo])
+    return lo, (x - xs[lo]) / (xs[hi] - xs[lo])
+
+
+@njit(cache=True, error_model="numpy")
+def _interp(x, xs, ys):
+    """Linear interpolation in increasing ``xs`` (clamped to the end values)."""
+    lo, w = _bracket(x, xs)
+    return ys[lo] + w * (ys[lo + 1] - ys[lo])
 
 
 @njit(cache=True, error_model="numpy")
@@ -163,22 +170,10 @@ def _interp_from_zero(x, xs, ys, power):
     """:func:`_interp`, but in an interval whose lower end has y = 0 (first contact of the loading branch,
     separation at the end of an unloading curve) as y_hi·w^power: Hertz-like, F ∝ w^1.5 and a ∝ w^0.5. Linear in
     both, 3F/(2πa²) ∝ 1/w there: a spurious peak pressure up to 10× the real one at the first and last steps."""
-    n = xs.shape[0]
-    if x <= xs[0]:
-        return ys[0]
-    if x >= xs[n - 1]:
-        return ys[n - 1]
-    lo, hi = 0, n - 1
-    while hi - lo > 1:
-        mid = (lo + hi) // 2
-        if xs[mid] <= x:
-            lo = mid
-        else:
-            hi = mid
-    w = (x - xs[lo]) / (xs[hi] - xs[lo])
+    lo, w = _bracket(x, xs)
     if ys[lo] == 0.0:
-        return ys[hi] * w**power
-    return ys[lo] + w * (ys[hi] - ys[lo])
+        return ys[lo + 1] * w**power
+    return ys[lo] + w * (ys[lo + 1] - ys[lo])
 
 
 @njit(cache=True, error_model="numpy")
