@@ -161,7 +161,7 @@ class _Run:
         for overlap in overlaps:
             new = None
             if compliance is not None:
-                trial, trial_reactions, _, increment, outside = compliance.step(state, reactions, float(overlap))
+                trial, _, _, increment, outside = compliance.step(state, reactions, float(overlap))
                 if increment == 0.0 and not outside:
                     new = trial
             if new is None:

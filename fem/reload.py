@@ -124,7 +124,9 @@ class SurfaceCompliance:
         outside = np.ones(gap.size, bool)
         outside[nodes] = False
         increment = 0.0
-        if check_yield and reactions.any():
+        # the field changes unless the ball stays off the surface: a step that releases the last contact force
+        # (separation after unloading) can yield in reverse, so it is checked too
+        if check_yield and (reactions.any() or start_reactions[nodes].any()):
             upd = radial_return(solver.material, strain(solver.disc, u), start.plastic_strain, start.alpha)
             increment = float(np.max(upd.alpha - start.alpha))
         state = PlateState(float(overlap), u, start.plastic_strain, start.alpha, reactions > 0.0)

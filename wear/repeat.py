@@ -248,7 +248,8 @@ def elastic_impact_on_plate(case, fe_plate, estimate: float, tolerance: float, a
     d_star = impact.max_overlap * (1.0 + UNLOAD_MARGIN)
     # steps past the impact's maximum were never reached: their trial plastic strain does not count
     reached = np.asarray(loading.overlap) <= d0 + d_star
-    if float(np.max(reload.trial_plastic_strain_increment[reached], initial=0.0)) > tolerance:
+    trial = float(np.max(reload.trial_plastic_strain_increment[reached], initial=0.0))
+    if trial > tolerance:
         return None
     steps = case.fem.unload_steps
     down = np.linspace(d0 + d_star, max(0.0, d0 - 0.05 * d_star), steps + 1)
@@ -258,7 +259,6 @@ def elastic_impact_on_plate(case, fe_plate, estimate: float, tolerance: float, a
     impact = _run_impact(case, ball, plate, law)
     change = abs(impact.max_overlap - first) / first
     solved = _finish(case, fe_plate, impact, law, loading, unloading, d0, d_star, axis_x, smoothing, 2, change)
-    trial = float(np.max(reload.trial_plastic_strain_increment[reached], initial=0.0))
     return replace(solved, elastic=True, trial_increment=trial)
 
 
@@ -382,7 +382,7 @@ def repeat(case, spec: RepeatSpec, progress: Callable[[int, int], None] | None =
     records: list[ImpactRecord] = []
     notes: list[str] = []
     acc = None
-    done, computed, elastic, shakedown, plastic_run = 0, 0, 0, None, 0
+    done, computed, shakedown, plastic_run = 0, 0, None, 0
     last = None
     shaken = False
     gave_up = False  # no shakedown within max_plastic_impacts: blocks go on, one computed impact between them
@@ -405,7 +405,6 @@ def repeat(case, spec: RepeatSpec, progress: Callable[[int, int], None] | None =
             attempt = None
             if shaken and spec.elastic_after_shakedown:
                 attempt = elastic_impact_on_plate(case, fe_plate, d_est, tolerance, axis_x, spec.wear_smoothing)
-                elastic += attempt is not None
             last = attempt or impact_on_plate(case, fe_plate, d_est, axis_x, smoothing=spec.wear_smoothing)
             d_est = last.impact.max_overlap
             computed += 1
@@ -478,4 +477,4 @@ def repeat(case, spec: RepeatSpec, progress: Callable[[int, int], None] | None =
     if shakedown is None:
         notes.append(f"no impact without new plastic strain (tolerance Δᾱ <= {tolerance:.3g})")
     return RepeatResult(case, spec, records, fe_plate, acc.map(), shakedown, computed,
-                        time.perf_counter() - t_start, notes, axis_x, met, elastic)  # fmt: skip
+                        time.perf_counter() - t_start, notes, axis_x, met)  # fmt: skip

@@ -168,8 +168,7 @@ class RepeatResult:
     ``shakedown_impact`` (first impact with Δᾱ below the tolerance, or None), ``computed`` (number of impacts
     solved), ``wall_time`` (s), ``notes``, ``axis_x`` (m: x of the FE axis, the dent centre, in the wear map's
     frame), ``met_surface``: the surface the last computed impact met — (dent depth, axisymmetric wear depth) on
-    the FE surface nodes (m), ``elastic_computed``: how many of the computed impacts were solved on the plate's
-    elastic response (after shakedown)."""
+    the FE surface nodes (m); :attr:`elastic_computed`."""
 
     case: Any
     spec: RepeatSpec
@@ -182,7 +181,11 @@ class RepeatResult:
     notes: list = field(default_factory=list)
     axis_x: float = 0.0
     met_surface: tuple = ()
-    elastic_computed: int = 0
+
+    @property
+    def elastic_computed(self) -> int:
+        """How many of the computed impacts were solved on the plate's elastic response (after shakedown)."""
+        return sum(r.kind == "computed" and r.elastic_response for r in self.records)
 
     def columns(self) -> dict[str, list]:
         """repeat.csv columns (name with units → values; ``computed`` 1 for a solved impact, 0 for a block;
