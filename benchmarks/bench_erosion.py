@@ -1,6 +1,6 @@
 """Benchmark of the stream erosion (not a timed test): run ``python3 benchmarks/bench_erosion.py``.
 
-Impacts per second of :func:`wear.erosion.erode` on a 512 × 512 periodic patch — every impact: local slope,
+Impacts per second of :func:`wear.erosion.stream.erode` on a 512 × 512 periodic patch — every impact: local slope,
 local angle and normal speed, table interpolation, rotated footprint stamped on the height field — with the
 numba kernel against a plain numpy implementation of the same update (``engine="numpy"``: one impact at a
 time, vectorised over the nodes of its footprint), side by side in one run on the same table and patch.
@@ -25,8 +25,8 @@ import numpy as np
 
 from contact import Material
 from wear import WearLaw
-from wear.erosion import Stream, erode
-from wear.response import ImpactResponse, build_response_table, table_axes
+from wear.erosion.response import ImpactResponse, build_response_table, table_axes
+from wear.erosion.stream import Stream, erode
 
 TARGET_IMPACTS_PER_MINUTE = 1e5
 

@@ -3,7 +3,7 @@
 The embedded default case (alumina ball R 2.5 mm on Ti-6Al-4V, 3 m/s at 30° from the normal, FE plate, wear on)
 hit ``--impacts`` times (default 10⁴, the issue's target: "10⁴ impacts in minutes") at the default cycle-jump
 fraction: wall time, impacts solved with the coupled FE impact, blocks, the final state, and the last computed
-impact's peak pressure against the half-space solution of the surface it met (:mod:`wear.repeat_check`).
+impact's peak pressure against the half-space solution of the surface it met (:mod:`wear.chain.check`).
 
 ``--fractions 0.025,0.05,0.1`` adds the cycle-jump study, side by side in the same run: the same sequence at each
 ``surface_fraction`` (a block moves the surface by at most that × the last computed impact's approach), each
@@ -21,9 +21,9 @@ import argparse
 import time
 import warnings
 
-from wear.app.run_case import load_run_case
-from wear.repeat import RepeatSpec, repeat
-from wear.repeat_check import halfspace_check
+from wear import Case, repeat
+from wear.case import RepeatSpec
+from wear.chain.check import halfspace_check
 
 QUANTITIES = {
     "surface depth (m)": lambda r: r.records[-1].surface_depth,
@@ -37,7 +37,7 @@ QUANTITIES = {
 def run(impacts: int, fraction: float, shortcuts: bool = True):
     import fem
 
-    case = load_run_case(None)
+    case = Case()
     init = fem.Plate.__init__
 
     def plate_init(self, *args, **kwargs):
@@ -49,8 +49,8 @@ def run(impacts: int, fraction: float, shortcuts: bool = True):
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            spec = RepeatSpec(impacts=impacts, surface_fraction=fraction, elastic_after_shakedown=shortcuts)
-            result = repeat(case, spec)
+            spec = {"impacts": impacts, "surface_fraction": fraction, "elastic_after_shakedown": shortcuts}
+            result = repeat(case.with_(repeat=spec))
     finally:
         fem.Plate.__init__ = init
     return result, time.perf_counter() - t0

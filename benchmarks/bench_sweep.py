@@ -2,7 +2,7 @@
 
 Measured side by side in one run (issue 5, acceptance 4):
 
-1. Speed-up of 2 local workers over 1 on 20 ``run`` cases (``wear.pipeline.run``: impact, FE plate, two-way
+1. Speed-up of 2 local workers over 1 on 20 ``run`` cases (``wear.chain.single.run``: impact, FE plate, two-way
    coupling, wear) of the default run case over 20 impact angles, on a mesh twice as coarse as the default
    (``fem.mesh_scale = 2``; with ``--quick`` 4 and fewer increments) so the benchmark takes minutes. Wall time
    includes starting the worker processes (what a user waits for). The load average is printed: other work on
@@ -23,9 +23,9 @@ import tempfile
 import time
 from pathlib import Path
 
-from wear.app.sweep import run_sweep
-from wear.app.sweep_spec import parse_sweep
-from wear.app.sweep_stages import STAGES
+from wear.app.sweep.runner import run_sweep
+from wear.app.sweep.spec import parse_sweep
+from wear.app.sweep.stages import STAGES
 
 
 def heavy_sweep(cases: int, quick: bool) -> tuple[dict, str]:
@@ -34,7 +34,7 @@ def heavy_sweep(cases: int, quick: bool) -> tuple[dict, str]:
     if "run" in STAGES:
         # the default run case on a coarser FE mesh with fewer increments, so 20 cases take minutes, not an hour
         fem = {"mesh_scale": 4.0} if quick else {"mesh_scale": 2.0}
-        note = f"run stage (wear.pipeline.run), default run case with fem = {fem}"
+        note = f"run stage (wear.chain.single.run), default run case with fem = {fem}"
         return {"sweep": {"stage": "run"}, "base": {"fem": fem}, "grid": {"impact.angle": angles}}, note
     # fallback, should the run stage be unavailable: heavy impacts (~3e6 engine steps each, ~0.2 s)
     dt = 2e-11 if quick else 2e-12

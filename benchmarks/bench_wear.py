@@ -21,7 +21,8 @@ import numba
 import numpy as np
 
 from contact.materials import Material
-from wear import WearLaw, integrate_wear, pressure_history, sliding_speed, surface_grid
+from wear import Case, WearLaw, integrate_wear, pressure_history, run, sliding_speed, surface_grid
+from wear.app.outputs.run import write_run
 from wear.integrate import _accumulate, integrate_wear_numpy, powered_table, wear_substeps
 
 TARGET_UPDATES_PER_S = 1e8
@@ -142,11 +143,7 @@ def bench_run_stages(out: str | None = None) -> dict:
     call of the script; the impact's JIT compile is in the ``impact`` stage on a cold cache). Target: ≤ 60 s."""
     import tempfile
 
-    from wear.app.outputs import write_run
-    from wear.app.run_case import load_run_case
-    from wear.pipeline import run
-
-    case = load_run_case()
+    case = Case()
     folder = out or tempfile.mkdtemp(prefix="bench-run-")
     t0 = time.perf_counter()
     summary = write_run(run(case), os.path.join(folder, "run"))

@@ -3,12 +3,12 @@
 Knows nothing of meshes or wear. SI units throughout; angles in degrees from the plate normal.
 """
 
-from .halfspace import HalfspaceContact, halfspace_contact, sphere_on_axisymmetric_surface
-from .impact import simulate_impact, simulate_impacts
-from .materials import Material, effective_modulus, effective_shear_modulus
-from .results import BatchResult, History, ImpactResult
-from .tabulated import TabulatedLaw
-from .theory import yield_velocity
+from contact.halfspace import HalfspaceContact, halfspace_contact, sphere_on_axisymmetric_surface
+from contact.impact import simulate_impact, simulate_impacts
+from contact.materials import Material, effective_modulus, effective_shear_modulus
+from contact.results import BatchResult, History, ImpactResult
+from contact.tabulated import TabulatedLaw
+from contact.theory import yield_velocity
 
 __all__ = [
     "BatchResult",

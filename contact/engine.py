@@ -25,7 +25,7 @@ import math
 import numpy as np
 from numba import njit, prange
 
-from .laws import (
+from contact.laws import (
     ERR_MAX_STEPS,
     HERTZ,
     OK,

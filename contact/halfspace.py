@@ -32,7 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .validation import check_number
+from contact.checks import check_number
 
 __all__ = ["HalfspaceContact", "influence_coefficients", "halfspace_contact", "sphere_on_axisymmetric_surface"]
 

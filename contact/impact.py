@@ -12,11 +12,11 @@ import math
 
 import numpy as np
 
-from . import engine, laws, theory
-from .materials import Material, effective_modulus, effective_shear_modulus
-from .results import BatchResult, History, ImpactResult
-from .tabulated import TabulatedLaw
-from .validation import check_array, check_bool, check_choice, check_number
+from contact import engine, laws, theory
+from contact.checks import check_array, check_bool, check_choice, check_number
+from contact.materials import Material, effective_modulus, effective_shear_modulus
+from contact.results import BatchResult, History, ImpactResult
+from contact.tabulated import TabulatedLaw
 
 __all__ = ["simulate_impact", "simulate_impacts", "ForceLawRangeError", "NORMAL_MODELS", "TANGENTIAL_MODELS", "SCHEMES"]
 

@@ -29,7 +29,7 @@ from numba import njit
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
-from .tabulated import TabulatedLaw
+from contact.tabulated import TabulatedLaw
 
 __all__ = [
     "HERTZ",

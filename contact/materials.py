@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .validation import check_number
+from contact.checks import check_number
 
 __all__ = ["Material", "effective_modulus", "effective_shear_modulus"]
 

@@ -10,7 +10,7 @@ from dataclasses import dataclass, fields
 
 import numpy as np
 
-from .materials import Material
+from contact.materials import Material
 
 __all__ = ["History", "ImpactResult", "BatchResult"]
 

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .validation import check_array
+from contact.checks import check_array
 
 __all__ = ["TabulatedLaw"]
 

@@ -20,8 +20,8 @@ import numpy as np
 from scipy.optimize import minimize_scalar
 from scipy.special import gamma
 
-from .materials import Material, effective_modulus
-from .validation import check_number
+from contact.checks import check_number
+from contact.materials import Material, effective_modulus
 
 __all__ = [
     "PAPER_YIELD_COEFFICIENT",
@@ -42,6 +42,7 @@ __all__ = [
     "yield_velocity",
     "thornton_restitution",
     "hertz_pressure",
+    "hertz_surface_displacement",
     "mesarovic_johnson_pressure",
     "mesarovic_johnson_force",
     "mesarovic_johnson_overlap",
@@ -266,6 +267,26 @@ def hertz_pressure(r, contact_radius, peak_pressure):
         return np.zeros_like(r)
     s = 1.0 - (r / contact_radius) ** 2
     return peak_pressure * np.sqrt(np.maximum(s, 0.0))
+
+
+def hertz_surface_displacement(r, force: float, contact_radius: float, effective_modulus: float) -> np.ndarray:
+    r"""Normal surface displacement (m, into the body) of a Hertz pressure carrying ``force`` (N) over
+    ``contact_radius`` a (m) on a half-space of modulus E* (Pa) (Johnson 1985, Eqs. 3.41a-b):
+
+    .. math:: u_z = \frac{\pi p_0}{4aE^*}(2a^2 - r^2),\ r \le a; \quad
+              u_z = \frac{p_0}{2aE^*}\left[(2a^2 - r^2)\arcsin\frac{a}{r} + a\sqrt{r^2 - a^2}\right],\ r > a
+    """
+    r = np.abs(np.asarray(r, float))
+    if force <= 0.0 or contact_radius <= 0.0:
+        return np.zeros_like(r)
+    a = contact_radius
+    p0 = 3.0 * force / (2.0 * math.pi * a * a)
+    inside = math.pi * p0 / (4.0 * a * effective_modulus) * (2.0 * a * a - r**2)
+    rs = np.maximum(r, a)
+    outside = (
+        p0 / (2.0 * a * effective_modulus) * ((2.0 * a * a - rs**2) * np.arcsin(a / rs) + a * np.sqrt(rs**2 - a * a))
+    )
+    return np.where(r <= a, inside, outside)
 
 
 def mesarovic_johnson_pressure(r, contact_radius, unloading_radius, unloading_pressure):

@@ -14,15 +14,15 @@ import argparse
 import os
 from pathlib import Path
 
-from wear.app.outputs import write_run
-from wear.pipeline import Case, run
+from wear import Case, run
+from wear.app.outputs.run import write_run
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default=".", help="folder in which default_run/ is written")
     args = parser.parse_args()
-    case = Case.default()
+    case = Case()
     if os.environ.get("IMPACTWEAR_QUICK") == "1":
         case = case.with_(
             fem={"mesh_scale": 4.0, "load_steps": 10, "unload_steps": 6},

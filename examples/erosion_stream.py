@@ -1,4 +1,4 @@
-"""Erosion of a steel plate by a stream of sand particles, with surface feedback (public API of wear.erosion).
+"""Erosion of a steel plate by a stream of sand particles, with surface feedback (public API of wear.erosion.stream).
 
 Builds the response table of one particle impact over normal speed x local angle (H-DD impact + the wear law,
 errata Eq. 15), erodes a periodic patch for a few seconds of the paper's Fig. 10 stream (20 m/s, 464 g/m^3) at
@@ -19,8 +19,8 @@ from pathlib import Path
 
 from contact import Material
 from wear import WearLaw
-from wear.erosion import Stream, erode
-from wear.response import ImpactResponse, build_response_table, table_axes
+from wear.erosion.response import ImpactResponse, build_response_table, table_axes
+from wear.erosion.stream import Stream, erode
 
 
 def write_csv(path: Path, header: list[str], rows) -> None:

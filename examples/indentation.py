@@ -14,6 +14,7 @@ import numpy as np
 import fem
 from contact.materials import Material, effective_modulus
 from contact.theory import PAPER_YIELD_COEFFICIENT, first_yield
+from wear.app.figures.indent import write_figures
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--out", default="indentation-example", help="output folder")
@@ -46,10 +47,5 @@ print(f"force law: residual overlap {law.residual_overlap[0]:.3e} m after δ_max
 np.savetxt(out / "force_overlap.csv", np.column_stack([res.overlap, res.force, res.contact_radius]), delimiter=",",
            header="overlap_m,force_N,contact_radius_m", comments="")  # fmt: skip
 res.write(out / "plate.vtu")
-try:
-    from wear.app.figures.indent import write_figures
-
-    write_figures(res, out)
-except ImportError:  # figures live in the front door (wear.app); fem works without them
-    pass
+write_figures(res, out)
 print(f"outputs in {out}")

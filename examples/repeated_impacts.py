@@ -11,9 +11,8 @@ import os
 from pathlib import Path
 
 from contact.theory import yield_velocity
-from wear.app.outputs import write_csv
-from wear.pipeline import Case
-from wear.repeat import RepeatSpec, repeat
+from wear import Case, repeat
+from wear.app.outputs.writer import write_csv
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--out", default="repeated-impacts-example", help="output folder")
@@ -22,16 +21,16 @@ quick = os.environ.get("IMPACTWEAR_QUICK") == "1"
 out = Path(args.out)
 out.mkdir(parents=True, exist_ok=True)
 
-case = Case.default()
+case = Case()
 v_y = yield_velocity(case.ball.radius, case.ball.material(), case.plate.material())
 case = case.with_(
     impact={"speed": 2.2 * v_y, "angle": 0.0},
     wear={"K": 0.0},  # wear off: only the dent and the residual stresses change the plate
     fem={"mesh_scale": 4.0 if quick else 2.0},
     output={"figures": False, "render": False},
+    repeat={"impacts": 4 if quick else 8, "geometry_update": True, "max_plastic_impacts": 4 if quick else 8},
 )
-impacts = 4 if quick else 8
-result = repeat(case, RepeatSpec(impacts=impacts, geometry_update=True, max_plastic_impacts=impacts))
+result = repeat(case)
 
 print(f"V_y = {v_y:.4g} m/s, V_n = {2.2 * v_y:.4g} m/s")
 for row in result.records:

@@ -1,20 +1,28 @@
 """fem: an axisymmetric (r, z) elastic-plastic plate pressed by a sphere, in scikit-fem (SI units).
 
 Entry points: :func:`indent` (overlap path → :class:`IndentationResult`), :func:`indent_impact`
-(along an impact's overlap history), :class:`Plate` (a plate that keeps its state between indentations) and
-:func:`elastic_reload` (its elastic response, condensed onto the surface), :func:`plate_mesh` and :mod:`fem.mesh`
-(meshes).
+(along an impact's overlap history), :class:`Plate` (a plate that keeps its state between indentations),
+:func:`elastic_reload` (its elastic response, condensed onto the surface), :func:`couple` (an impact on the plate's
+own force law, :mod:`fem.coupling`), :func:`plate_mesh` and :mod:`fem.mesh` (meshes).
 """
 
-from .indent import estimate_contact_radius, indent, indent_impact, plate_mesh
-from .mesh import generate_mesh, load_mesh
-from .plate import Plate, surface_profile
-from .reload import ElasticReload, elastic_reload
-from .result import FirstYieldPoint, IndentationResult
-from .solver import ConvergenceError
+from fem.coupling import CoupledImpact, CouplingSettings, PlateCycle, contact_pressure, couple, couple_elastic
+from fem.indent import estimate_contact_radius, indent, indent_impact, plate_mesh
+from fem.mesh import generate_mesh, load_mesh
+from fem.plate import Plate, surface_profile
+from fem.reload import ElasticReload, elastic_reload
+from fem.result import REGIMES, FirstYieldPoint, IndentationResult, worst_regime
+from fem.solver import ConvergenceError
 
 __all__ = [
+    "REGIMES",
     "ConvergenceError",
+    "CoupledImpact",
+    "CouplingSettings",
+    "PlateCycle",
+    "contact_pressure",
+    "couple",
+    "couple_elastic",
     "ElasticReload",
     "FirstYieldPoint",
     "IndentationResult",
@@ -27,4 +35,5 @@ __all__ = [
     "load_mesh",
     "plate_mesh",
     "surface_profile",
+    "worst_regime",
 ]

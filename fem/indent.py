@@ -10,20 +10,20 @@ from __future__ import annotations
 import math
 import os
 import warnings
-from pathlib import Path
 
+import meshio
 import numpy as np
 from skfem import MeshTri
 
+from contact.checks import check_array, check_number
 from contact.materials import Material, effective_modulus
 from contact.theory import first_yield as hertz_first_yield
-from contact.validation import check_array, check_number
-
-from .mesh import DEFAULT_PARAMETERS, default_mesh, generate_mesh, load_mesh, scale_mesh
-from .plasticity import J2Material, von_mises
-from .result import FirstYieldPoint, IndentationResult
-from .solver import PlateSolver, PlateState
-from .sphere_contact import contact_radius
+from fem.mesh import DEFAULT_PARAMETERS, default_mesh, generate_mesh, load_mesh, scale_mesh
+from fem.plasticity import J2Material, von_mises
+from fem.reload import SurfaceCompliance, candidate_nodes
+from fem.result import FirstYieldPoint, IndentationResult
+from fem.solver import PlateSolver, PlateState
+from fem.sphere_contact import contact_radius
 
 __all__ = ["indent", "indent_impact", "plate_mesh", "estimate_contact_radius"]
 
@@ -60,6 +60,24 @@ def estimate_contact_radius(radius: float, e_star: float, plate: Material, overl
         return a
     area_ratio = 0.93 * w**1.136 if w <= 6.0 else 0.94 * w**1.146
     return max(a, fy.contact_radius * math.sqrt(area_ratio))
+
+
+def check_small_strain(radius: float, e_star: float, plate: Material, max_overlap: float) -> None:
+    """A one-line ``ValueError`` if the contact radius expected at ``max_overlap`` (m) exceeds
+    :data:`SMALL_STRAIN_LIMIT` × the ball radius (m), a warning above :data:`SMALL_STRAIN_WARNING` × it."""
+    a_max = estimate_contact_radius(radius, e_star, plate, max_overlap)
+    if a_max / radius > SMALL_STRAIN_LIMIT:
+        raise ValueError(
+            f"overlaps: max overlap {max_overlap:.6g} m gives a contact radius ≈ {a_max:.3g} m "
+            f"= {a_max / radius:.3g} R: "
+            f"small strain needs a/R <= {SMALL_STRAIN_LIMIT} (overlap <= ~{SMALL_STRAIN_LIMIT**2 * radius:.3g} m)"
+        )
+    if a_max / radius > SMALL_STRAIN_WARNING * (1.0 + 1e-6):
+        warnings.warn(
+            f"contact radius ≈ {a_max / radius:.3g} R > {SMALL_STRAIN_WARNING} R: "
+            "the small-strain assumption is strained",
+            stacklevel=3,
+        )
 
 
 def plate_mesh(
@@ -152,8 +170,6 @@ class _Run:
         reach = 0.0 if start is None else self.reach
         compliance = reactions = None
         if predictor and start is not None and len(overlaps):
-            from .reload import SurfaceCompliance, candidate_nodes
-
             nodes = candidate_nodes(s, state, float(np.max(overlaps)))
             if nodes.size:
                 compliance = SurfaceCompliance(s, nodes)
@@ -259,7 +275,8 @@ class _Run:
         self.kept = kept
         return result
 
-    def write(self, path: Path, result: IndentationResult) -> Path:
+    def to_meshio(self, result: IndentationResult) -> meshio.Mesh:
+        """The final state of the run as a meshio mesh, with the last step's pressure (:func:`state_mesh`)."""
         d = self.solver.disc
         nv = d.mesh.p.shape[1]
         pressure = np.zeros(nv)
@@ -267,30 +284,23 @@ class _Run:
         on_vertices = surf < nv
         if result.pressure.size:
             pressure[surf[on_vertices]] = result.pressure[-1][on_vertices]
-        return write_state(self.solver, self.final, path, {"pressure": pressure})
+        return state_mesh(self.solver, self.final, {"pressure": pressure})
 
 
-def write_state(solver: PlateSolver, state: PlateState, path, point_data: dict) -> Path:
-    """Write ``state`` on ``solver``'s mesh (meshio, format from the suffix): the mesh deformed by u, point data
-    ``u`` (m) plus ``point_data`` (one value per vertex), cell data ``von_mises`` (Pa) and
-    ``equivalent_plastic_strain`` (element averages). Atomic: temporary file, then os.replace."""
-    import meshio
-
+def state_mesh(solver: PlateSolver, state: PlateState, point_data: dict[str, np.ndarray]) -> meshio.Mesh:
+    """``state`` on ``solver``'s mesh as a meshio mesh: points (r, z, 0) m deformed by u, point data ``u`` (m) plus
+    ``point_data`` (one value per vertex), cell data ``von_mises`` (Pa) and ``equivalent_plastic_strain`` (element
+    averages)."""
     mesh = solver.disc.mesh
     nv = mesh.p.shape[1]
     u = state.u.reshape(-1, 2)[:nv]
     vm = von_mises(solver.stress_update(state).stress).mean(axis=1)
-    out = meshio.Mesh(
+    return meshio.Mesh(
         np.column_stack([mesh.p.T + u, np.zeros(nv)]),
         [("triangle", mesh.t.T)],
         point_data={"u": np.column_stack([u, np.zeros(nv)]), **point_data},
         cell_data={"von_mises": [vm], "equivalent_plastic_strain": [state.alpha.mean(axis=1)]},
     )
-    path = Path(path)
-    tmp = path.with_name(f".{path.stem}.tmp{os.getpid()}{path.suffix}")
-    meshio.write(str(tmp), out)
-    os.replace(tmp, path)
-    return path
 
 
 def _check_path(overlaps) -> np.ndarray:
@@ -327,19 +337,7 @@ def indent(
     if ball is not None and not isinstance(ball, Material):
         raise ValueError(f"ball={ball!r} is not a contact.Material or None (rigid)")
     material, e_star = _plate_model(plate, ball, hardening)
-    a_max = estimate_contact_radius(radius, e_star, plate, float(path.max()))
-    if a_max / radius > SMALL_STRAIN_LIMIT:
-        raise ValueError(
-            f"overlaps: max overlap {path.max():.6g} m gives a contact radius ≈ {a_max:.3g} m "
-            f"= {a_max / radius:.3g} R: "
-            f"small strain needs a/R <= {SMALL_STRAIN_LIMIT} (overlap <= ~{SMALL_STRAIN_LIMIT**2 * radius:.3g} m)"
-        )
-    if a_max / radius > SMALL_STRAIN_WARNING * (1.0 + 1e-6):
-        warnings.warn(
-            f"contact radius ≈ {a_max / radius:.3g} R > {SMALL_STRAIN_WARNING} R: "
-            "the small-strain assumption is strained",
-            stacklevel=2,
-        )
+    check_small_strain(radius, e_star, plate, float(path.max()))
     if mesh is None:
         mesh_obj = plate_mesh(radius, plate, float(path.max()), ball)
     elif isinstance(mesh, MeshTri):

@@ -18,12 +18,13 @@ is reached exactly. Named boundaries: ``axis`` (r = 0), ``surface`` (z = 0), ``b
 
 from __future__ import annotations
 
+from importlib import resources
 from pathlib import Path
 
 import numpy as np
 from skfem import MeshTri
 
-from contact.validation import check_number
+from contact.checks import check_number
 
 __all__ = [
     "BOUNDARY_NAMES",
@@ -37,8 +38,9 @@ __all__ = [
 
 BOUNDARY_NAMES = ("axis", "surface", "bottom", "side")
 
-#: The default mesh shipped with the package (dimensionless: unit length = a_max).
-DEFAULT_MESH_FILE = Path(__file__).resolve().parents[1] / "meshes" / "indent_default.msh"
+#: The default mesh shipped as data of the ``meshes`` package (dimensionless: unit length = a_max); ``python -m
+#: meshes`` regenerates it from :data:`DEFAULT_PARAMETERS`.
+DEFAULT_MESH_FILE = Path(str(resources.files("meshes").joinpath("indent_default.msh")))
 
 #: Parameters of the default mesh (see :func:`generate_mesh`).
 DEFAULT_PARAMETERS = {"contact_elements": 32, "yield_elements": 20, "yield_radius_ratio": 1.0 / 5.5, "grading": 0.5}

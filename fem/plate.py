@@ -27,17 +27,17 @@ from __future__ import annotations
 import math
 import os
 from dataclasses import replace
-from pathlib import Path
 
+import meshio
 import numpy as np
 from skfem import MeshTri
 
+from contact.checks import check_array, check_number
 from contact.materials import Material
-from contact.validation import check_array, check_number
-
-from .indent import _plate_model, _Run, plate_mesh, write_state
-from .result import IndentationResult
-from .solver import PlateSolver, PlateState
+from contact.theory import first_yield as hertz_first_yield
+from fem.indent import _plate_model, _Run, check_small_strain, plate_mesh, state_mesh
+from fem.result import IndentationResult, join
+from fem.solver import PlateSolver, PlateState
 
 __all__ = ["Plate", "surface_profile"]
 
@@ -62,6 +62,7 @@ class Plate:
         max_overlap = check_number("max_overlap", max_overlap, low=0.0, low_open=True, high=radius, units="m")
         hardening = check_number("hardening", hardening, low=0.0, high=1e12, units="Pa", what="hardening modulus")
         self.material, self.effective_modulus = _plate_model(plate, ball, hardening)
+        check_small_strain(radius, self.effective_modulus, plate, max_overlap)
         if mesh is None:
             mesh = plate_mesh(radius, plate, max_overlap, ball)
         elif not isinstance(mesh, MeshTri):
@@ -107,6 +108,19 @@ class Plate:
         the wear."""
         return -self.state.u[self.solver.surface_uz]
 
+    @property
+    def is_virgin(self) -> bool:
+        """True until a state is committed (no indentation has left its state yet)."""
+        return self._virgin
+
+    def first_yield_overlap(self) -> float | None:
+        """Overlap δ_y (m) at which a virgin plate first yields under Hertz contact (errata Eq. 18 with the exact
+        C(ν)); None for a plate that never yields or is no longer virgin (its first yield is behind it)."""
+        m = self.material
+        if not self._virgin or m.yield_strength is None:
+            return None
+        return hertz_first_yield(self.radius, self.effective_modulus, m.yield_strength, m.nu).overlap
+
     def first_contact_overlap(self) -> float:
         """Overlap δ (m, sphere tip below the original plane) at which the sphere first touches the current
         surface: min over the surface nodes of z_s(r; 0) − z(r) (0 for a flat, virgin plate)."""
@@ -147,7 +161,7 @@ class Plate:
         if run.final.n_active and end > 0.0:
             # still touching (pile-up, or a surface that rose): continue to the original plane
             more = run.run(np.linspace(end, 0.0, 4)[1:], start=run.final, keep=False, predictor=self.elastic_predictor)
-            result = _concat(result, more)
+            result = join(result, more)
         run.kept = kept
         loading.unloadings.append(result)
         if commit:
@@ -194,11 +208,11 @@ class Plate:
         return self.solver.disc.mesh
 
     # ---------------------------------------------------------------- output
-    def write(self, path: str | os.PathLike) -> Path:
-        """Write the current state (meshio, format from the suffix, e.g. ``.vtu``): the worn mesh deformed by u,
+    def to_meshio(self) -> meshio.Mesh:
+        """The current state as a meshio mesh: the worn mesh deformed by u,
         point data ``u`` (m), ``wear_depth`` (m, the surface vertices' cumulative wear, 0 elsewhere),
         ``surface`` (1 on the surface vertices), cell data ``von_mises`` (Pa) and ``equivalent_plastic_strain``
-        (element averages). Atomic: temporary file, then os.replace."""
+        (element averages)."""
         s = self.solver
         mesh = s.disc.mesh
         nv = mesh.p.shape[1]
@@ -207,28 +221,11 @@ class Plate:
         sv = self._surface_vertices
         wear[sv] = np.interp(mesh.p[0, sv], s.disc.surface_r, self.wear_depth)
         surface[sv] = 1.0
-        return write_state(s, self.state, path, {"wear_depth": wear, "surface": surface})
+        return state_mesh(s, self.state, {"wear_depth": wear, "surface": surface})
 
-
-def _concat(a: IndentationResult, b: IndentationResult) -> IndentationResult:
-    """Two consecutive results of one run as one."""
-
-    def cat(name):
-        return np.concatenate([np.asarray(getattr(a, name)), np.asarray(getattr(b, name))])
-
-    return replace(
-        b,
-        overlap=cat("overlap"),
-        force=cat("force"),
-        contact_radius=cat("contact_radius"),
-        max_pressure=cat("max_pressure"),
-        mean_pressure=cat("mean_pressure"),
-        pressure=np.vstack([a.pressure, b.pressure]),
-        max_equivalent_plastic_strain=cat("max_equivalent_plastic_strain"),
-        regime=list(a.regime) + list(b.regime),
-        newton_iterations=cat("newton_iterations"),
-        unloadings=[],
-    )
+    def write(self, path: str | os.PathLike) -> None:
+        """Write :meth:`to_meshio` to ``path`` (meshio; format from the suffix, e.g. ``.vtu``)."""
+        self.to_meshio().write(path)
 
 
 def surface_profile(r: np.ndarray, depth: np.ndarray, where: np.ndarray) -> np.ndarray:

@@ -36,13 +36,12 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse.linalg as spla
 
-from contact.validation import check_array
-
-from .forms import strain
-from .plasticity import radial_return
-from .result import IndentationResult
-from .solver import PlateState
-from .sphere_contact import contact_radius
+from contact.checks import check_array
+from fem.forms import strain
+from fem.plasticity import radial_return
+from fem.result import IndentationResult
+from fem.solver import PlateState
+from fem.sphere_contact import contact_radius
 
 __all__ = ["ElasticReload", "SurfaceCompliance", "candidate_nodes", "elastic_reload"]
 

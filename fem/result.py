@@ -3,16 +3,32 @@
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass, field
-from pathlib import Path
+from dataclasses import dataclass, field, replace
 
+import meshio
 import numpy as np
 
 from contact.tabulated import TabulatedLaw
 
-__all__ = ["FirstYieldPoint", "IndentationResult"]
+__all__ = [
+    "REGIMES",
+    "FirstYieldPoint",
+    "IndentationResult",
+    "join",
+    "loading_branch",
+    "unloading_curve",
+    "worst_regime",
+]
 
+#: The plate's regimes, from the least to the most plastic: no plastic strain; a plastic zone contained below the
+#: surface; a plastic zone reaching the surface inside the contact; the whole surface layer under the contact
+#: plastic.
 REGIMES = ("elastic", "contained", "surface-plastic", "fully-plastic")
+
+
+def worst_regime(regimes) -> str:
+    """The most plastic of ``regimes`` (see :data:`REGIMES`; "elastic" if there are none)."""
+    return max((r for r in regimes if r in REGIMES), key=REGIMES.index, default="elastic")
 
 
 @dataclass(frozen=True)
@@ -74,50 +90,12 @@ class IndentationResult:
         return result
 
     # ------------------------------------------------------------------ force law
-    def _loading_branch(self):
-        d = np.asarray(self.overlap)
-        peak = int(np.argmax(d))
-        keep = np.concatenate([[True], np.diff(d[: peak + 1]) > 0.0])
-        lo, lf, la = d[: peak + 1][keep], self.force[: peak + 1][keep], self.contact_radius[: peak + 1][keep]
-        if lo[0] > 0.0:
-            lo, lf, la = np.r_[0.0, lo], np.r_[0.0, lf], np.r_[0.0, la]
-        return lo, lf, la, peak
-
-    def _unloading_curve(self, samples: int):
-        """Unloading curve of this run (δ decreasing from its peak), resampled, ending at F = 0."""
-        d, f, a = np.asarray(self.overlap), np.asarray(self.force), np.asarray(self.contact_radius)
-        peak = int(np.argmax(d))
-        if peak == d.size - 1:
-            return None
-        ud, uf, ua = d[peak:], f[peak:], a[peak:]
-        positive = np.flatnonzero(uf > 0.0)
-        last = int(positive[-1]) if positive.size else 0
-        if last == 0:
-            return None
-        # the residual overlap: F^{2/3} is linear in δ near the end (Hertz-like re-contact)
-        if last + 1 < ud.size:
-            g1, g0 = uf[last] ** (2 / 3), uf[last - 1] ** (2 / 3)
-            slope = (g0 - g1) / (ud[last - 1] - ud[last])
-            dp = ud[last] - g1 / slope if slope > 0 else ud[last + 1]
-            dp = float(np.clip(dp, ud[last + 1], ud[last]))
-        else:
-            dp = float(ud[last])  # the path stopped before the force vanished
-        od = np.r_[ud[: last + 1], dp]
-        of = np.r_[uf[: last + 1], 0.0]
-        oa = np.r_[ua[: last + 1], 0.0]
-        s = np.linspace(1.0, 0.0, samples)
-        grid = dp + s * (od[0] - dp)
-        order = np.argsort(od)
-        force = np.interp(grid, od[order], of[order] ** (2 / 3)) ** 1.5
-        radius = np.interp(grid, od[order], oa[order])
-        return float(od[0]), grid, force, radius
-
     def force_law(self, samples: int = 41) -> TabulatedLaw:
         """Tabulated loading F(δ), a(δ) and one unloading curve per computed unloading (this run's
         own, if its path unloads, and each :meth:`unload_from`), resampled to ``samples`` points
         from δ_max down to the residual overlap δ_p where F = 0. Units m, N."""
-        lo, lf, la, _ = self._loading_branch()
-        curves = [c for c in [self._unloading_curve(samples)] + [u._unloading_curve(samples) for u in self.unloadings]]
+        lo, lf, la = loading_branch(self.overlap, self.force, self.contact_radius)
+        curves = [unloading_curve(r.overlap, r.force, r.contact_radius, samples) for r in [self, *self.unloadings]]
         curves = sorted((c for c in curves if c is not None), key=lambda c: c[0])
         unique = []
         for c in curves:
@@ -139,10 +117,82 @@ class IndentationResult:
         )
 
     # ------------------------------------------------------------------ output
-    def write(self, path: str | os.PathLike) -> Path:
-        """Write the deformed mesh of the last step (meshio; format from the suffix, e.g. .vtu) with
-        point data ``u`` (m), ``pressure`` (Pa, surface) and cell data ``von_mises`` (Pa) and
-        ``equivalent_plastic_strain`` (element averages). Atomic: temp file then os.replace."""
+    def to_meshio(self) -> meshio.Mesh:
+        """The deformed mesh of the last step: points (r, z, 0) m, point data ``u`` (m) and ``pressure`` (Pa,
+        surface), cell data ``von_mises`` (Pa) and ``equivalent_plastic_strain`` (element averages)."""
         if self._run is None:
-            raise ValueError("write needs the final state of the run, which this result does not hold")
-        return self._run.write(Path(path), self)
+            raise ValueError("to_meshio needs the final state of the run, which this result does not hold")
+        return self._run.to_meshio(self)
+
+    def write(self, path: str | os.PathLike) -> None:
+        """Write :meth:`to_meshio` to ``path`` (meshio; format from the suffix, e.g. ``.vtu``)."""
+        self.to_meshio().write(path)
+
+
+def loading_branch(overlap, force, contact_radius, first_contact: float = 0.0):
+    """The monotonic loading branch of a path, from first contact: (δ − ``first_contact``, F, a) over the steps up to
+    the largest overlap where δ increases and the sphere touches, from (0, 0, 0). Units m, N, m."""
+    d = np.asarray(overlap, float) - first_contact
+    k = int(np.argmax(d))
+    d = d[: k + 1]
+    f = np.maximum(np.asarray(force, float)[: k + 1], 0.0)
+    a = np.maximum(np.asarray(contact_radius, float)[: k + 1], 0.0)
+    keep = (d > 0.0) & np.concatenate([[True], np.diff(d) > 0.0])
+    return np.r_[0.0, d[keep]], np.r_[0.0, f[keep]], np.r_[0.0, a[keep]]
+
+
+def unloading_curve(overlap, force, contact_radius, samples: int):
+    """The unloading curve of a path (δ decreasing from its largest value), resampled on ``samples`` overlaps from
+    the top down to the residual overlap δ_p where F = 0: (top δ*, overlaps, forces, contact radii), or None if the
+    path does not unload. F^{2/3} is interpolated linearly in δ (Hertz-like), and δ_p extrapolated so. Units m, N."""
+    d, f, a = np.asarray(overlap, float), np.asarray(force, float), np.asarray(contact_radius, float)
+    peak = int(np.argmax(d))
+    if peak == d.size - 1:
+        return None
+    ud, uf, ua = d[peak:], f[peak:], a[peak:]
+    positive = np.flatnonzero(uf > 0.0)
+    last = int(positive[-1]) if positive.size else 0
+    if last == 0:
+        return None
+    # the residual overlap: F^{2/3} is linear in δ near the end (Hertz-like re-contact)
+    if last + 1 < ud.size:
+        g1, g0 = uf[last] ** (2 / 3), uf[last - 1] ** (2 / 3)
+        slope = (g0 - g1) / (ud[last - 1] - ud[last])
+        dp = ud[last] - g1 / slope if slope > 0 else ud[last + 1]
+        dp = float(np.clip(dp, ud[last + 1], ud[last]))
+    else:
+        dp = float(ud[last])  # the path stopped before the force vanished
+    od = np.r_[ud[: last + 1], dp]
+    of = np.r_[uf[: last + 1], 0.0]
+    oa = np.r_[ua[: last + 1], 0.0]
+    s = np.linspace(1.0, 0.0, samples)
+    grid = dp + s * (od[0] - dp)
+    order = np.argsort(od)
+    curve_force = np.interp(grid, od[order], of[order] ** (2 / 3)) ** 1.5
+    radius = np.interp(grid, od[order], oa[order])
+    return float(od[0]), grid, curve_force, radius
+
+
+def join(first: IndentationResult, second: IndentationResult, below: float | None = None) -> IndentationResult:
+    """The steps of ``first`` (those strictly below the overlap ``below``, m, up to its peak, if given) followed by
+    the steps of ``second`` (e.g. a loading and the unloading from δ* = ``below``). The state, surface and residual
+    depth are ``second``'s; the first yield is ``first``'s if it lies within the joined path."""
+    d = np.asarray(first.overlap, float)
+    k = d.size
+    if below is not None:
+        kept = (d < below * (1.0 - 1e-12)) & np.concatenate([[True], np.diff(d) > 0])
+        k = d.size if kept.all() else int(np.argmin(kept))
+    reach = max(float(np.max(d[:k], initial=0.0)), float(np.max(second.overlap, initial=0.0)))
+    fy = first.first_yield if first.first_yield is not None else second.first_yield
+    if fy is not None and fy.overlap > reach:
+        fy = None
+
+    def cat(name: str) -> np.ndarray:
+        return np.concatenate([np.asarray(getattr(first, name))[:k], np.asarray(getattr(second, name))])
+
+    return replace(second, overlap=cat("overlap"), force=cat("force"), contact_radius=cat("contact_radius"),
+                   max_pressure=cat("max_pressure"), mean_pressure=cat("mean_pressure"),
+                   pressure=np.vstack([np.asarray(first.pressure)[:k], np.asarray(second.pressure)]), first_yield=fy,
+                   max_equivalent_plastic_strain=cat("max_equivalent_plastic_strain"),
+                   regime=list(first.regime[:k]) + list(second.regime), newton_iterations=cat("newton_iterations"),
+                   time=None, unloadings=[])  # fmt: skip

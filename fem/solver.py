@@ -28,9 +28,9 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from skfem import MeshTri
 
-from .forms import assemble, discretise, element_matrices, internal_force, strain
-from .plasticity import J2Material, radial_return
-from .sphere_contact import sphere_surface
+from fem.forms import assemble, discretise, element_matrices, internal_force, strain
+from fem.plasticity import J2Material, radial_return
+from fem.sphere_contact import sphere_surface
 
 __all__ = ["ConvergenceError", "PlateState", "PlateSolver"]
 

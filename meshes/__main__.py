@@ -1,5 +1,6 @@
-"""``python -m meshes``: rewrite the default plate mesh."""
+"""``python -m meshes``: rewrite the default plate mesh from :data:`fem.mesh.DEFAULT_PARAMETERS`."""
 
-from meshes import regenerate
+from fem.mesh import DEFAULT_MESH_FILE, DEFAULT_PARAMETERS, generate_mesh
 
-print(regenerate())
+generate_mesh(**DEFAULT_PARAMETERS).save(str(DEFAULT_MESH_FILE))
+print(DEFAULT_MESH_FILE)

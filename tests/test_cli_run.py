@@ -1,15 +1,14 @@
-"""``impactwear run`` (issue 4 acceptance 7): the default case runs; malformed case files give one line naming the
-key, exit status 2 and no output."""
+"""``impactwear run``: the default case runs; malformed case files give one line naming the key, exit status 2 and
+no output; the default round-trips through --print-default."""
 
 import json
 
 import pytest
 
 from wear.app.cli import main
-from wear.app.run_case import default_run_text, load_run_case
-from wear.pipeline import Case
+from wear.case import JOBS, Case, dump_case, load_case
 
-GOOD = default_run_text()
+GOOD = dump_case(Case(), JOBS["run"].tables)
 
 
 def _replace(old, new):
@@ -17,7 +16,7 @@ def _replace(old, new):
     return GOOD.replace(old, new, 1)
 
 
-# (case text, text the one-line error must contain): at least 10 kinds of malformed case (acceptance 7)
+# (case text, text the one-line error must contain): at least 10 kinds of malformed case
 MALFORMED = {
     "unknown key": (_replace("alpha = 1.0", "alpha = 1.0\nalfa = 2.0"), "wear.alfa"),
     "negative K": (_replace("K = 1e-11", "K = -1.0"), "wear.K=-1"),
@@ -34,7 +33,7 @@ MALFORMED = {
     "negative density": (_replace("density = 3950.0", "density = -1.0"), "ball.density=-1"),
     "missing plate mesh file": (GOOD + "\n", None),
 }
-MALFORMED["missing plate mesh file"] = (_replace("render = true", 'render = true\nplate_mesh = "nowhere.vtu"'),
+MALFORMED["missing plate mesh file"] = (_replace('plate_mesh = ""', 'plate_mesh = "nowhere.vtu"'),
                                         "output.plate_mesh='nowhere.vtu'")  # fmt: skip
 
 
@@ -52,9 +51,11 @@ def test_malformed_case_one_line_exit_2_no_output(kind, tmp_path, capsys):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["case.toml"]
 
 
-def test_default_case_file_matches_python_default():
-    """The embedded TOML and Case.default() are the same case (one documented default)."""
-    assert load_run_case() == Case.default()
+def test_default_case_file_matches_python_default(capsys):
+    """--print-default prints Case() (one documented default), and no file means that case."""
+    assert main(["run", "--print-default"]) == 0
+    assert capsys.readouterr().out == GOOD
+    assert load_case(None, "run") == Case()
 
 
 def test_run_case_without_fe_from_cli(tmp_path, capsys):
@@ -71,7 +72,7 @@ def test_run_case_without_fe_from_cli(tmp_path, capsys):
 
 @pytest.mark.filterwarnings("ignore:elastic ball")
 def test_default_run_succeeds(tmp_path, capsys):
-    """Acceptance 7: `impactwear run` with no case file runs the embedded default case (two-way FE coupling)."""
+    """`impactwear run` with no case file runs the default case (two-way FE coupling)."""
     status = main(["run", "--out", str(tmp_path / "out"), "--json"])
     assert status == 0
     summary = json.loads(capsys.readouterr().out)

@@ -1,4 +1,4 @@
-"""Two-way impact ⇄ plate coupling (wear/coupling.py; issue 4 acceptance 5).
+"""The impact ⇄ plate coupling (fem.couple).
 
 The coupling machinery (loading once, unloading from the converged maximum, the tabulated law, the FE pressure
 placed on the impact's time axis) is first checked with stand-in "plates" whose force laws are closed forms
@@ -7,57 +7,35 @@ real FE plate (fem.indent) run when fem is available.
 """
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 import pytest
 
-from contact import Material, TabulatedLaw, effective_modulus
-from contact.theory import hertz_force, hertz_impact, sphere_mass, thornton_restitution, yield_velocity
-from wear import coupling
-from wear.pipeline import Case
+import fem
+from contact import Material, effective_modulus
+from contact.theory import (
+    default_limiting_pressure,
+    hertz_force,
+    hertz_impact,
+    hertz_surface_displacement,
+    sphere_mass,
+    thornton_restitution,
+    yield_velocity,
+)
+from wear import Case, restitution_sweep, run
+from wear.app.figures.run import restitution_comparison
+from wear.chain.plate import coupling_settings, impact_on_law
+from wear.chain.single import estimate_impact
 
 BALL = Material(E=210e9, nu=0.3, density=7850.0, name="steel")
 
 
-@dataclass
-class ClosedFormPlate:
-    """A stand-in FE result on a path of overlaps: Hertz loading (elastic) or Thornton (1997) elastic-perfectly
-    plastic loading F = F_y + π p_y R (δ − δ_y), with Thornton's elastic unloading of enlarged radius R_p."""
-
-    overlap: np.ndarray
-    force: np.ndarray
-    contact_radius: np.ndarray
-    surface_r: np.ndarray
-    pressure: np.ndarray
-    residual_depth: np.ndarray
-    first_yield: object = None
-    regime: tuple = ()
-    max_equivalent_plastic_strain: np.ndarray = None
-    unloadings: list = None
-
-    def force_law(self):
-        k = int(np.argmax(self.overlap))
-        d, f, a = self.overlap[: k + 1], self.force[: k + 1], self.contact_radius[: k + 1]
-        u = self.unloadings[-1]
-        ud, uf, ua = u.overlap, u.force, u.contact_radius
-        zero = np.flatnonzero(uf <= 0.0)
-        n = zero[0] + 1 if zero.size else ud.size
-        return TabulatedLaw(
-            np.concatenate([[0.0], d]),
-            np.concatenate([[0.0], f]),
-            np.concatenate([[0.0], a]),
-            np.array([ud[0]]),
-            ud[None, :n],
-            uf[None, :n],
-            ua[None, :n],
-        )
-
-
 def closed_form_indent(radius, e_star, p_y=None):
-    """indent(case, ball, plate, overlaps) for the stand-in plate (dense unloading from each path's maximum)."""
+    """A stand-in FE result along a path of overlaps: Hertz loading (elastic) or Thornton (1997) elastic-perfectly
+    plastic loading F = F_y + π p_y R (δ − δ_y), with Thornton's elastic unloading of enlarged radius R_p; the
+    pressure is Hertz's over the current radius."""
 
-    def indent(case, ball, plate, overlaps):
+    def indent(overlaps) -> fem.IndentationResult:
         overlaps = np.asarray(overlaps, float)
         k = int(np.argmax(overlaps))
         d_star = overlaps[k]
@@ -93,20 +71,31 @@ def closed_form_indent(radius, e_star, p_y=None):
         ratio = np.divide(r[None, :], a[:, None], out=np.full((a.size, r.size), 2.0), where=a[:, None] > 0)
         p = p0[:, None] * np.sqrt(np.maximum(1 - ratio**2, 0))
         n = overlaps.size
-        return ClosedFormPlate(overlaps, F, a, r, p, np.zeros_like(r), None, ("elastic",) * n, np.zeros(n), [])
+        return fem.IndentationResult(overlaps, F, a, p.max(axis=1), p0 * 2 / 3, r, p, None, np.zeros_like(r),
+                                     np.zeros(n), ["elastic"] * n, np.zeros(n, int), radius, e_star)  # fmt: skip
 
     return indent
 
 
-def closed_form_unload(indent):
-    """unload(case, fe_load, d_star): the stand-in of IndentationResult.unload_from (dense unloading from d_star)."""
+class ClosedFormPlate:
+    """A stand-in of :class:`fem.Plate` whose force law is a closed form (:func:`closed_form_indent`): virgin and
+    flat, loading along the path, unloading densely from the requested maximum."""
 
-    def unload(case, fe_load, d_star):
-        res = indent(case, None, None, np.array([d_star, 0.5 * d_star]))
-        fe_load.unloadings.append(res)
-        return res
+    def __init__(self, radius, e_star, p_y=None):
+        self.effective_modulus = e_star
+        self._indent = closed_form_indent(radius, e_star, p_y)
 
-    return unload
+    def first_contact_overlap(self) -> float:
+        return 0.0
+
+    def first_yield_overlap(self) -> None:
+        return None
+
+    def load(self, overlaps):
+        return self._indent(overlaps)
+
+    def unload(self, loading, max_overlap, steps=8):
+        return self._indent(np.array([max_overlap, 0.5 * max_overlap]))
 
 
 def _case(plate: Material, speed: float, angle: float = 0.0, **fem):
@@ -120,13 +109,9 @@ def _case(plate: Material, speed: float, angle: float = 0.0, **fem):
     )
 
 
-def _couple(case, indent):
-    ball, plate = case.ball.material(), case.plate.material()
-    from wear.pipeline import _impact
-
-    estimate = _impact(case, ball, plate)
-    fe_load = coupling.load_plate(case, ball, plate, estimate, indent=lambda *a, keep_states: indent(*a))
-    return coupling.couple(case, ball, plate, fe_load, estimate, unload=closed_form_unload(indent))
+def _couple(case, plate):
+    estimate = estimate_impact(case)
+    return fem.couple(plate, impact_on_law(case), estimate.max_overlap, coupling_settings(case))
 
 
 def test_coupling_on_hertz_plate_reproduces_hertz_impact():
@@ -135,7 +120,7 @@ def test_coupling_on_hertz_plate_reproduces_hertz_impact():
     plate = Material(E=210e9, nu=0.3, density=7850.0)
     case = _case(plate, 1.0, angle=30.0)
     e_star = effective_modulus(BALL, plate)
-    res = _couple(case, closed_form_indent(5e-3, e_star))
+    res = _couple(case, ClosedFormPlate(5e-3, e_star))
     ref = hertz_impact(sphere_mass(5e-3, BALL.density), 5e-3, e_star, math.cos(math.radians(30.0)))
     assert res.converged and res.iterations <= 3 and res.change < 0.005
     assert res.impact.max_force == pytest.approx(ref.max_force, rel=0.01)
@@ -155,11 +140,9 @@ def test_coupling_on_thornton_plate_reproduces_thornton_restitution(ratio):
     plate = Material(E=210e9, nu=0.3, density=7850.0, yield_strength=400e6)
     e_star = effective_modulus(BALL, plate)
     v_y = yield_velocity(5e-3, BALL, plate)
-    from contact.theory import default_limiting_pressure
-
     p_y = default_limiting_pressure(BALL, plate)
     case = _case(plate, ratio * v_y)
-    res = _couple(case, closed_form_indent(5e-3, e_star, p_y))
+    res = _couple(case, ClosedFormPlate(5e-3, e_star, p_y))
     assert res.converged
     assert res.impact.normal_restitution == pytest.approx(float(thornton_restitution(ratio)), rel=0.01)
 
@@ -178,12 +161,11 @@ def _fe_case(plate: Material, speed: float, angle: float = 0.0, **fem_options):
 def test_fe_coupling_elastic_plate_matches_hertz():
     """Issue 4 acceptance 5 (elastic): two-way coupling on the elastic FE plate (fem.indent, coarse mesh) gives the
     closed-form Hertz impact's max force and contact time (errata Eqs. 4, 10–11) within 1%, and e_n = 1 within 1%."""
-    from wear.pipeline import run
-
     plate = Material(E=210e9, nu=0.3, density=7850.0)
     case = _fe_case(plate, 1.0, angle=30.0).with_(impact={"normal_model": "hertz"})
     result = run(case)
-    ref = coupling.hertz_reference(case, case.ball.material(), plate)
+    v_n = case.impact.speed * math.cos(math.radians(case.impact.angle))
+    ref = hertz_impact(sphere_mass(5e-3, BALL.density), 5e-3, effective_modulus(BALL, plate), v_n)
     assert result.coupling.converged and result.coupling.change < 0.005
     assert result.impact.normal_model == "tabulated"
     assert result.impact.max_force == pytest.approx(ref.max_force, rel=0.01)
@@ -202,11 +184,9 @@ def test_fe_coupling_plastic_plate_converges_and_matches_thornton(tmp_path):
     not the mesh): the FE plate dissipates less than Thornton's flat-topped
     pressure at p_y, and the gap grows with V/V_y. The side-by-side figure is written by
     wear.app.figures.run.restitution_comparison (reused by the validation report)."""
-    from wear.app.figures.run import restitution_comparison
-
     plate = Material(E=210e9, nu=0.3, density=7850.0, yield_strength=400e6)
     case = _fe_case(plate, 1.0)
-    sweep = coupling.restitution_sweep(case, [1.2, 1.5, 2.0])
+    sweep = restitution_sweep(case, [1.2, 1.5, 2.0])
     assert np.all(sweep.change < 0.005)
     assert np.all(np.abs(sweep.difference) < 0.05), sweep.difference
     assert np.all(sweep.restitution < 1.0)  # the plate yields: energy is lost
@@ -221,7 +201,7 @@ def test_hertz_surface_displacement_closed_forms():
     R, e_star, a = 5e-3, 1e11, 1e-4
     p0 = 2 * a * e_star / (math.pi * R)
     force = 2 * math.pi * a * a * p0 / 3
-    u = coupling.hertz_surface_displacement(np.array([0.0, a * (1 - 1e-9), a * (1 + 1e-9), 30 * a]), force, a, e_star)
+    u = hertz_surface_displacement(np.array([0.0, a * (1 - 1e-9), a * (1 + 1e-9), 30 * a]), force, a, e_star)
     assert u[0] == pytest.approx(a * a / R, rel=1e-12)
     assert u[1] == pytest.approx(u[2], rel=1e-6)
     assert u[3] == pytest.approx(force / (math.pi * e_star * 30 * a), rel=1e-3)

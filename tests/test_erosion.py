@@ -1,4 +1,4 @@
-"""Particle-stream erosion (wear.erosion.erode): acceptance tests of issue 6, section 2.
+"""Particle-stream erosion (wear.erosion.stream.erode): acceptance tests of issue 6, section 2.
 
 The stream: silica sand (R = 100 µm) on steel at 20 m/s, 45° from the normal, μ = 0.3, wear law α = 1, β = 0.3
 (the paper's fit). The references are independent of the erosion code: the single-impact chain
@@ -13,8 +13,8 @@ import pytest
 
 from contact import Material, simulate_impact
 from wear import WearLaw, wear_from_impact
-from wear.erosion import Stream, erode, footprint_on_grid
-from wear.response import ImpactResponse, build_response_table, table_axes
+from wear.erosion.response import ImpactResponse, build_response_table, table_axes
+from wear.erosion.stream import Stream, erode, footprint_on_grid
 
 SAND = Material(E=94e9, nu=0.17, density=2650.0, name="silica")
 STEEL = Material(E=200e9, nu=0.3, density=7850.0, yield_strength=350e6, name="steel")

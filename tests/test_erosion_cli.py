@@ -82,8 +82,8 @@ def test_erode_angles_writes_erosion_vs_angle(tmp_path):
     [
         (["--set", "erosion.concentration=3000.0"], "concentration=3000 is out of range"),
         (["--set", "erosion.patch_size=0.004"], "patch_size=0.004 is out of range"),
-        (["--set", "erosion.K=-1.0"], "erosion.K=-1 is out of range"),
-        (["--set", "erosion.pressure='fe'"], "erosion.pressure='fe' is not a valid choice"),
+        (["--set", "wear.K=-1.0"], "wear.K=-1 is out of range"),
+        (["--set", "wear.pressure='fe'"], "wear.pressure='fe' is not a valid choice"),
         (["--angles", "0,95"], "angle=95 is out of range"),
         (["--set", "erosion.deformation_wear=true"], "deformation_wear_factor=None"),
     ],

@@ -1,4 +1,4 @@
-"""The response table of the stream erosion (wear.response): resolution, the plug-in hook, Bitter's term."""
+"""The response table of the stream erosion (wear.erosion.response): resolution, the plug-in hook, Bitter's term."""
 
 import math
 
@@ -8,8 +8,7 @@ from scipy.interpolate import RegularGridInterpolator
 
 from contact import Material, yield_velocity
 from wear import WearLaw
-from wear.erosion import Stream, erode
-from wear.response import (
+from wear.erosion.response import (
     Footprint,
     ImpactResponse,
     bitter_threshold_velocity,
@@ -17,6 +16,7 @@ from wear.response import (
     build_response_table,
     table_axes,
 )
+from wear.erosion.stream import Stream, erode
 
 SAND = Material(E=94e9, nu=0.17, density=2650.0, name="silica")
 STEEL = Material(E=200e9, nu=0.3, density=7850.0, yield_strength=350e6, name="steel")

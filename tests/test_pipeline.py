@@ -7,8 +7,8 @@ import meshio
 import numpy as np
 import pytest
 
-from wear.app.outputs import write_run
-from wear.pipeline import Case, run
+from wear import Case, run
+from wear.app.outputs.run import write_run
 from wear.surface import integrate_point_data
 
 # a quick case: alumina on Ti-6Al-4V, 3 m/s at 30 deg (the default case's impact), Thornton pressure, no FE

@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from wear.app.outputs import atomic_output_dir, write_csv, write_json
-from wear.app.render import default_exaggeration, render_surface, rendering_available
+from wear.app.outputs.render import default_exaggeration, render_surface, rendering_available
+from wear.app.outputs.writer import atomic_output_dir, write_csv, write_json
 from wear.surface import DeformedSurface, surface_mesh
 
 
@@ -62,14 +62,14 @@ def test_atomic_output_dir_leaves_nothing_on_failure(tmp_path):
 def test_run_without_rendering_libraries_still_succeeds(tmp_path, monkeypatch, capsys):
     """Issue 4 item 8: where EGL/OSMesa are missing the run succeeds, skips the 3-D view and names the Debian
     packages to install (simulated by making the library probe fail)."""
-    import wear.app.render as render
+    import wear.app.outputs.render as render
     from wear.app.cli import main
-    from wear.app.run_case import default_run_text
+    from wear.case import JOBS, Case, dump_case
 
     monkeypatch.setattr(render, "_loadable", lambda *names: False)
     monkeypatch.delenv("DISPLAY", raising=False)
-    text = default_run_text().replace('pressure = "fe"', 'pressure = "thornton"')
-    text = text.replace('coupling = "two-way"', 'coupling = "none"').replace("figures = true", "figures = false")
+    case = Case().with_(wear={"pressure": "thornton"}, fem={"coupling": "none"}, output={"figures": False})
+    text = dump_case(case, JOBS["run"].tables)
     case = tmp_path / "case.toml"
     case.write_text(text)
     assert main(["run", str(case), "--out", str(tmp_path / "out"), "--quiet"]) == 0

@@ -1,24 +1,23 @@
-"""Repeated impacts at one site (issue 6 §1): shakedown, re-impact on a conforming dent, N × one impact, pressure
+"""Repeated impacts at one site: shakedown, re-impact on a conforming dent, N × one impact, pressure
 relief by the dented surface, bad input. Reduced FE meshes (``fem.mesh_scale`` 3–4) and few impacts."""
 
 import math
-from dataclasses import replace
 
 import numpy as np
 import pytest
 
 from contact import effective_modulus
 from contact.theory import yield_velocity
+from wear import Case, repeat, run
 from wear.app.cli import main
-from wear.pipeline import Case, run
-from wear.repeat import RepeatSpec, repeat
+from wear.case import JOBS, RepeatSpec, dump_case
 
 pytestmark = pytest.mark.filterwarnings("ignore:elastic ball", "ignore:contact radius")
 
 
 def _case(ratio: float, angle: float = 0.0, K: float = 1e-11, elastic: bool = False, scale: float = 3.0) -> Case:
     """The default case (alumina R 2.5 mm on Ti-6Al-4V) at V_n = ``ratio`` × Thornton's yield speed V_y."""
-    case = Case.default()
+    case = Case()
     v_y = yield_velocity(case.ball.radius, case.ball.material(), case.plate.material())
     speed = ratio * v_y / math.cos(math.radians(angle))
     plate = {"yield_strength": None} if elastic else {}
@@ -42,7 +41,7 @@ def below_shakedown():
     def keep(impact, plate):
         dents[impact] = (plate.surface_r, plate.dent_depth.copy())
 
-    result = repeat(case, RepeatSpec(impacts=6, geometry_update=True, max_plastic_impacts=10), on_computed=keep)
+    result = repeat(case.with_(repeat=dict(impacts=6, geometry_update=True, max_plastic_impacts=10)), on_computed=keep)
     return case, result, dents
 
 
@@ -142,7 +141,7 @@ def test_without_geometry_update_n_impacts_wear_n_times_one():
     first; and the first equals the single-impact pipeline's (``wear.run``, same FE coupling; reference validated
     by the impulse identity in tests/test_wear_integrate.py) within 1%."""
     case = _case(1.0, angle=30.0, elastic=True, scale=4.0)
-    result = repeat(case, RepeatSpec(impacts=7, geometry_update=False))
+    result = repeat(case.with_(repeat=dict(impacts=7, geometry_update=False)))
     assert [r.kind for r in result.records] == ["computed", "block"]
     one = result.records[0].wear_volume
     assert result.records[-1].total_wear_volume == pytest.approx(7 * one, rel=1e-12)
@@ -160,7 +159,7 @@ def test_with_geometry_update_a_later_impact_meets_lower_pressure():
     A control run without geometry update keeps the first pressure."""
     case = _case(1.0, angle=30.0, elastic=True, scale=3.0)
     # blocks of at most 0.05 × the approach (half the default): three computed impacts in six
-    result = repeat(case, RepeatSpec(impacts=6, geometry_update=True, surface_fraction=0.05))
+    result = repeat(case.with_(repeat=dict(impacts=6, geometry_update=True, surface_fraction=0.05)))
     computed = [r for r in result.records if r.kind == "computed"]
     p = [r.max_pressure for r in computed]
     print(
@@ -170,13 +169,13 @@ def test_with_geometry_update_a_later_impact_meets_lower_pressure():
     assert len(p) >= 3
     assert p[-1] < p[0]
     assert result.records[-1].surface_depth > 0.0  # the wear moved the FE surface
-    control = repeat(case, RepeatSpec(impacts=2, geometry_update=False))
+    control = repeat(case.with_(repeat=dict(impacts=2, geometry_update=False)))
     assert control.records[0].max_pressure == p[0]
-    # the last impact's pressure is the elastic half-space pressure of the worn surface it met (wear.repeat_check;
+    # the last impact's pressure is the elastic half-space pressure of the worn surface it met (wear.chain.check;
     # contact.halfspace checked against Hertz in tests/test_halfspace.py): measured +0.05%; reduced mesh: 3%.
     # Without the wear profile's filter (repeat.wear_smoothing = 0) a node-scale ripple grows and the FE peak was
     # 26% above the half-space value by impact 6
-    from wear.repeat_check import halfspace_check
+    from wear.chain.check import halfspace_check
 
     check = halfspace_check(result)
     print({k: f"{v:.4g}" for k, v in check.items()})
@@ -189,9 +188,9 @@ def test_elastic_response_after_shakedown_is_the_elastic_plastic_fe():
     (tests/test_fem_reload.py), so every record agrees; the worn-surface pressure of the elastic path is checked
     against the half-space solution in test_with_geometry_update_a_later_impact_meets_lower_pressure."""
     case = _case(1.0, angle=30.0, elastic=True, scale=4.0)
-    spec = RepeatSpec(impacts=4, geometry_update=True, surface_fraction=0.05)
-    fast = repeat(case, spec)
-    full = repeat(case, replace(spec, elastic_after_shakedown=False))
+    case = case.with_(repeat={"impacts": 4, "geometry_update": True, "surface_fraction": 0.05})
+    fast = repeat(case)
+    full = repeat(case.with_(repeat={"elastic_after_shakedown": False}))
     assert [r.elastic_response for r in fast.records if r.kind == "computed"] == [False, True]
     assert fast.elastic_computed == 1 and full.elastic_computed == 0
     for a, b in zip(fast.records, full.records, strict=True):
@@ -239,10 +238,8 @@ def test_cli_bad_input_one_line_exit_2(argv, text, tmp_path, capsys):
 
 
 def test_cli_bad_repeat_table(tmp_path, capsys):
-    from wear.app.run_case import default_run_text
-
     path = tmp_path / "case.toml"
-    path.write_text(default_run_text() + "\n[repeat]\nsurface_fraction = 3.0\n")
+    path.write_text(dump_case(Case(), JOBS["run"].tables) + "\n[repeat]\nsurface_fraction = 3.0\n")
     assert main(["repeat", str(path), "--out", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "repeat.surface_fraction=3" in err
@@ -254,15 +251,9 @@ def test_cli_writes_outputs(tmp_path, capsys):
 
     import meshio
 
-    from wear.app.run_case import default_run_text
-
-    text = (
-        default_run_text()
-        .replace("yield_strength = 8.8e8   # Pa\n", "")
-        .replace("mesh_scale = 2.0", "mesh_scale = 4.0")
-    )
+    elastic = Case().with_(plate={"yield_strength": None}, fem={"mesh_scale": 4.0}, output={"render": False})
     path = tmp_path / "case.toml"
-    path.write_text(text.replace("render = true", "render = false") + "\n[repeat]\nimpacts = 2\n")
+    path.write_text(dump_case(elastic, JOBS["run"].tables) + "\n[repeat]\nimpacts = 2\n")
     out = tmp_path / "out"
     assert main(["repeat", str(path), "--impacts", "4", "--out", str(out), "--json"]) == 0
     summary = json.loads(capsys.readouterr().out)
@@ -278,9 +269,9 @@ def test_cli_writes_outputs(tmp_path, capsys):
 
 
 def test_wear_profile_filter_follows_the_gaussian_transfer_function():
-    """wear.repeat.smooth_profile: a Gaussian filter of standard deviation σ multiplies a ripple of wavelength λ by
-    exp(−(2πσ/λ)²/2) (the Fourier transform of the Gaussian); a constant stays constant; the axis is a mirror."""
-    from wear.repeat import smooth_profile
+    """smooth_profile (wear.chain.repeat): a Gaussian filter of standard deviation σ multiplies a ripple of wavelength
+    λ by exp(−(2πσ/λ)²/2) (the Fourier transform of the Gaussian); a constant stays constant; the axis is a mirror."""
+    from wear.chain.repeat import smooth_profile
 
     r = np.linspace(0.0, 1e-3, 2001)
     sigma = 1e-5
@@ -299,15 +290,15 @@ def test_wear_accumulator_grows_with_the_scar():
     """The cumulative 2-D map keeps the volume of a later impact whose map reaches past the first impact's padded
     grid (the scar widens as the seat conforms): before, the wear outside was dropped. Reference: the volumes of the
     maps added (Gaussian bumps, zero at their edges; bilinear transfer between grids of the same spacing)."""
-    from wear.integrate import _finish
-    from wear.repeat import _Accumulator
+    from wear.chain.repeat import _Accumulator
+    from wear.integrate import wear_map
 
     h = 1e-5
 
     def bump(half_x: int, half_y: int, width: float):
         x, y = np.arange(-half_x, half_x + 1) * h, np.arange(-half_y, half_y + 1) * h
         depth = 1e-7 * np.exp(-(x[None, :] ** 2 + y[:, None] ** 2) / width**2)
-        return _finish(x, y, depth, 4430.0, 0.01)
+        return wear_map(x, y, depth, 4430.0, 0.01)
 
     small, large = bump(20, 20, 4 * h), bump(80, 80, 16 * h)
     acc = _Accumulator(small)

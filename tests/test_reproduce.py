@@ -13,7 +13,8 @@ import numpy as np
 import pytest
 
 from wear.app import cli
-from wear.app.reproduce import FIGURES, kharaz_data, kharaz_rms
+from wear.app.reproduce.run import FIGURES
+from wear.app.validation.references import kharaz_data, kharaz_rms
 
 ISSUE_FIGURES = (
     "fig04_peak_force_vs_angle",

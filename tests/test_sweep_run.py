@@ -1,4 +1,4 @@
-"""Running sweeps (wear.app.sweep): same numbers as a direct call, local pool = Dask, resume after kill -9.
+"""Running sweeps (wear.app.sweep.runner): same numbers as a direct call, local pool = Dask, resume after kill -9.
 
 What each test checks against:
 - the impact stage returns exactly (bit for bit) what a direct ``contact.simulate_impact`` call returns for the
@@ -25,9 +25,9 @@ from pathlib import Path
 import pytest
 
 from wear.app import cli
-from wear.app.case import impact_arguments
-from wear.app.sweep import run_sweep
-from wear.app.sweep_spec import load_sweep
+from wear.app.sweep.runner import run_sweep
+from wear.app.sweep.spec import load_sweep
+from wear.case import Case, default_case
 
 POSIX = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="signals and /proc: Linux only")
 
@@ -138,7 +138,8 @@ def test_impact_stage_returns_exactly_what_simulate_impact_returns(tmp_path):
     with open(tmp_path / "out" / "results.csv", newline="") as f:
         rows = {row["case_id"]: row for row in csv.DictReader(f)}
     for sc in spec.cases:
-        direct = simulate_impact(**impact_arguments(sc.case), history=False).to_dict()
+        direct = simulate_impact(**Case.from_dict(sc.case, default_case("impact")).impact_arguments(),
+                                 history=False).to_dict()  # fmt: skip
         expected = {k: direct[k] for k in OUTPUT_UNITS}
         assert records[sc.case_id]["results"] == expected  # bit-identical floats through JSON
         assert records[sc.case_id]["case"] == sc.case

@@ -1,4 +1,4 @@
-"""Sweep files: expansion, validation before anything runs, bad files, stable case ids (wear.app.sweep_spec).
+"""Sweep files: expansion, validation before anything runs, bad files, stable case ids (wear.app.sweep.spec).
 
 References: the Cartesian-product and merge rules are those stated in issue 5 §3 (``[grid]`` dotted keys to lists,
 ``[[cases]]`` explicit list, ``[base]`` keys left out come from the default case); the case-id rule is the one in
@@ -17,8 +17,8 @@ import textwrap
 import pytest
 
 from wear.app import cli
-from wear.app.case import default_case
-from wear.app.sweep_spec import case_id, load_sweep, parse_sweep
+from wear.app.sweep.spec import case_id, load_sweep, parse_sweep
+from wear.case import default_case
 
 
 def _write(tmp_path, text: str, name: str = "sweep.toml"):
@@ -46,7 +46,7 @@ def test_grid_is_cartesian_product_first_key_slowest(tmp_path):
     assert spec.axes == {"impact.angle": [10, 30, 50], "impact.friction": [0.1, 0.3]}
     got = [(c.case["impact"]["angle"], c.case["impact"]["friction"]) for c in spec.cases]
     assert got == [(10.0, 0.1), (10.0, 0.3), (30.0, 0.1), (30.0, 0.3), (50.0, 0.1), (50.0, 0.3)]
-    default = default_case()
+    default = default_case("impact").to_dict()
     for c in spec.cases:
         assert c.case["impact"]["speed"] == 2.0  # from [base]
         assert c.case["ball"] == default["ball"]  # left out: the embedded default case
@@ -79,7 +79,7 @@ def test_explicit_cases_override_base(tmp_path):
     assert [c.case["impact"]["angle"] for c in spec.cases] == [10.0, 40.0]
     assert [c.case["ball"]["radius"] for c in spec.cases] == [1e-3, 2e-3]
     assert spec.cases[1].case["impact"]["speed"] == 2.0
-    assert spec.cases[0].case["impact"]["speed"] == default_case()["impact"]["speed"]
+    assert spec.cases[0].case["impact"]["speed"] == default_case("impact").impact.speed
 
 
 def test_case_id_matches_independent_sha256_of_canonical_json():
@@ -105,7 +105,7 @@ def test_case_id_independent_of_dict_order_int_float_and_negative_zero():
 def test_case_id_independent_of_python_hash_seed(tmp_path):
     """The same sweep file gives the same ids in processes with different PYTHONHASHSEED."""
     path = _write(tmp_path, '[sweep]\nstage = "impact"\n[grid]\n"impact.angle" = [5, 45]\n"plate.name" = ["a", "b"]\n')
-    code = f"from wear.app.sweep_spec import load_sweep; print([c.case_id for c in load_sweep({str(path)!r}).cases])"
+    code = f"from wear.app.sweep.spec import load_sweep; print([c.case_id for c in load_sweep({str(path)!r}).cases])"
     outs = {
         subprocess.run(
             [sys.executable, "-c", code], env={"PYTHONHASHSEED": seed, "PATH": ""}, capture_output=True, text=True
@@ -185,13 +185,9 @@ def test_parse_sweep_from_dict_rejects_non_table_grid():
 
 
 def test_run_and_indent_stages_lay_base_over_the_default_run_case(tmp_path):
-    """The FE stages start from the embedded default run case (wear/app/default_run.toml), the impact stage from
-    the case schema's default case; only the tables a stage reads enter its cases."""
-    import tomllib
-
-    from wear.app.run_case import default_run_text
-
-    run_default = tomllib.loads(default_run_text())
+    """The FE stages start from the default run case (wear.Case()), the impact stage from impactwear impact's
+    default case; only the tables a stage reads enter its cases."""
+    run_default = default_case("run").to_dict()
     spec = load_sweep(_write(tmp_path, '[sweep]\nstage = "run"\n[grid]\n"wear.K" = [1e-12, 1e-11]\n'))
     assert [c.case["wear"]["K"] for c in spec.cases] == [1e-12, 1e-11]
     assert set(spec.cases[0].case) == {"ball", "plate", "impact", "wear", "fem"}
@@ -210,7 +206,7 @@ def test_run_and_indent_stages_lay_base_over_the_default_run_case(tmp_path):
             '[sweep]\nstage = "impact"\n[grid]\n"wear.K" = [1e-12, 1e-11]\n',
             "grid.wear.K: the impact stage does not read [wear]",
         ),
-        ('[sweep]\nstage = "run"\n[grid]\n"fem.load_steps" = [2]\n', "fem.load_steps=2 is out of range"),
+        ('[sweep]\nstage = "run"\n[grid]\n"fem.load_steps" = [1]\n', "fem.load_steps=1 is out of range"),
         ('[sweep]\nstage = "indent"\n[[cases]]\nfem.coupling = "both"\n', "fem.coupling='both'"),
     ],
 )

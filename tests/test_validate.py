@@ -13,8 +13,9 @@ from pathlib import Path
 
 import pytest
 
-from wear.app import cli, validate
-from wear.app.validate import Check, absolute, relative
+from wear.app import cli
+from wear.app.validation import checks as validate
+from wear.app.validation.checks import Check, absolute, relative
 
 DOCS = Path(__file__).resolve().parents[1] / "docs" / "validation.md"
 

@@ -26,12 +26,12 @@ from dataclasses import dataclass
 import numba
 import numpy as np
 
-from contact.validation import check_number
-
-from .law import WearLaw
-from .pressure import PressureHistory, SlidingSpeed, pressure_history, sliding_speed
+from contact.checks import check_number
+from wear.law import WearLaw
+from wear.pressure import PressureHistory, SlidingSpeed, pressure_history, sliding_speed
 
 __all__ = [
+    "wear_map",
     "WearMap",
     "SubSteps",
     "surface_grid",
@@ -277,7 +277,10 @@ def scar_extent(coordinate, profile, threshold: float) -> float:
     return float(crossing(last + 1, last) - crossing(first - 1, first))
 
 
-def _finish(x, y, depth, density, scar_threshold) -> WearMap:
+def wear_map(x: np.ndarray, y: np.ndarray, depth: np.ndarray, density: float, scar_threshold: float = 0.01) -> WearMap:
+    """A :class:`WearMap` of the depth map ``depth`` (m, y × x) on the grid ``x``, ``y`` (m) of a plate of
+    ``density`` (kg/m³): volume, mass, max depth, and the scar's extent where the depth exceeds ``scar_threshold`` ×
+    its maximum."""
     max_depth = float(depth.max()) if depth.size else 0.0
     thr = scar_threshold * max_depth
     volume = integrate_volume(x, y, depth)
@@ -340,7 +343,7 @@ def integrate_wear(
             )
         else:
             _accumulate_numpy(depth, float(x[0]), dx, y, sub, pressure.extent, table)
-    return _finish(x, y, depth, density, scar_threshold)
+    return wear_map(x, y, depth, density, scar_threshold)
 
 
 def integrate_wear_numpy(pressure: PressureHistory, speed: SlidingSpeed, law: WearLaw, **kwargs) -> WearMap:

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from contact.validation import check_number
+from contact.checks import check_number
 
 __all__ = ["WearLaw", "wear_coefficient_units", "parse_units"]
 

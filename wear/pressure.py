@@ -49,9 +49,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from contact.checks import check_array, check_choice, check_number
 from contact.materials import effective_modulus
 from contact.theory import PAPER_YIELD_COEFFICIENT, default_limiting_pressure, first_yield
-from contact.validation import check_array, check_choice, check_number
 
 __all__ = [
     "PRESSURE_SOURCES",

@@ -22,7 +22,7 @@ import meshio
 import numpy as np
 from scipy.interpolate import RegularGridInterpolator
 
-from contact.validation import check_array, check_number
+from contact.checks import check_array, check_number
 
 __all__ = [
     "DeformedSurface",

@@ -1,23 +1,22 @@
 """The ``impactwear`` command line.
 
-Each subcommand lives in its own module ``wear.app.cmd_<name>`` (found automatically) exposing
-``HELP`` (one line), ``configure(parser)`` and ``main(args) -> int``. Bad input (``ValueError``) is reported as one
+Each command is a module of :mod:`wear.app.commands` exposing ``HELP`` (one line), ``configure(parser)`` and
+``main(args) -> int``: parse → load the case → call the runner → write. Bad input (``ValueError``) is reported as one
 line naming the parameter, with exit status 2 and no traceback.
 """
 
 from __future__ import annotations
 
 import argparse
-import importlib
-import pkgutil
 import sys
+from importlib.metadata import PackageNotFoundError, version
 
+from fem import ConvergenceError
+from wear.app.commands import erode, impact, indent, repeat, reproduce, run, sweep, validate
 
-def _commands() -> list[str]:
-    """Names of the subcommands: every module ``wear/app/cmd_<name>.py``."""
-    import wear.app
-
-    return sorted(m.name[4:] for m in pkgutil.iter_modules(wear.app.__path__) if m.name.startswith("cmd_"))
+#: name → command module, in the order of ``impactwear --help``.
+COMMANDS = {"run": run, "impact": impact, "indent": indent, "repeat": repeat, "erode": erode, "sweep": sweep,
+            "reproduce": reproduce, "validate": validate}  # fmt: skip
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -26,16 +25,13 @@ def build_parser() -> argparse.ArgumentParser:
         description="Impact, plate and wear of a ball hitting a flat plate (SI units; angles in degrees "
         "from the plate normal).",
     )
-    from importlib.metadata import PackageNotFoundError, version
-
     try:
         ver = version("impactwear")
     except PackageNotFoundError:
         ver = "unknown"
     parser.add_argument("--version", action="version", version=f"impactwear {ver}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
-    for name in _commands():
-        module = importlib.import_module(f"wear.app.cmd_{name}")
+    for name, module in COMMANDS.items():
         p = sub.add_parser(name, help=module.HELP, description=module.HELP)
         module.configure(p)
         p.set_defaults(_module=module)
@@ -43,8 +39,6 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
-    from fem import ConvergenceError
-
     parser = build_parser()
     args = parser.parse_args(argv)
     if getattr(args, "_module", None) is None:

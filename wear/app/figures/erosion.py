@@ -10,36 +10,13 @@ from __future__ import annotations
 
 import math
 import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
+from wear.app.figures.common import plt, save_figure
+
 __all__ = ["plot_time_series", "plot_surface", "plot_angles"]
-
-
-def _pyplot():
-    import matplotlib
-
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
-
-    return plt
-
-
-def _save(fig, path: str | os.PathLike) -> Path:
-    p = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{p.name}.", suffix=".png", dir=p.parent)
-    os.close(fd)
-    try:
-        fig.savefig(tmp, dpi=120, format="png")
-        os.replace(tmp, p)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    finally:
-        _pyplot().close(fig)
-    return p
 
 
 def plot_time_series(
@@ -47,7 +24,6 @@ def plot_time_series(
 ) -> Path:
     """Mass loss (kg) and cumulative erosion rate (kg/kg; with ``interval_rate`` also the rate between samples)
     against exposure time (s) into ``path``."""
-    plt = _pyplot()
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
     t = np.asarray(time)
     ax1.plot(t, np.asarray(mass_loss_kg), "-")
@@ -66,12 +42,11 @@ def plot_time_series(
     if title:
         fig.suptitle(title)
     fig.tight_layout()
-    return _save(fig, path)
+    return save_figure(fig, path)
 
 
 def plot_surface(x, y, depth, path: str | os.PathLike, azimuth_deg: float = 0.0, title: str = "") -> Path:
     """Depth map (µm, into the plate) over the patch (x, y in mm) with an arrow along the stream azimuth."""
-    plt = _pyplot()
     fig, ax = plt.subplots(figsize=(6, 5))
     x, y = np.asarray(x), np.asarray(y)
     extent = (x[0] * 1e3, x[-1] * 1e3, y[0] * 1e3, y[-1] * 1e3)
@@ -92,12 +67,11 @@ def plot_surface(x, y, depth, path: str | os.PathLike, azimuth_deg: float = 0.0,
     if title:
         ax.set_title(title)
     fig.tight_layout()
-    return _save(fig, path)
+    return save_figure(fig, path)
 
 
 def plot_angles(angles_deg, erosion_rate, mass_loss_kg, path: str | os.PathLike, title: str = "") -> Path:
     """Erosion rate (kg/kg) and mass loss (kg) against the stream angle (deg from the plate normal)."""
-    plt = _pyplot()
     fig, ax1 = plt.subplots(figsize=(6, 4))
     a = np.asarray(angles_deg, dtype=float)
     ax1.plot(a, np.asarray(erosion_rate), "o-", color="C0")
@@ -112,4 +86,4 @@ def plot_angles(angles_deg, erosion_rate, mass_loss_kg, path: str | os.PathLike,
     if title:
         ax1.set_title(title)
     fig.tight_layout()
-    return _save(fig, path)
+    return save_figure(fig, path)

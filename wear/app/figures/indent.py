@@ -11,15 +11,9 @@ from pathlib import Path
 import numpy as np
 
 from contact.theory import hertz_pressure, mesarovic_johnson_pressure
+from wear.app.figures.common import plt, save_figure
 
 __all__ = ["pressure_figure", "force_overlap_figure", "plastic_zone_figure", "write_figures"]
-
-
-def _save(fig, path: Path) -> Path:
-    tmp = path.with_name(f".{path.stem}.tmp{os.getpid()}{path.suffix}")
-    fig.savefig(tmp, dpi=120, bbox_inches="tight")
-    os.replace(tmp, path)
-    return path
 
 
 def _pick_steps(res, count: int = 4) -> tuple[list[int], list[int]]:
@@ -36,8 +30,6 @@ def _pick_steps(res, count: int = 4) -> tuple[list[int], list[int]]:
 def pressure_figure(res):
     """Pressure p(r) at chosen loading steps (FE vs Hertz Eq. 16 at the FE's F) and unloading steps (FE vs
     Mesarovic–Johnson Eq. 19 from the FE's p*, a* at the maximum)."""
-    import matplotlib.pyplot as plt
-
     loading, unloading = _pick_steps(res)
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), sharey=True)
     r = res.surface_r
@@ -69,8 +61,6 @@ def pressure_figure(res):
 
 def force_overlap_figure(res):
     """F–δ loading and unloading (FE) with the Hertz curve (errata Eq. 4) and the FE first yield."""
-    import matplotlib.pyplot as plt
-
     fig, ax = plt.subplots(figsize=(5.5, 4.2))
     d = np.r_[0.0, res.overlap]
     ax.plot(d * 1e6, np.r_[0.0, res.force], "o-", ms=2.5, label="FE")
@@ -87,8 +77,6 @@ def force_overlap_figure(res):
 
 def plastic_zone_figure(res):
     """Equivalent plastic strain under the contact at the last step (quadrature points, r–z in µm)."""
-    import matplotlib.pyplot as plt
-
     run = res._run
     disc = run.solver.disc
     alpha = run.final.alpha
@@ -113,11 +101,6 @@ def plastic_zone_figure(res):
 
 def write_figures(res, out: str | os.PathLike) -> list[Path]:
     """Write pressure.png, force_overlap.png and plastic_zone.png into ``out`` (atomically)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     out = Path(out)
     paths = []
     for name, make in (
@@ -126,6 +109,5 @@ def write_figures(res, out: str | os.PathLike) -> list[Path]:
         ("plastic_zone.png", plastic_zone_figure),
     ):
         fig = make(res)
-        paths.append(_save(fig, out / name))
-        plt.close(fig)
+        paths.append(save_figure(fig, out / name, bbox_inches="tight"))
     return paths

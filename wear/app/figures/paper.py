@@ -2,20 +2,23 @@
 
 Every function takes plain numpy arrays (SI units, angles in degrees from the plate normal), draws one figure
 with the reference it is compared with, names the source on the figure, and writes a PNG atomically
-(temporary file in the same folder, then ``os.replace``). The computations live in :mod:`wear.app.reproduce`.
+(:func:`wear.app.figures.common.save_figure`). The computations live in :mod:`wear.app.reproduce.paper`.
 """
 
 from __future__ import annotations
 
 import os
-import tempfile
 from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
 
+from contact.theory import thornton_restitution
+from fem import REGIMES
+from wear.app.figures.common import plt, save_figure
+
 __all__ = [
-    "save_figure",
+    "save_sourced",
     "plot_peak_force",
     "plot_rebound_angles",
     "plot_spin",
@@ -31,37 +34,15 @@ DPI = 100
 COLORS = ("C0", "C1", "C2", "C3", "C4", "C5", "C6", "C7")
 
 
-def _pyplot():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
-
-
-def save_figure(fig, path: str | os.PathLike, source: str) -> Path:
-    """Write ``fig`` to ``path`` (PNG) atomically with ``source`` printed at its bottom; close it."""
-    path = Path(path)
+def save_sourced(fig, path: str | os.PathLike, source: str) -> Path:
+    """Write ``fig`` to ``path`` (PNG, atomically) with ``source`` printed at its bottom; close it."""
     fig.text(0.01, 0.005, "Source: " + source, fontsize=7, color="0.3", ha="left", va="bottom", wrap=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=".png", dir=path.parent)
-    os.close(fd)
-    try:
-        fig.savefig(tmp, dpi=DPI)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    finally:
-        _pyplot().close(fig)
-    return path
+    return save_figure(fig, path, dpi=DPI)
 
 
 def plot_peak_force(angles, speeds, model_force, hertz_force, path, source: str) -> Path:
     """Peak normal force (N) against impact angle (deg), one line per speed (m/s), with the Hertz closed form
     F_max(v cos θ) as dashed lines. ``model_force`` and ``hertz_force`` have shape (speeds, angles)."""
-    plt = _pyplot()
     fig, ax = plt.subplots(figsize=(7, 4.6))
     for k, v in enumerate(speeds):
         c = COLORS[k % len(COLORS)]
@@ -74,13 +55,12 @@ def plot_peak_force(angles, speeds, model_force, hertz_force, path, source: str)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     fig.subplots_adjust(bottom=0.16)
-    return save_figure(fig, path, source)
+    return save_sourced(fig, path, source)
 
 
 def plot_rebound_angles(angles, centre, contact_point, data_angles, data_centre, path, source: str, note="") -> Path:
     """Rebound angle (deg from the normal) of the centre and of the contact point against impact angle (deg),
     with the measured centre rebound angles."""
-    plt = _pyplot()
     fig, ax = plt.subplots(figsize=(7, 4.6))
     ax.plot(angles, centre, "-", color="C0", label="model: centre of mass")
     ax.plot(angles, contact_point, "-", color="C1", label="model: contact point")
@@ -93,12 +73,11 @@ def plot_rebound_angles(angles, centre, contact_point, data_angles, data_centre,
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     fig.subplots_adjust(bottom=0.16)
-    return save_figure(fig, path, source)
+    return save_sourced(fig, path, source)
 
 
 def plot_spin(angles, spin, data_angles, data_spin, et, data_et_angles, data_et, path, source: str, note="") -> Path:
     """Spin after impact (rad/s) and tangential restitution against impact angle (deg), with measured points."""
-    plt = _pyplot()
     fig, (ax, ax2) = plt.subplots(1, 2, figsize=(9, 4.2))
     ax.plot(angles, spin, "-", color="C2", label="model")
     ax.plot(data_angles, data_spin, "s", color="C2", mfc="none", label="Kharaz et al. 2001")
@@ -114,13 +93,12 @@ def plot_spin(angles, spin, data_angles, data_spin, et, data_et_angles, data_et,
         a.grid(alpha=0.3)
         a.legend(fontsize=8)
     fig.subplots_adjust(bottom=0.18, wspace=0.3)
-    return save_figure(fig, path, source)
+    return save_sourced(fig, path, source)
 
 
 def plot_wear_mass(series: Sequence[dict], path, source: str) -> Path:
     """Worn mass (kg) against impact angle (deg), one panel per series (each dict: ``label``, ``angles``,
     ``mass``), the angle of maximum wear marked."""
-    plt = _pyplot()
     n = len(series)
     fig, axes = plt.subplots(1, n, figsize=(4.6 * n, 4.2), squeeze=False)
     for k, (ax, s) in enumerate(zip(axes[0], series, strict=True)):
@@ -141,13 +119,12 @@ def plot_wear_mass(series: Sequence[dict], path, source: str) -> Path:
             ax.legend(fontsize=8)
     fig.suptitle("Fig. 9: worn mass vs impact angle, α = 1, β = 0.3", fontsize=11)
     fig.subplots_adjust(bottom=0.2, top=0.82, wspace=0.35)
-    return save_figure(fig, path, source)
+    return save_sourced(fig, path, source)
 
 
 def plot_sliding_duration(angles, speeds, ratio, path, source: str, rigid_body=None) -> Path:
     """Sliding time / contact time against impact angle (deg), one line per speed (m/s); ``ratio`` has shape
     (speeds, angles). ``rigid_body``: optional (angle of the rigid-body onset of sliding throughout, label)."""
-    plt = _pyplot()
     fig, ax = plt.subplots(figsize=(7, 4.6))
     markers = ("o", "s", "^", "v", "D", "x")
     for k, v in enumerate(speeds):
@@ -161,14 +138,13 @@ def plot_sliding_duration(angles, speeds, ratio, path, source: str, rigid_body=N
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     fig.subplots_adjust(bottom=0.16)
-    return save_figure(fig, path, source)
+    return save_sourced(fig, path, source)
 
 
 def plot_yield_onset(rows: Sequence[dict], path, source: str) -> Path:
     """FE first-yield force over F_c of Eq. 18 with the exact C(ν) (and with C = 1.6), one point per case.
 
     Each row: ``label`` (case text), ``fe`` (N), ``exact`` (N, C(ν)), ``paper`` (N, C = 1.6)."""
-    plt = _pyplot()
     fig, ax = plt.subplots(figsize=(8, 4.6))
     x = np.arange(len(rows))
     fe = np.array([r["fe"] for r in rows])
@@ -185,7 +161,7 @@ def plot_yield_onset(rows: Sequence[dict], path, source: str) -> Path:
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     fig.subplots_adjust(bottom=0.32)
-    return save_figure(fig, path, source)
+    return save_sourced(fig, path, source)
 
 
 def plot_pressure_regimes(loading: Sequence[dict], unloading: Sequence[dict], path, source: str) -> Path:
@@ -194,7 +170,6 @@ def plot_pressure_regimes(loading: Sequence[dict], unloading: Sequence[dict], pa
 
     Each dict: ``label``, ``r`` (m), ``p`` (Pa), ``ref_r`` (m), ``ref_p`` (Pa); axes normalised by ``scale_r``
     (m) and ``scale_p`` (Pa) given in each dict."""
-    plt = _pyplot()
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4.4))
     for k, s in enumerate(loading):
         c = COLORS[k % len(COLORS)]
@@ -218,16 +193,12 @@ def plot_pressure_regimes(loading: Sequence[dict], unloading: Sequence[dict], pa
         a.grid(alpha=0.3)
         a.legend(fontsize=7)
     fig.subplots_adjust(bottom=0.18, wspace=0.25)
-    return save_figure(fig, path, source)
-
-
-REGIMES = ("elastic", "contained", "surface-plastic", "fully-plastic")
+    return save_sourced(fig, path, source)
 
 
 def plot_regime_map(speeds, yields, regime, ratio, e_fe, e_thornton, path, source: str) -> Path:
     """Maps over impact speed (m/s, x) and plate yield strength (Pa, y): regime (index into :data:`REGIMES`),
     p_max/p_mean, and the coupled-FE normal restitution against Thornton 1997. Arrays have shape (yields, speeds)."""
-    plt = _pyplot()
     from matplotlib.colors import BoundaryNorm, ListedColormap
 
     fig, axes = plt.subplots(1, 3, figsize=(13, 4.3))
@@ -254,12 +225,11 @@ def plot_regime_map(speeds, yields, regime, ratio, e_fe, e_thornton, path, sourc
         a.set_xlabel("impact speed (m/s)")
         a.set_ylabel("plate yield strength (MPa)")
     fig.subplots_adjust(bottom=0.18, wspace=0.35, left=0.06, right=0.97)
-    return save_figure(fig, path, source)
+    return save_sourced(fig, path, source)
 
 
 def plot_restitution(ratio, e_fe, ratio_curve, e_thornton, path, source: str, note="") -> Path:
     """Normal restitution against V/V_y: coupled FE points against Thornton's (1997) closed form."""
-    plt = _pyplot()
     fig, (ax, ax2) = plt.subplots(1, 2, figsize=(10, 4.3), gridspec_kw={"width_ratios": [3, 2]})
     ax.semilogx(ratio_curve, e_thornton, "-", color="k", lw=1, label="Thornton 1997 (closed form)")
     ax.semilogx(ratio, e_fe, "o", color="C0", label="coupled FE (this toolkit)")
@@ -268,12 +238,10 @@ def plot_restitution(ratio, e_fe, ratio_curve, e_thornton, path, source: str, no
     ax.set_title("Normal restitution" + (f" ({note})" if note else ""), fontsize=10)
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
-    from contact.theory import thornton_restitution
-
     ax2.semilogx(ratio, (np.asarray(e_fe) / thornton_restitution(ratio) - 1) * 100, "o-", color="C0")
     ax2.axhline(0, color="k", lw=0.8)
     ax2.set_xlabel("$V/V_y$")
     ax2.set_ylabel("$e_{FE}/e_{Thornton} - 1$ (%)")
     ax2.grid(alpha=0.3, which="both")
     fig.subplots_adjust(bottom=0.16, wspace=0.3)
-    return save_figure(fig, path, source)
+    return save_sourced(fig, path, source)

@@ -13,15 +13,14 @@ from pathlib import Path
 
 import numpy as np
 
-from .erosion import _pyplot, _save
+from wear.app.figures.common import plt, save_figure
 
 __all__ = ["plot_repeat"]
 
 
 def plot_repeat(columns: dict, path: str | os.PathLike, title: str = "", shakedown_impact: int | None = None,
                 tolerance: float | None = None) -> Path:  # fmt: skip
-    """The four panels above from ``columns`` (``wear.repeat.RepeatResult.columns()``) into ``path``."""
-    plt = _pyplot()
+    """The four panels above from ``columns`` (``wear.chain.repeat.RepeatResult.columns()``) into ``path``."""
     n = np.asarray(columns["impact_last"], float)
     computed = np.asarray(columns["computed"], float) > 0
     fig, axes = plt.subplots(2, 2, figsize=(11, 7.5), sharex=True)
@@ -60,4 +59,4 @@ def plot_repeat(columns: dict, path: str | os.PathLike, title: str = "", shakedo
         ax.set_xlabel("impact number")
     fig.suptitle(title + ("" if not shakedown_impact else f"  (shakedown at impact {shakedown_impact}, dotted)"))
     fig.tight_layout()
-    return _save(fig, path)
+    return save_figure(fig, path)

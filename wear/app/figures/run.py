@@ -1,6 +1,6 @@
 """Figures of one ``impactwear run`` (matplotlib, Agg; SI quantities shown in µm, µs, MPa, N).
 
-Each function takes a :class:`wear.pipeline.RunResult` (or arrays) and a PNG path, and returns the path.
+Each function takes a :class:`wear.RunResult` (or arrays) and a PNG path, and returns the path.
 :func:`restitution_comparison` is the e_n vs V/V_y figure (coupled FE vs Thornton 1997) that the
 validation report reuses.
 """
@@ -11,13 +11,10 @@ import math
 import os
 from pathlib import Path
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-from contact.theory import hertz_pressure, mesarovic_johnson_pressure  # noqa: E402
+from contact.theory import hertz_pressure, mesarovic_johnson_pressure, thornton_restitution
+from wear.app.figures.common import plt, save_figure
 
 __all__ = [
     "force_overlap",
@@ -27,14 +24,6 @@ __all__ = [
     "restitution_comparison",
     "write_run_figures",
 ]
-
-
-def _save(fig, path) -> Path:
-    path = Path(path)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
 
 
 def force_overlap(result, path) -> Path:
@@ -57,7 +46,8 @@ def force_overlap(result, path) -> Path:
     ax3.set_xlabel("overlap (µm)")
     ax3.set_ylabel("normal force (N)")
     ax3.legend(fontsize=8)
-    return _save(fig, path)
+    fig.tight_layout()
+    return save_figure(fig, path)
 
 
 def pressure_profiles(result, path, stages: int = 6) -> Path:
@@ -92,7 +82,8 @@ def pressure_profiles(result, path, stages: int = 6) -> Path:
     ax.set_xlabel("r (µm)")
     ax.set_ylabel("contact pressure (MPa)")
     ax.legend(fontsize=7)
-    return _save(fig, path)
+    fig.tight_layout()
+    return save_figure(fig, path)
 
 
 def wear_map(result, path) -> Path:
@@ -105,7 +96,8 @@ def wear_map(result, path) -> Path:
     ax.set_xlabel("x along the impact (µm)")
     ax.set_ylabel("y (µm)")
     ax.set_title(f"worn volume {wm.volume_m3:.3g} m³, max depth {wm.max_depth_m * 1e9:.3g} nm")
-    return _save(fig, path)
+    fig.tight_layout()
+    return save_figure(fig, path)
 
 
 def cross_sections(result, path) -> Path:
@@ -128,7 +120,8 @@ def cross_sections(result, path) -> Path:
         ax2.plot(coord * 1e6, w * 1e9, "C2", lw=1)
         ax2.set_ylabel("wear depth (nm)", color="C2")
         ax.legend(fontsize=8, loc="lower right")
-    return _save(fig, path)
+    fig.tight_layout()
+    return save_figure(fig, path)
 
 
 def restitution_comparison(speed_ratio, coupled_restitution, path, thornton=None) -> Path:
@@ -137,8 +130,6 @@ def restitution_comparison(speed_ratio, coupled_restitution, path, thornton=None
     ``speed_ratio``: V_n/V_y; ``coupled_restitution``: e_n of the coupled runs; ``thornton``: Thornton's e at
     the same ratios (default :func:`contact.theory.thornton_restitution`). The lower panel shows the difference.
     """
-    from contact.theory import thornton_restitution
-
     x = np.asarray(speed_ratio, float)
     e = np.asarray(coupled_restitution, float)
     fine = np.geomspace(max(x.min(), 1.0), max(x.max(), 1.01), 200)
@@ -152,7 +143,8 @@ def restitution_comparison(speed_ratio, coupled_restitution, path, thornton=None
     axd.axhline(0.0, color="k", lw=0.5)
     axd.set_xlabel("V_n / V_y")
     axd.set_ylabel("FE − Thornton (%)")
-    return _save(fig, path)
+    fig.tight_layout()
+    return save_figure(fig, path)
 
 
 def write_run_figures(result, folder: str | os.PathLike) -> list[Path]:

@@ -10,8 +10,9 @@ from __future__ import annotations
 
 import math
 import os
-import threading
 from pathlib import Path
+
+from wear.app.figures.common import plt, save_figure
 
 __all__ = ["plot_sweep", "MAX_PANELS"]
 
@@ -56,11 +57,6 @@ def plot_sweep(
     varying = {k: v for k, v in axes.items() if len(v) > 1}
     if not 1 <= len(varying) <= 2:
         return None
-    import matplotlib
-
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
-
     ok_rows = [r for r in rows if r["status"] == "ok"]
     panels = []
     for name in results:
@@ -106,12 +102,4 @@ def plot_sweep(
         fig.legend(handles, labels, title=title, loc="outside right upper", fontsize=7, title_fontsize=8)
     fig.suptitle(f"sweep over {' × '.join(keys)} (failed cases are gaps)", fontsize=10)
     name = "sweep_2d.png" if line_key else "sweep_1d.png"
-    path = Path(out) / name
-    tmp = path.parent / f".{path.name}.{os.getpid()}.{threading.get_ident()}.tmp"
-    try:
-        fig.savefig(tmp, dpi=110, format="png")
-        os.replace(tmp, path)
-    finally:
-        plt.close(fig)
-        tmp.unlink(missing_ok=True)
-    return path
+    return save_figure(fig, Path(out) / name, dpi=110)

@@ -1,0 +1,362 @@
+r"""The impact ⇄ plate coupling: an impact on the plate's own force law, for a virgin or a used plate (SI units).
+
+The impact runs on the FE plate's normal law (contact's ``"tabulated"`` model: F(δ) and the contact radius a(δ), so
+the tangential stiffness is k_t = 8G*a with the FE radius). The loading branch of an elastic–plastic indentation is
+path independent, so the plate is loaded **once**, past the expected maximum overlap:
+
+1. load the plate from its current state to (1 + ``overshoot``) × the estimated approach (further if the impact
+   goes deeper than the table);
+2. run the impact on that loading branch (the rebound uses a provisional elastic unloading curve of slope
+   dF/dδ = 2E*a, which cannot change δ_max: the maximum is reached on the loading branch);
+3. unload the plate from just above the impact's δ_max (restarting from the kept loading state below it:
+   :meth:`fem.Plate.unload`, which commits the unloaded state) and run the impact again on the loading + unloading
+   law;
+4. repeat 3 while δ_max changes by more than ``tolerance`` (relative) between impact runs.
+
+Because δ_max depends only on the loading branch, step 3 normally converges at once (the impact loads on the same
+table; only the unloading changes): about one FE cycle in all. Overlaps: the plate measures δ from its original
+plane z = 0; on a dented or worn plate the sphere first touches the surface at δ₀ =
+:meth:`fem.Plate.first_contact_overlap`, and the impact engine integrates from first contact, so its law is the FE
+law shifted by δ₀ (δ' = δ − δ₀). :func:`couple_elastic` solves the same impact on the plate's elastic response
+(:func:`fem.elastic_reload`, the plate's state unchanged) while that response yields nowhere.
+
+The FE pressure p(r, t) along the impact (:func:`pressure_table`) is the cycle's nodal pressure with each FE step
+placed at the impact time where the impact reaches that overlap (on the loading branch before t(δ_max), on the
+unloading branch after it).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+from typing import Protocol
+
+import meshio
+import numpy as np
+
+from contact import ImpactResult, TabulatedLaw
+from contact.impact import ForceLawRangeError
+from fem.reload import elastic_reload
+from fem.result import FirstYieldPoint, IndentationResult, join, loading_branch, unloading_curve
+from fem.solver import ConvergenceError
+
+__all__ = ["UNLOAD_MARGIN", "CouplingSettings", "CoupledImpact", "PlateCycle", "couple", "couple_elastic",
+           "contact_pressure", "force_law", "loading_path", "pressure_table"]  # fmt: skip
+
+#: Relative margin above the impact's δ_max at which the plate starts unloading: the impact's own maximum (on the
+#: same loading table) then lies below the tabulated δ*, and the engine scales the curve down by that 1e-3, well
+#: inside the FE accuracy.
+UNLOAD_MARGIN = 1e-3
+#: Loadings tried when the impact goes past the table's end before giving up.
+LOADING_TRIES = 4
+
+#: An impact run on a force law (overlaps from first contact): the case's impact with ``normal_model="tabulated"``.
+ImpactOnLaw = Callable[[TabulatedLaw], ImpactResult]
+
+
+class CoupledPlate(Protocol):
+    """What the coupling needs of a plate (:class:`fem.Plate` is one)."""
+
+    effective_modulus: float
+
+    def first_contact_overlap(self) -> float: ...
+
+    def first_yield_overlap(self) -> float | None: ...
+
+    def load(self, overlaps: np.ndarray) -> IndentationResult: ...
+
+    def unload(self, loading: IndentationResult, max_overlap: float, steps: int = 8) -> IndentationResult: ...
+
+
+@dataclass(frozen=True)
+class CouplingSettings:
+    """The coupling's numbers: ``tolerance`` on the relative change of δ_max between impact runs, ``max_iterations``
+    (impact runs), the FE increments ``load_steps`` and ``unload_steps``, the ``overshoot`` of the single loading
+    past the estimated approach (relative)."""
+
+    tolerance: float
+    max_iterations: int
+    load_steps: int
+    unload_steps: int
+    overshoot: float
+
+
+def loading_path(max_overlap: float, steps: int, first_yield_overlap: float | None = None) -> np.ndarray:
+    """Overlaps (m) from 0 (excluded) to ``max_overlap``, denser near the start where F(δ) curves most; with
+    ``first_yield_overlap`` (m) the path starts with an elastic step at half of it (the plate locates first yield
+    between an elastic and a plastic step)."""
+    s = np.linspace(0.0, 1.0, steps + 1)[1:]
+    path = max_overlap * s**1.5
+    if first_yield_overlap is not None and 0.5 * first_yield_overlap < path[0]:
+        path = np.r_[0.5 * first_yield_overlap, path]
+    return path
+
+
+def force_law(loading: IndentationResult, unloading: IndentationResult | None = None, first_contact: float = 0.0,
+              effective_modulus: float | None = None, points: int = 41) -> TabulatedLaw:  # fmt: skip
+    r"""The plate's force law from first contact (δ' = δ − ``first_contact``, m): the loading branch and the
+    unloading curve from its top (``unloading``), or, without one, a provisional elastic curve of Hertz form
+    :math:`F = F^*\left(\frac{\delta - \delta_p}{\delta^* - \delta_p}\right)^{3/2}`, with
+    :math:`\delta^* - \delta_p = 3F^*/(4E^*a^*)` so that dF/dδ = 2E*a* at the start (exact for elastic unloading;
+    ``effective_modulus`` E*, Pa), which cannot change δ_max."""
+    d, f, a = loading_branch(loading.overlap, loading.force, loading.contact_radius, first_contact)
+    if unloading is None:
+        d_star, f_star, a_star = d[-1], f[-1], a[-1]
+        drop = min(3.0 * f_star / (4.0 * effective_modulus * max(a_star, 1e-300)), d_star)
+        s = np.linspace(1.0, 0.0, points)
+        return TabulatedLaw(d, f, a, np.array([d_star]), (d_star - drop + s * drop)[None, :],
+                            (f_star * s**1.5)[None, :], (a_star * np.sqrt(s))[None, :])  # fmt: skip
+    top, grid, force, radius = unloading_curve(unloading.overlap, unloading.force, unloading.contact_radius, points)
+    top, grid = top - first_contact, grid - first_contact
+    if grid[-1] < 0.0:
+        # a residual overlap below first contact (numerical noise of a shaken-down plate) closes the curve at
+        # δ' = 0, F^(2/3) linear in δ near separation (Hertz-like)
+        new = np.linspace(top, 0.0, points)
+        force = np.interp(new[::-1], grid[::-1], force[::-1] ** (2.0 / 3.0))[::-1] ** 1.5
+        radius = np.interp(new[::-1], grid[::-1], radius[::-1])[::-1]
+        grid, force[-1], radius[-1] = new, 0.0, 0.0
+    return TabulatedLaw(d, f, a, np.array([top]), grid[None, :], force[None, :], radius[None, :])
+
+
+@dataclass(frozen=True, eq=False)
+class PlateCycle:
+    """The plate's cycle of a coupled impact: the kept loading steps below δ* followed by the unloading from δ*
+    (per step: ``overlap`` m from first contact, ``force`` N, ``contact_radius`` m, ``pressure`` Pa (steps, surface
+    nodes), ``regime``, ``max_equivalent_plastic_strain``), ``surface_r`` (m), ``residual_depth`` (m, after the
+    unloading, positive into the plate), ``first_yield`` (reached in this cycle, or None), ``loading`` and
+    ``unloading`` (the plate's results, overlaps from the original plane)."""
+
+    overlap: np.ndarray
+    force: np.ndarray
+    contact_radius: np.ndarray
+    pressure: np.ndarray
+    regime: list[str]
+    max_equivalent_plastic_strain: np.ndarray
+    surface_r: np.ndarray
+    residual_depth: np.ndarray
+    first_yield: FirstYieldPoint | None
+    loading: IndentationResult
+    unloading: IndentationResult
+
+    def to_meshio(self) -> meshio.Mesh:
+        """The plate after the unloading (:meth:`fem.IndentationResult.to_meshio`)."""
+        return self.unloading.to_meshio()
+
+    @classmethod
+    def join(cls, loading: IndentationResult, unloading: IndentationResult, first_contact: float,
+             max_overlap: float) -> PlateCycle:  # fmt: skip
+        """The loading steps strictly below ``max_overlap`` δ* (m, from the original plane; the loading may be a
+        whole cycle: stop at its peak) and the unloading."""
+        c = join(loading, unloading, below=max_overlap)
+        return cls(
+            overlap=c.overlap - first_contact,
+            force=c.force,
+            contact_radius=c.contact_radius,
+            pressure=c.pressure,
+            regime=c.regime,
+            max_equivalent_plastic_strain=c.max_equivalent_plastic_strain,
+            surface_r=c.surface_r,
+            residual_depth=c.residual_depth,
+            first_yield=c.first_yield,
+            loading=loading,
+            unloading=unloading,
+        )
+
+
+@dataclass(frozen=True, eq=False)
+class CoupledImpact:
+    """An impact coupled to the plate: ``impact`` (the last :class:`contact.ImpactResult`), ``law`` (the force law
+    it ran on, overlaps from first contact), ``cycle`` (:class:`PlateCycle`), ``first_contact`` δ₀ (m, from the
+    original plane), ``max_overlaps`` (m, δ_max of each impact run, from first contact), ``change`` (final relative
+    change of δ_max), ``converged``, ``unload_overlap`` δ* (m, from first contact: where the unloading starts, a hair
+    above the impact's δ_max), ``elastic`` (solved on the plate's elastic response, the plate's state
+    unchanged) and ``trial_increment`` (the largest Δᾱ a return mapping of that elastic response gives; 0 for a
+    plastic solve), ``pressure_table`` ((time s, surface_r m, pressure Pa) of :func:`pressure_table`)."""
+
+    impact: ImpactResult
+    law: TabulatedLaw
+    cycle: PlateCycle
+    first_contact: float
+    max_overlaps: tuple[float, ...]
+    change: float
+    converged: bool
+    pressure_table: tuple[np.ndarray, np.ndarray, np.ndarray]
+    unload_overlap: float
+    elastic: bool = False
+    trial_increment: float = 0.0
+
+    @property
+    def iterations(self) -> int:
+        """Impact runs on the plate's laws."""
+        return len(self.max_overlaps)
+
+    @property
+    def loading(self) -> IndentationResult:
+        """The plate's loading (overlaps from the original plane)."""
+        return self.cycle.loading
+
+    @property
+    def unloading(self) -> IndentationResult:
+        """The plate's unloading from δ* (overlaps from the original plane)."""
+        return self.cycle.unloading
+
+    @property
+    def contact_radius(self) -> float:
+        """The plate's contact radius (m) at δ*."""
+        loading = self.cycle.loading
+        return float(np.interp(self.first_contact + self.unload_overlap, loading.overlap, loading.contact_radius))
+
+    @property
+    def max_pressure(self) -> float:
+        """The largest pressure (Pa) of the cycle inside the contact."""
+        c = self.cycle
+        return float(contact_pressure(c.pressure, c.surface_r, c.contact_radius).max())
+
+    def peak_pressure_at(self, force: float) -> float:
+        """The plate's peak pressure (Pa) when the loading passes ``force`` (N), interpolated between the loading
+        steps; NaN beyond its largest force."""
+        loading = self.cycle.loading
+        f = np.asarray(loading.force, float)
+        if f.size == 0 or force > f.max():
+            return float("nan")
+        p = contact_pressure(loading.pressure, loading.surface_r, loading.contact_radius).max(axis=1)
+        return float(np.interp(force, np.maximum.accumulate(f), p))
+
+
+def _loading_past_the_impact(load: Callable[[float], IndentationResult], impact_on: ImpactOnLaw, first_contact: float,
+                             estimate: float, settings: CouplingSettings, effective_modulus: float):  # fmt: skip
+    """(loading, law, impact): ``load(target)`` (a loading from first contact to first contact + target, m) run
+    (1 + overshoot) past ``estimate`` (m), further until the impact on its law stops short of the table's end;
+    None after :data:`LOADING_TRIES` loadings."""
+    target = (1.0 + settings.overshoot) * estimate
+    for _ in range(LOADING_TRIES):
+        loading = load(target)
+        law = force_law(loading, None, first_contact, effective_modulus)
+        try:
+            impact = impact_on(law)
+        except ForceLawRangeError:
+            # the engine stops where the overlap leaves the table: the surface (hence the depth an impact reaches)
+            # can have changed by more than the overshoot allows for
+            target *= 1.5
+            continue
+        if impact.max_overlap * (1.0 + 2.0 * UNLOAD_MARGIN) < float(law.loading_overlap[-1]):
+            return loading, law, impact
+        target = 1.3 * impact.max_overlap
+    return None
+
+
+def couple(plate: CoupledPlate, impact_on: ImpactOnLaw, estimate: float, settings: CouplingSettings) -> CoupledImpact:
+    """The impact ``impact_on`` coupled to ``plate`` as it is now (see the module docstring); commits the unloaded
+    state to the plate. ``estimate`` (m): the expected approach (max overlap from first contact)."""
+    if settings.max_iterations < 2:
+        raise ValueError(f"max_iterations={settings.max_iterations} is out of range: the coupling needs >= 2 "
+                         "impact runs (the first finds δ_max on the loading branch, the next runs on the "
+                         "unloading)")  # fmt: skip
+    first_contact = plate.first_contact_overlap()
+    first_yield = plate.first_yield_overlap()
+
+    def load(target: float) -> IndentationResult:
+        return plate.load(first_contact + loading_path(target, settings.load_steps, first_yield))
+
+    solved = _loading_past_the_impact(load, impact_on, first_contact, estimate, settings, plate.effective_modulus)
+    if solved is None:
+        raise ValueError(f"the impact keeps going past the FE loading ({LOADING_TRIES} loadings from {estimate:.4g} m "
+                         "past first contact, each deeper): raise fem.overshoot")  # fmt: skip
+    loading, law, impact = solved
+    overlaps, change = [impact.max_overlap], math.inf
+    while len(overlaps) < settings.max_iterations:
+        unload_at = overlaps[-1] * (1.0 + UNLOAD_MARGIN)
+        d_star = first_contact + unload_at
+        try:
+            unloading = plate.unload(loading, d_star, steps=settings.unload_steps)
+        except ConvergenceError:
+            # the unloading from a plastic dent can fail near the loss of contact in coarse steps: once more in finer
+            unloading = plate.unload(loading, d_star, steps=2 * settings.unload_steps)
+        law = force_law(loading, unloading, first_contact)
+        impact = impact_on(law)
+        overlaps.append(impact.max_overlap)
+        change = abs(overlaps[-1] - overlaps[-2]) / overlaps[-2]
+        if change < settings.tolerance:
+            break
+    cycle = PlateCycle.join(loading, unloading, first_contact, d_star)
+    return CoupledImpact(impact, law, cycle, first_contact, tuple(overlaps), change, change < settings.tolerance,
+                         pressure_table(cycle, impact), unload_at)  # fmt: skip
+
+
+def couple_elastic(plate, impact_on: ImpactOnLaw, estimate: float, settings: CouplingSettings,
+                   yield_tolerance: float) -> CoupledImpact | None:  # fmt: skip
+    """The impact ``impact_on`` on ``plate``'s elastic response (:func:`fem.elastic_reload`: the plate's state is
+    not changed, the reloading and unloading retrace each other), or None when that response yields: a return
+    mapping of any loading step up to the impact's maximum gives Δᾱ > ``yield_tolerance`` (then the plastic
+    problem must be solved, :func:`couple`). Exact, on the FE's own mesh, for a plate that does not yield."""
+    first_contact = plate.first_contact_overlap()
+    reloads = []
+
+    def load(target: float) -> IndentationResult:
+        reloads.append(elastic_reload(plate, first_contact + loading_path(target, settings.load_steps, None)))
+        return reloads[-1].result
+
+    solved = _loading_past_the_impact(load, impact_on, first_contact, estimate, settings, plate.effective_modulus)
+    if solved is None:
+        return None
+    loading, law, impact = solved
+    unload_at = impact.max_overlap * (1.0 + UNLOAD_MARGIN)
+    d_star = first_contact + unload_at
+    # steps past the impact's maximum were never reached: their trial plastic strain does not count
+    reached = np.asarray(loading.overlap) <= d_star
+    trial = float(np.max(reloads[-1].trial_plastic_strain_increment[reached], initial=0.0))
+    if trial > yield_tolerance:
+        return None
+    down = np.linspace(d_star, max(0.0, first_contact - 0.05 * unload_at), settings.unload_steps + 1)
+    unloading = elastic_reload(plate, down, check_yield=False).result
+    law = force_law(loading, unloading, first_contact)
+    first = impact.max_overlap
+    impact = impact_on(law)
+    change = abs(impact.max_overlap - first) / first
+    cycle = PlateCycle.join(loading, unloading, first_contact, d_star)
+    coupled = CoupledImpact(impact, law, cycle, first_contact, (first, impact.max_overlap), change,
+                            change < settings.tolerance, pressure_table(cycle, impact), unload_at)  # fmt: skip
+    return replace(coupled, elastic=True, trial_increment=trial)
+
+
+def contact_pressure(pressure, surface_r, contact_radius) -> np.ndarray:
+    """Nodal pressure (Pa, steps × surface nodes) set to zero beyond each step's contact radius (m) and clipped at
+    zero.
+
+    The FE pressure is the L2 projection of the nodal reactions, which rings outside the contact (small positive
+    values at nodes far from it, up to ~4% of the peak next to the edge). Left in, any positive node would stretch
+    a wear grid sized from the largest loaded radius over the whole FE surface."""
+    p = np.maximum(np.asarray(pressure, float), 0.0)
+    r = np.asarray(surface_r, float)
+    a = np.asarray(contact_radius, float)
+    return np.where(r[None, :] <= a[:, None], p, 0.0)
+
+
+def pressure_table(cycle: PlateCycle, impact: ImpactResult) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(time s, surface_r m, pressure Pa) of a plate cycle placed on the impact's time axis.
+
+    Plate step j at overlap δ_j (from first contact) gets the impact time where the impact has that overlap: on the
+    loading branch for steps up to the cycle's maximum, on the unloading branch after it (steps below the residual
+    overlap fall after separation and are dropped, their pressure being zero)."""
+    h = impact.history
+    t, d = np.asarray(h.t, float), np.asarray(h.overlap, float)
+    i_max = int(np.argmax(d))
+    fe_d = np.asarray(cycle.overlap, float)
+    j_max = int(np.argmax(fe_d))
+    load_d = np.maximum.accumulate(d[: i_max + 1])
+    times = np.empty(fe_d.size)
+    times[: j_max + 1] = np.interp(fe_d[: j_max + 1], load_d, t[: i_max + 1])
+    un_t, un_d = t[i_max:][::-1], d[i_max:][::-1]
+    un_d = np.maximum.accumulate(un_d)
+    times[j_max + 1 :] = np.interp(fe_d[j_max + 1 :], un_d, un_t, left=np.inf)
+    keep = np.isfinite(times) & (times <= t[-1])
+    keep &= np.concatenate([[True], np.diff(np.where(keep, times, -np.inf)) > 0])
+    rows = contact_pressure(cycle.pressure, cycle.surface_r, cycle.contact_radius)
+    times, rows = times[keep], rows[keep]
+    # close the table at separation with zero pressure, and open it at first contact
+    if times[0] > t[0]:
+        times, rows = np.concatenate([[t[0]], times]), np.vstack([np.zeros(rows.shape[1]), rows])
+    if times[-1] < t[-1]:
+        times, rows = np.concatenate([times, [t[-1]]]), np.vstack([rows, np.zeros(rows.shape[1])])
+    return times, np.asarray(cycle.surface_r, float), rows

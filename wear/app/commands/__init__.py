@@ -1,0 +1,1 @@
+"""The commands of ``impactwear`` (one module each; see :mod:`wear.app.cli`)."""

@@ -1,0 +1,89 @@
+"""``impactwear run [CASE.toml] [--out DIR] [--quiet] [--json]``: the whole chain for one impact case.
+
+With no CASE it runs the default case (``impactwear run --print-default``: an alumina ball on a Ti-6Al-4V plate,
+3 m/s at 30°, elastic–plastic, two-way FE coupling). The case is checked completely before anything runs; a
+malformed case is one line naming the key, exit status 2, and no output. The output folder is written atomically
+(:mod:`wear.app.outputs.run`).
+"""
+
+from __future__ import annotations
+
+import argparse
+
+from wear.app.commands.common import (
+    add_case_options,
+    case_from_args,
+    collect_notes,
+    print_default,
+    print_json,
+    print_notes,
+    progress_bar,
+)
+from wear.app.outputs.run import write_run
+from wear.chain.single import STAGES, run
+
+HELP = "run one impact case through impact, FE plate, coupling and wear; write meshes, numbers and figures"
+
+DEFAULT_OUT = "impactwear-run"
+
+#: Stages shown by the progress bar: the chain's, then the writer's.
+BAR_STAGES = (*STAGES, "meshes", "figures", "render")
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    add_case_options(parser, "run")
+    parser.add_argument("--out", default=DEFAULT_OUT, metavar="DIR", help=f"output folder (default: {DEFAULT_OUT})")
+    parser.add_argument("--quiet", action="store_true", help="no progress bar and no table")
+    parser.add_argument("--json", action="store_true", help="print summary.json to stdout instead of a table")
+
+
+def _table(summary: dict, out: str) -> str:
+    imp, w, y, d = summary["impact"], summary["wear"], summary["yield"], summary["dent"]
+    c = summary.get("coupling") or {}
+
+    def num(x, scale=1.0, fmt=".4g"):
+        return "n/a" if x is None else format(x * scale, fmt)
+
+    rows = [
+        ("normal restitution", num(imp["normal_restitution"]), ""),
+        ("rebound angle (centre)", num(imp["rebound_angle"]), "deg"),
+        ("contact time", num(imp["contact_time"], 1e6), "us"),
+        ("sliding time", num(imp["sliding_time"], 1e6), "us"),
+        ("max normal force", num(imp["max_force"]), "N"),
+        ("max overlap", num(imp["max_overlap"], 1e6), "um"),
+        ("F_y (Eq. 18, C = 1.6) / F_c (exact C)", f"{num(y['F_y_paper'])} / {num(y['F_c_exact'])}", "N"),
+        ("FE first-yield force", num(y["fe_first_yield_force"]), "N"),
+        ("regime", summary["regime"], ""),
+        ("coupling iterations / final change", f"{c.get('iterations', 'n/a')} / {num(c.get('final_change'))}", ""),
+        ("worn volume", num(w["volume_m3"]), "m^3"),
+        ("worn mass", num(w["mass_kg"]), "kg"),
+        ("max wear depth", num(w["max_depth_m"], 1e9), "nm"),
+        ("scar length x width", f"{num(w['scar_length_m'], 1e6)} x {num(w['scar_width_m'], 1e6)}", "um"),
+        ("max dent depth", num(d["max_depth_m"], 1e6), "um"),
+    ]
+    width = max(len(r[0]) for r in rows)
+    lines = [f"{label:<{width}}  {value} {unit}".rstrip() for label, value, unit in rows]
+    times = ", ".join(f"{k} {v:.2f} s" for k, v in summary["stage_times_s"].items())
+    lines.append(f"stage times: {times}")
+    lines.append(f"output: {out}")
+    return "\n".join(lines)
+
+
+def main(args: argparse.Namespace) -> int:
+    if args.print_default:
+        return print_default("run")
+    case = case_from_args(args, "run")  # a malformed case raises ValueError here, before any output
+    with progress_bar(len(BAR_STAGES), "impactwear run", "stage", args.quiet) as bar, collect_notes() as notes:
+        started: list[str] = []
+
+        def progress(stage: str) -> None:
+            bar(len(started), stage)
+            started.append(stage)
+
+        summary = write_run(run(case, progress=progress), args.out, progress=progress)
+    print_notes("run", notes + summary["notes"])
+    if args.json:
+        print_json(summary)
+    elif not args.quiet:
+        print(_table(summary, args.out))
+    return 0

@@ -1,0 +1,50 @@
+"""``impactwear validate``: run every validation check of the toolkit and write ``validation.md``.
+
+One table row per check (quantity, case, reference and its source, obtained, error, tolerance, pass/fail); exit
+status 1 if any check fails. Full resolution by default (several minutes); ``--quick`` runs reduced sizes.
+The committed report is ``docs/validation.md``: regenerate it with ``impactwear validate --out docs``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import shlex
+import sys
+from pathlib import Path
+
+from wear.app.validation.checks import GROUPS
+from wear.app.validation.runner import render_report, run_validation, write_report
+
+HELP = "run every validation check (contact, fem, wear) and write validation.md; exit 1 if any fails"
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--out", default=".", metavar="DIR", help="folder of validation.md (default: current)")
+    parser.add_argument("--report", metavar="PATH", help="write the report to this file instead of DIR/validation.md")
+    parser.add_argument("--quick", action="store_true", help="reduced sizes (the test suite's mode)")
+    parser.add_argument("--only", action="append", metavar="TEXT", help="run the groups whose name contains TEXT")
+    parser.add_argument("--list", action="store_true", help="list the check groups and exit")
+    parser.add_argument("--quiet", action="store_true", help="no progress lines")
+
+
+def main(args: argparse.Namespace) -> int:
+    if args.list:
+        for name, group in GROUPS.items():
+            print(f"{group.area:8s} {name}")
+        return 0
+
+    def progress(name: str) -> None:
+        if not args.quiet:
+            print(f"validate: {name} ...", file=sys.stderr, flush=True)
+
+    result = run_validation(quick=args.quick, only=args.only, progress=progress)
+    path = Path(args.report) if args.report else Path(args.out) / "validation.md"
+    command = "impactwear validate" + (" --quick" if args.quick else "")
+    command += "".join(f" --only {shlex.quote(s)}" for s in args.only or ())
+    write_report(path, render_report(result, command))
+    for c in result.failed:
+        print(f"FAIL [{c.group}] {c.quantity} ({c.case}): obtained {c.obtained}, reference {c.reference}, "
+              f"error {c.error:.4g} > tolerance {c.tolerance:.4g}")  # fmt: skip
+    n, bad = len(result.checks), len(result.failed)
+    print(f"{n - bad}/{n} checks passed; report: {path}")
+    return 1 if bad else 0

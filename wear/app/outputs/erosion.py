@@ -1,0 +1,96 @@
+"""The output folder of ``impactwear erode`` (:mod:`wear.erosion.run`), each file written atomically by the one
+writer (SI units; angles in degrees from the plate normal):
+
+- ``erosion.csv``: time_s, impacts, particle_mass_kg, mass_loss_kg, mass_loss_per_area_kg_m2, erosion_rate
+  (kg/kg, cumulative), interval_erosion_rate (kg/kg since the previous row), max_depth_m, rms_slope;
+  ``erosion.png`` (mass loss and rates against time);
+- ``surface.vtu`` (final surface: a structured quad grid, z = −depth, point data ``depth``, ``wear`` in m),
+  ``frames/surface_NNNN.vtu`` and ``erosion.pvd`` (the series, time in s; open in ParaView); ``surface.png``;
+- ``response_table.csv`` (the footprint table: normal speed, local angle, volumes, contact radius) and
+  ``summary.json`` (case, number of impacts, patch, table resolution, results, timings).
+
+Over several stream angles: one such folder per angle (``angle_<deg>/``, without the series) and
+``erosion_vs_angle.csv`` (angle_deg, erosion_rate, mass_loss_kg) with ``erosion_vs_angle.png``.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import meshio
+import numpy as np
+
+from wear.app.figures import erosion as fig
+from wear.app.outputs.writer import write_json, write_mesh, write_pvd, write_rows
+from wear.erosion import ErosionRun
+
+__all__ = ["write_erosion", "write_erosion_angles", "surface_grid_mesh", "EROSION_COLUMNS", "TABLE_COLUMNS"]
+
+EROSION_COLUMNS = ["time_s", "impacts", "particle_mass_kg", "mass_loss_kg", "mass_loss_per_area_kg_m2", "erosion_rate",
+                   "interval_erosion_rate", "max_depth_m", "rms_slope"]  # fmt: skip
+TABLE_COLUMNS = ["normal_speed_m_s", "angle_deg", "volume_m3", "sliding_volume_m3", "deformation_volume_m3",
+                 "contact_radius_m"]  # fmt: skip
+
+
+def surface_grid_mesh(x: np.ndarray, y: np.ndarray, surface: np.ndarray, wear: np.ndarray | None = None
+                      ) -> meshio.Mesh:  # fmt: skip
+    """A height field (m, positive into the plate) as a structured quad grid: z = −depth, point data ``depth`` and
+    (if given) ``wear`` (m)."""
+    nx, ny = len(x), len(y)
+    xx, yy = np.meshgrid(x, y)
+    points = np.column_stack([xx.ravel(), yy.ravel(), -np.asarray(surface).ravel()])
+    node = np.arange(nx * ny).reshape(ny, nx)
+    quads = np.column_stack([node[:-1, :-1].ravel(), node[:-1, 1:].ravel(), node[1:, 1:].ravel(),
+                             node[1:, :-1].ravel()])  # fmt: skip
+    data = {"depth": np.asarray(surface).ravel()}
+    if wear is not None:
+        data["wear"] = np.asarray(wear).ravel()
+    return meshio.Mesh(points, [("quad", quads)], point_data=data)
+
+
+def write_erosion(run: ErosionRun, out: str | os.PathLike, series: bool = True) -> dict:
+    """Write one erosion into the folder ``out`` (created); with ``series`` also the frames, the .pvd and the
+    figures. Returns the summary."""
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    r = run.result
+    area = r.patch_size**2
+    write_rows(out / "erosion.csv", EROSION_COLUMNS,
+               zip(r.time, r.impacts, r.particle_mass_kg, r.mass_loss_kg, r.mass_loss_kg / area, r.erosion_rate,
+                   r.interval_erosion_rate, r.max_depth_m, r.rms_slope, strict=True))  # fmt: skip
+    write_rows(out / "response_table.csv", TABLE_COLUMNS, r.table.rows())
+    write_mesh(out / "surface.vtu", surface_grid_mesh(r.x, r.y, r.surface, r.wear))
+    if series:
+        (out / "frames").mkdir(exist_ok=True)
+        entries = [(0.0, "frames/surface_0000.vtu")]
+        write_mesh(out / entries[0][1], surface_grid_mesh(r.x, r.y, np.zeros_like(r.wear)))
+        for k, (t, frame) in enumerate(zip(r.frame_time, r.frames, strict=True), start=1):
+            name = f"frames/surface_{k:04d}.vtu"
+            write_mesh(out / name, surface_grid_mesh(r.x, r.y, frame))
+            entries.append((float(t), name))
+        write_pvd(out / "erosion.pvd", entries)
+        title = f"{r.stream.speed:g} m/s at {r.stream.angle:g} deg"
+        fig.plot_time_series(r.time, r.mass_loss_kg, r.erosion_rate, out / "erosion.png", title,
+                             interval_rate=r.interval_erosion_rate)  # fmt: skip
+        fig.plot_surface(r.x, r.y, r.surface, out / "surface.png", r.stream.azimuth, title)
+    summary = run.summary()
+    write_json(out / "summary.json", summary)
+    return summary
+
+
+def write_erosion_angles(runs: list[ErosionRun], out: str | os.PathLike) -> list[tuple[float, float, float]]:
+    """Write one erosion per stream angle into ``out/angle_<deg>/`` and ``erosion_vs_angle.csv`` and ``.png``;
+    returns the rows (angle deg, erosion rate kg/kg, mass loss kg)."""
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    rows = []
+    for run in runs:
+        a = run.result.stream.angle
+        write_erosion(run, out / f"angle_{a:g}", series=False)
+        rows.append((a, run.result.final_erosion_rate, float(run.result.mass_loss_kg[-1])))
+    write_rows(out / "erosion_vs_angle.csv", ["angle_deg", "erosion_rate", "mass_loss_kg"], rows)
+    case = runs[0].case
+    fig.plot_angles([r[0] for r in rows], [r[1] for r in rows], [r[2] for r in rows], out / "erosion_vs_angle.png",
+                    f"{case.impact.speed:g} m/s, {case.erosion.exposure_time:g} s")  # fmt: skip
+    return rows

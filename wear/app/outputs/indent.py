@@ -1,0 +1,37 @@
+"""The output folder of ``impactwear indent`` (:func:`wear.chain.indent.indent_case`): ``force_overlap.csv``,
+``pressure.csv`` (p(r) per step), ``residual_depth.csv``, ``plate.vtu``, the figures and ``summary.json``, each
+written atomically by the one writer. SI units in every column name."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from wear.app.figures.indent import write_figures
+from wear.app.outputs.writer import write_json, write_mesh, write_rows
+from wear.chain.indent import IndentRun
+
+__all__ = ["write_indent"]
+
+
+def write_indent(run: IndentRun, out: str | os.PathLike, figures: bool = True) -> dict:
+    """Write the outputs of ``run`` into the folder ``out`` (created); returns the summary."""
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    res = run.result
+    steps = range(res.overlap.size)
+    write_rows(out / "force_overlap.csv",
+               ["step", "overlap_m", "force_N", "contact_radius_m", "max_pressure_Pa", "mean_pressure_Pa",
+                "max_equivalent_plastic_strain", "regime"],
+               ([k, res.overlap[k], res.force[k], res.contact_radius[k], res.max_pressure[k], res.mean_pressure[k],
+                 res.max_equivalent_plastic_strain[k], res.regime[k]] for k in steps))  # fmt: skip
+    write_rows(out / "pressure.csv", ["r_m"] + [f"step{k}_Pa" for k in steps],
+               ([r, *res.pressure[:, i]] for i, r in enumerate(res.surface_r)))  # fmt: skip
+    write_rows(out / "residual_depth.csv", ["r_m", "residual_depth_m"],
+               zip(res.surface_r, res.residual_depth, strict=True))  # fmt: skip
+    write_mesh(out / "plate.vtu", res.to_meshio())
+    if figures:
+        write_figures(res, out)
+    summary = run.summary()
+    write_json(out / "summary.json", summary)
+    return summary

@@ -1,0 +1,127 @@
+"""The output folder of ``impactwear run`` (:func:`wear.run`), written atomically by the one writer.
+
+Files: ``summary.json`` (case, versions, results, stage times, notes), ``history.csv`` (impact histories, units in
+the column names), ``pressure.npz`` (the wear stage's p(s, t) table, and the FE table p(r, t) if any),
+``surface.vtu``, ``plate.vtu``, ``plate_fe.vtu`` (with an FE plate), the PNG figures and ``surface_3d.png``.
+"""
+
+from __future__ import annotations
+
+import os
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+import meshio
+import numpy as np
+
+from contact import History
+from wear.app.figures.run import write_run_figures
+from wear.app.outputs.render import render_surface, rendering_available
+from wear.app.outputs.writer import atomic_output_dir, versions, write_csv, write_json, write_mesh, write_npz
+from wear.chain.single import RunResult
+from wear.integrate import axisymmetric_wear_depth
+from wear.pressure import sliding_speed
+from wear.surface import deform_plate_mesh, plate_block_mesh, surface_mesh
+
+__all__ = ["write_run", "history_columns", "HISTORY_COLUMNS"]
+
+#: history.csv columns: :class:`contact.History` field → column name with units.
+HISTORY_COLUMNS = {
+    "t": "time_s",
+    "overlap": "overlap_m",
+    "normal_force": "normal_force_N",
+    "tangential_force": "tangential_force_N",
+    "tangential_displacement": "tangential_displacement_m",
+    "contact_radius": "contact_radius_m",
+    "peak_pressure": "peak_pressure_Pa",
+    "slip_velocity": "slip_velocity_m_per_s",
+    "sliding": "sliding",
+    "center_x": "center_x_m",
+    "contact_x": "contact_x_m",
+    "omega": "spin_rad_per_s",
+    "normal_velocity": "normal_velocity_m_per_s",
+    "tangential_velocity": "tangential_velocity_m_per_s",
+}
+
+
+def history_columns(history: History) -> dict[str, np.ndarray]:
+    """The impact's histories as history.csv columns (SI units in the names)."""
+    return {label: np.asarray(getattr(history, attr), dtype=float) for attr, label in HISTORY_COLUMNS.items()}
+
+
+def write_run(result: RunResult, out: str | os.PathLike, progress: Callable[[str], None] | None = None) -> dict:
+    """Write the whole output folder of ``result`` atomically; returns the summary. ``progress(stage)`` is called
+    at "meshes", "figures", "render"."""
+    notify = progress or (lambda stage: None)
+    case = result.case
+    times = dict(result.stage_times)
+    notes: list[str] = []
+    with atomic_output_dir(out) as tmp:
+        notify("meshes")
+        t0 = time.perf_counter()
+        write_csv(tmp / "history.csv", history_columns(result.impact.history))
+        ph = result.pressure
+        arrays = {"time_s": ph.time, "contact_x_m": ph.contact_x, "extent_m": ph.extent, "pressure_Pa": ph.pressure,
+                  "s": ph.s, "source": np.array(ph.source)}  # fmt: skip
+        if result.coupling is not None:
+            ft, fr, fp = result.coupling.pressure_table
+            arrays.update(fe_time_s=ft, fe_surface_r_m=fr, fe_pressure_Pa=fp)
+        write_npz(tmp / "pressure.npz", arrays)
+        surf_mesh = surface_mesh(result.surface)
+        write_mesh(tmp / "surface.vtu", surf_mesh)
+        if case.output.plate_mesh:
+            try:
+                user = meshio.read(case.output.plate_mesh)
+            except Exception as exc:  # meshio raises many types for unreadable files
+                raise ValueError(
+                    f"output.plate_mesh={case.output.plate_mesh!r} cannot be read by meshio: {exc}"
+                ) from None
+            write_mesh(tmp / "plate.vtu", deform_plate_mesh(user, result.surface))
+        else:
+            write_mesh(tmp / "plate.vtu", plate_block_mesh(result.surface, case.output.block_thickness))
+        if result.fe is not None:
+            write_mesh(tmp / "plate_fe.vtu", _plate_fe(result))
+        times["meshes"] = time.perf_counter() - t0
+        if case.output.figures:
+            notify("figures")
+            t0 = time.perf_counter()
+            write_run_figures(result, tmp)
+            times["figures"] = time.perf_counter() - t0
+        if case.output.render:
+            notify("render")
+            t0 = time.perf_counter()
+            ok, why = rendering_available()
+            if ok:
+                render_surface(surf_mesh, tmp / "surface_3d.png", title="dent + wear")
+            else:
+                notes.append(why)
+            times["render"] = time.perf_counter() - t0
+        summary = result.summary()
+        summary["stage_times_s"] = times
+        summary["versions"] = versions()
+        summary["notes"] = notes
+        summary["files"] = [*sorted(p.name for p in Path(tmp).iterdir()), "summary.json"]
+        write_json(tmp / "summary.json", summary)
+    return summary
+
+
+def _plate_fe(result: RunResult) -> meshio.Mesh:
+    """The FE plate after the impact (points (r, z, 0) m, point data ``u`` m, ``pressure`` Pa, cell data
+    ``von_mises`` Pa, ``equivalent_plastic_strain``); for a normal impact its surface nodes are also moved down by
+    the axisymmetric wear depth h(r) (point data ``wear_depth``, m)."""
+    mesh = result.fe.to_meshio()
+    pts = np.asarray(mesh.points, dtype=float)
+    u = np.asarray(mesh.point_data["u"], dtype=float)
+    undeformed_z = pts[:, 1] - u[:, 1]
+    on_surface = np.abs(undeformed_z) <= 1e-9 * float(np.ptp(pts[:, 0]))
+    wear = np.zeros(pts.shape[0])
+    if result.case.impact.angle == 0.0:
+        undeformed_r = pts[:, 0] - u[:, 0]
+        h = axisymmetric_wear_depth(result.pressure, sliding_speed(result.impact, result.case.wear.speed),
+                                    result.case.wear.law(), undeformed_r)  # fmt: skip
+        wear = np.where(on_surface & (undeformed_r >= 0), h, 0.0)
+    pts[:, 1] -= wear
+    point_data = dict(mesh.point_data)
+    point_data["wear_depth"] = wear
+    return meshio.Mesh(pts, mesh.cells, point_data=point_data, cell_data=dict(mesh.cell_data))

@@ -1,0 +1,200 @@
+"""The one writer of every output file and folder: each file is written to a temporary file in its folder and
+renamed into place, each output folder is built as a hidden temporary folder and renamed into place at the end.
+
+An interrupted or failed write leaves either the previous complete file or folder or nothing — never a
+complete-looking partial one. Temporary names carry the writing process's id (``.<name>.<pid>.<random>.tmp<suffix>``,
+``.<name>.partial-<pid>-<random>``), so that :func:`remove_stale_temps` can delete those a killed process left.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+import os
+import platform
+import re
+import shutil
+import tempfile
+from collections.abc import Callable, Iterable, Iterator, Mapping
+from contextlib import contextmanager
+from dataclasses import asdict, is_dataclass
+from importlib.metadata import PackageNotFoundError, version
+from pathlib import Path
+from typing import IO, Any
+
+import meshio
+import numpy as np
+
+__all__ = ["atomic_output_dir", "atomic_write", "to_jsonable", "versions", "write_csv", "write_json",
+           "write_mesh", "write_npz", "write_pvd", "write_rows", "write_text", "remove_stale_temps"]  # fmt: skip
+
+
+@contextmanager
+def atomic_output_dir(target: str | os.PathLike, *, overwrite: bool = True) -> Iterator[Path]:
+    """Yield a temporary folder; on success it replaces ``target``, on any error it is removed.
+
+    With ``overwrite=False`` an existing ``target`` is an error (checked before anything is written). The swap
+    keeps the old folder until the new one is in place: rename old → trash, rename new → target, delete trash.
+    """
+    target = Path(target).resolve()
+    if target.exists() and not target.is_dir():
+        raise ValueError(f"out={str(target)!r} exists and is not a folder: give a folder path")
+    if target.exists() and not overwrite:
+        raise ValueError(f"out={str(target)!r} already exists: choose another folder or allow overwriting")
+    target.parent.mkdir(parents=True, exist_ok=True)
+    tmp = Path(tempfile.mkdtemp(prefix=f".{target.name}.partial-{os.getpid()}-", dir=target.parent))
+    try:
+        yield tmp
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
+    trash = None
+    if target.exists():
+        trash = Path(tempfile.mkdtemp(prefix=f".{target.name}.old-", dir=target.parent))
+        os.replace(target, trash / "old")
+    os.replace(tmp, target)
+    if trash is not None:
+        shutil.rmtree(trash, ignore_errors=True)
+
+
+def atomic_write(path: str | os.PathLike, dump: Callable[[IO], Any] | Callable[[str], Any], *, mode: str = "text",
+                 fsync: bool = False) -> Path:  # fmt: skip
+    """Write ``path`` through a temporary file in its folder, renamed into place when ``dump`` returns.
+
+    ``mode``: "text" (``dump(f)`` gets a UTF-8 text file, newline translation off), "binary" (a binary file) or
+    "path" (``dump(name)`` gets the temporary file's name, ending in ``path``'s suffix, for writers that open the
+    file themselves). ``fsync``: flush to disk before the rename (files a resumed run trusts)."""
+    path = Path(path)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.{os.getpid()}.", suffix=f".tmp{path.suffix}", dir=path.parent)
+    try:
+        if mode == "path":
+            os.close(fd)
+            dump(tmp)
+        else:
+            opened = os.fdopen(fd, "w", encoding="utf-8", newline="") if mode == "text" else os.fdopen(fd, "wb")
+            with opened as f:
+                dump(f)
+                if fsync:
+                    f.flush()
+                    os.fsync(f.fileno())
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    return path
+
+
+def to_jsonable(value: Any) -> Any:
+    """Plain JSON types from dataclasses, numpy scalars/arrays, paths, tuples; non-finite floats → None."""
+    if is_dataclass(value) and not isinstance(value, type):
+        return to_jsonable(asdict(value))
+    if isinstance(value, Mapping):
+        return {str(k): to_jsonable(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [to_jsonable(v) for v in value]
+    if isinstance(value, np.ndarray):
+        return to_jsonable(value.tolist())
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    if isinstance(value, (int, np.integer)):
+        return int(value)
+    if isinstance(value, (float, np.floating)):
+        x = float(value)
+        return x if math.isfinite(x) else None
+    if isinstance(value, os.PathLike):
+        return os.fspath(value)
+    if value is None or isinstance(value, str):
+        return value
+    return str(value)
+
+
+def write_text(path: str | os.PathLike, text: str, fsync: bool = False) -> Path:
+    """Write ``text`` (UTF-8)."""
+    return atomic_write(path, lambda f: f.write(text), fsync=fsync)
+
+
+def write_json(path: str | os.PathLike, data: Any, fsync: bool = False) -> Path:
+    """Write ``data`` as indented JSON (non-finite floats as null)."""
+    return write_text(path, json.dumps(to_jsonable(data), indent=2, allow_nan=False) + "\n", fsync=fsync)
+
+
+def write_rows(path: str | os.PathLike, header: list[str], rows: Iterable[Iterable[Any]]) -> Path:
+    """Write a CSV with a ``header`` row (names with units, e.g. ``time_s``) and ``rows`` as given."""
+
+    def dump(f: IO) -> None:
+        writer = csv.writer(f)
+        writer.writerow(header)
+        writer.writerows(rows)
+
+    return atomic_write(path, dump)
+
+
+def write_csv(path: str | os.PathLike, columns: Mapping[str, Any]) -> Path:
+    """Write equal-length 1-D numeric ``columns`` (header = keys, which carry units) with 10 significant digits."""
+    arrays = {k: np.asarray(v).ravel() for k, v in columns.items()}
+    lengths = {v.size for v in arrays.values()}
+    if len(lengths) > 1:
+        raise ValueError(f"columns have different lengths {sorted(lengths)}: a CSV needs equal-length columns")
+    rows = ([f"{float(v):.10g}" for v in row] for row in zip(*arrays.values(), strict=True))
+    return write_rows(path, list(arrays), rows)
+
+
+def write_npz(path: str | os.PathLike, arrays: Mapping[str, Any]) -> Path:
+    """Write ``arrays`` to a compressed ``.npz``."""
+    return atomic_write(path, lambda f: np.savez_compressed(f, **{k: np.asarray(v) for k, v in arrays.items()}),
+                        mode="binary")  # fmt: skip
+
+
+def write_mesh(path: str | os.PathLike, mesh: meshio.Mesh) -> Path:
+    """Write a meshio mesh (format from ``path``'s suffix, e.g. ``.vtu``)."""
+    file_format = meshio.extension_to_filetypes[Path(path).suffix][0]
+    return atomic_write(path, lambda name: meshio.write(name, mesh, file_format=file_format), mode="path")
+
+
+def write_pvd(path: str | os.PathLike, entries: list[tuple[float, str]]) -> Path:
+    """Write a ParaView collection of (time s, .vtu path relative to ``path``'s folder)."""
+    lines = ['<?xml version="1.0"?>', '<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">',
+             "  <Collection>"]  # fmt: skip
+    lines += [f'    <DataSet timestep="{t:.9g}" group="" part="0" file="{f}"/>' for t, f in entries]
+    lines += ["  </Collection>", "</VTKFile>", ""]
+    return write_text(path, "\n".join(lines))
+
+
+def versions() -> dict[str, str]:
+    """Versions of impactwear, Python and the numerical libraries (for summary.json)."""
+    out = {"python": platform.python_version()}
+    for name in ("impactwear", "numpy", "scipy", "numba", "scikit-fem", "meshio", "matplotlib", "pyvista"):
+        try:
+            out[name] = version(name)
+        except PackageNotFoundError:
+            out[name] = "not installed"
+    return out
+
+
+_TEMP = re.compile(r"^\.(?P<name>.+)\.(?:(?P<pid>\d+)\.[A-Za-z0-9_]+\.tmp(?:\.\w+)?|partial-(?P<dir_pid>\d+)-\w+)$")
+
+
+def remove_stale_temps(folder: str | os.PathLike) -> list[Path]:
+    """Delete the temporary files and folders in ``folder`` that this writer's processes left when killed (their
+    process no longer runs); returns what was deleted. Another running process's temporaries are kept."""
+    removed = []
+    for p in Path(folder).glob(".*"):
+        m = _TEMP.match(p.name)
+        if m is None:
+            continue
+        pid = int(m["pid"] or m["dir_pid"])
+        try:
+            os.kill(pid, 0)
+            continue  # still running (ours or another live writer)
+        except ProcessLookupError:
+            pass
+        except PermissionError:
+            continue  # another user's live process
+        if p.is_dir():
+            shutil.rmtree(p, ignore_errors=True)
+        else:
+            p.unlink(missing_ok=True)
+        removed.append(p)
+    return removed

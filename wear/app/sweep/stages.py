@@ -1,0 +1,191 @@
+"""The stages a sweep can run, and the function a worker process calls for one case.
+
+A stage is a function ``case -> dict``: it takes one full, validated case (tables of values,
+:meth:`wear.Case.to_dict`, SI units, angles in degrees from the plate normal) and returns a flat dict of
+JSON scalars (float, int, bool, str or None). ``tables`` lists the case tables the stage reads: only those enter
+the case id, so a change elsewhere in the schema does not invalidate finished cases.
+
+This module is imported by every worker (local pool or Dask).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import socket
+import time
+import traceback
+import warnings
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from contact import simulate_impact
+from contact.results import OUTPUT_UNITS
+from fem import worst_regime
+from wear.case import Case, default_case
+from wear.chain.single import one_way, run
+
+__all__ = ["Stage", "STAGES", "execute_case", "impact_stage", "indent_stage", "run_stage", "stage_case"]
+
+
+@dataclass(frozen=True)
+class Stage:
+    """A sweep stage: ``name``, ``function`` (case dict → flat result dict), ``tables`` it reads (None = all),
+    ``description``, ``job``: the job whose default case a sweep's ``[base]`` is laid over
+    (:func:`wear.case.default_case`), ``units``: result name → SI unit (for figures)."""
+
+    name: str
+    function: Callable[[dict], dict]
+    tables: tuple[str, ...] | None
+    description: str
+    job: str
+    units: Callable[[], dict[str, str]] = dict
+
+    def defaults(self) -> dict:
+        """The default case of the stage's job, as tables of values (the tables the stage reads)."""
+        return default_case(self.job).to_dict(self.tables)
+
+
+def stage_case(case: dict, job: str) -> Case:
+    """The :class:`wear.Case` of a sweep case (tables of values) over ``job``'s default case."""
+    return Case.from_dict(case, base=default_case(job))
+
+
+def impact_stage(case: dict) -> dict:
+    """One impact (:func:`contact.simulate_impact`) of the case's ``[ball]``, ``[plate]``, ``[impact]``.
+
+    Returns the scalar outputs of :class:`contact.ImpactResult` under their own names (SI: restitutions
+    dimensionless, angles deg, ``spin`` rad/s, velocities m/s, times s, forces N, lengths m, pressure Pa,
+    energies J, ``steps`` count); a non-finite value (e.g. ``tangential_restitution`` at angle 0) is None.
+    """
+    result = simulate_impact(**stage_case(case, "impact").impact_arguments(), history=False).to_dict()
+    return {k: result[k] for k in OUTPUT_UNITS}
+
+
+def indent_stage(case: dict) -> dict:
+    """The FE plate along the case's impact (:func:`fem.indent_impact`, ``fem.load_steps + fem.unload_steps``
+    increments, the mesh of ``fem.mesh_scale`` as in ``impactwear run``), one-way: the impact uses the case's
+    ``impact.normal_model``.
+
+    Results (SI): ``impact_max_overlap`` (m), ``impact_max_force`` (N), ``max_force`` (N, FE), ``max_contact_radius``
+    (m), ``max_pressure`` and ``max_mean_pressure`` (Pa), ``first_yield_force`` (N), ``first_yield_overlap`` (m),
+    ``first_yield_depth`` (m below the surface), ``first_yield_radius`` (m; all None if the plate never yields),
+    ``residual_max_depth`` (m, dent depth after unloading), ``max_equivalent_plastic_strain``, ``regime`` (the
+    most plastic one reached), ``newton_iterations`` (total).
+    """
+    c = stage_case(case, "run")
+    impact = simulate_impact(**c.impact_arguments(), history=True)
+    res = one_way(c, impact)  # the ball comes with the impact
+    fy = res.first_yield
+    return {
+        "impact_max_overlap": impact.max_overlap,
+        "impact_max_force": impact.max_force,
+        "max_force": float(np.max(res.force)),
+        "max_contact_radius": float(np.max(res.contact_radius)),
+        "max_pressure": float(np.max(res.max_pressure)),
+        "max_mean_pressure": float(np.nanmax(res.mean_pressure)),
+        "first_yield_force": None if fy is None else fy.force,
+        "first_yield_overlap": None if fy is None else fy.overlap,
+        "first_yield_depth": None if fy is None else fy.depth,
+        "first_yield_radius": None if fy is None else fy.radius,
+        "residual_max_depth": float(np.max(res.residual_depth)),
+        "max_equivalent_plastic_strain": float(np.max(res.max_equivalent_plastic_strain)),
+        "regime": worst_regime(res.regime),
+        "newton_iterations": int(np.sum(res.newton_iterations)),
+    }
+
+
+_INDENT_UNITS = {
+    "impact_max_overlap": "m",
+    "impact_max_force": "N",
+    "max_force": "N",
+    "max_contact_radius": "m",
+    "max_pressure": "Pa",
+    "max_mean_pressure": "Pa",
+    "first_yield_force": "N",
+    "first_yield_overlap": "m",
+    "first_yield_depth": "m",
+    "first_yield_radius": "m",
+    "residual_max_depth": "m",
+}
+
+
+def run_stage(case: dict) -> dict:
+    """The whole chain (:func:`wear.run`: impact, FE plate, coupling, wear, surface; no files written).
+
+    Results: the numbers of ``summary.json`` flattened to dotted names — ``impact.*`` (rebound, times s, forces N,
+    lengths m, pressure Pa), ``yield.*`` (N, m/s), ``regime``, ``wear.*`` (``volume_m3``, ``mass_kg``,
+    ``max_depth_m``, ``scar_length_m``, ``scar_width_m``, law, pressure source), ``dent.*`` (m) and
+    ``coupling.*`` — without the input case and without the stage wall times (not reproducible).
+    """
+    summary = run(stage_case(case, "run")).summary()
+    out: dict = {}
+    for section, values in summary.items():
+        if section in ("case", "stage_times_s"):
+            continue
+        if isinstance(values, dict):
+            for key, value in values.items():
+                if key != "units" and not isinstance(value, (dict, list, tuple)):
+                    out[f"{section}.{key}"] = value
+        elif values is not None:
+            out[section] = values
+    return out
+
+
+def _run_units() -> dict[str, str]:
+    units = {f"impact.{k}": u for k, u in OUTPUT_UNITS.items()}
+    units.update({"yield.F_y_paper": "N", "yield.F_c_exact": "N", "yield.fe_first_yield_force": "N",
+                  "yield.V_y": "m/s", "dent.max_depth_m": "m", "dent.centre_x_m": "m"})  # fmt: skip
+    return units
+
+
+STAGES: dict[str, Stage] = {
+    "impact": Stage("impact", impact_stage, ("ball", "plate", "impact"), "one H-DD impact (contact.simulate_impact)",
+                    "impact", lambda: dict(OUTPUT_UNITS)),
+    "indent": Stage("indent", indent_stage, ("ball", "plate", "impact", "fem"),
+                    "the FE plate along the impact's overlap history (fem.indent_impact)", "run",
+                    lambda: dict(_INDENT_UNITS)),
+    "run": Stage("run", run_stage, ("ball", "plate", "impact", "wear", "fem"),
+                 "the whole chain impact -> FE -> coupling -> wear (wear.run)", "run", _run_units),
+}  # fmt: skip
+
+
+def flat_results(values: Mapping[str, Any], stage: str) -> dict[str, Any]:
+    """Check a stage's output: a flat dict of str → JSON scalar (numpy scalars converted; NaN and inf → None)."""
+    if not isinstance(values, Mapping):
+        raise TypeError(f"stage {stage!r} returned {type(values).__name__}, not a dict")
+    out: dict[str, Any] = {}
+    for key, value in values.items():
+        if hasattr(value, "item") and not isinstance(value, (str, bytes)):
+            value = value.item()
+        if isinstance(value, float) and not math.isfinite(value):
+            value = None
+        if not (value is None or isinstance(value, (bool, int, float, str))):
+            raise TypeError(f"stage {stage!r} result {key!r} is a {type(value).__name__}, not a JSON scalar")
+        out[str(key)] = value
+    return out
+
+
+def execute_case(stage: str, case: dict) -> dict:
+    """Run ``case`` through ``stage`` in this process; never raises for an error of the case itself.
+
+    Returns ``{"status": "ok" | "failed", "results": dict | None, "error": str | None, "traceback": str | None,
+    "warnings": [str], "elapsed_s": float, "worker": "host:pid"}`` (warnings are recorded, not printed).
+    """
+    start = time.perf_counter()
+    record: dict[str, Any] = {"status": "ok", "results": None, "error": None, "traceback": None}
+    # warnings are kept with the case instead of flooding the driver's terminal with one copy per case
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            record["results"] = flat_results(STAGES[stage].function(case), stage)
+        except Exception as exc:  # a failed case is recorded and the sweep goes on
+            error = f"{type(exc).__name__}: {exc}".splitlines()[0]
+            record.update(status="failed", error=error, traceback=traceback.format_exc())
+    record["warnings"] = list(dict.fromkeys(f"{w.category.__name__}: {w.message}" for w in caught))
+    record["elapsed_s"] = time.perf_counter() - start
+    record["worker"] = f"{socket.gethostname()}:{os.getpid()}"
+    return record

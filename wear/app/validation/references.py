@@ -1,0 +1,67 @@
+"""Published reference data shared by the validation, the reproduced figures and the tests, with their sources.
+
+Kharaz, Gorham & Salman (2001), Powder Technol. 120:281: an alumina ball R = 2.5 mm (E 380 GPa, ν 0.23,
+4000 kg/m³) on soda-lime glass (E 70 GPa, ν 0.25) at 3.9 m/s, μ = 0.092, normal restitution 0.98 (the value
+commonly used with this experiment, e.g. Chung & Ooi 2011); the digitised points ship as package data
+(``wear/app/data/kharaz2001.csv``).
+"""
+
+from __future__ import annotations
+
+from importlib import resources
+
+import numpy as np
+
+from contact import BatchResult, Material, simulate_impacts
+
+__all__ = ["KHARAZ", "KHARAZ_SOURCE", "kharaz_batch", "kharaz_data", "kharaz_rms"]
+
+#: Kharaz, Gorham & Salman (2001) setup (see the module docstring).
+KHARAZ = dict(
+    radius=2.5e-3,
+    ball=Material(E=380e9, nu=0.23, density=4000.0, name="alumina"),
+    plate=Material(E=70e9, nu=0.25, density=2500.0, name="soda-lime glass"),
+    speed=3.9,
+    friction=0.092,
+    restitution=0.98,
+)
+KHARAZ_SOURCE = "Kharaz, Gorham & Salman (2001) Powder Technol. 120:281 (digitised points)"
+
+
+def kharaz_data() -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """The Kharaz, Gorham & Salman (2001) points shipped as package data: quantity → (angles deg, values).
+
+    Quantities: ``tangential_restitution``, ``spin_rad_per_s``, ``centre_rebound_angle_deg``."""
+    text = resources.files("wear.app").joinpath("data/kharaz2001.csv").read_text(encoding="utf-8")
+    out: dict[str, list] = {}
+    for line in text.splitlines():
+        if not line.strip() or line.startswith("#"):
+            continue
+        quantity, angle, value = line.split(",")
+        out.setdefault(quantity, []).append((float(angle), float(value)))
+    return {q: (np.array([a for a, _ in v]), np.array([x for _, x in v])) for q, v in out.items()}
+
+
+def kharaz_batch(angles) -> BatchResult:
+    """The Kharaz setup simulated at ``angles`` (deg from the normal)."""
+    k = KHARAZ
+    return simulate_impacts(k["radius"], k["ball"], k["plate"], k["speed"], angles, k["friction"], k["restitution"])
+
+
+def _rms(model, data) -> float:
+    return float(np.sqrt(np.mean((np.asarray(model) - np.asarray(data)) ** 2)))
+
+
+def kharaz_rms() -> dict[str, float]:
+    """RMS differences between the model (simulated at the measured angles) and the Kharaz et al. 2001 points:
+    centre rebound angle (deg), spin (rad/s), tangential restitution."""
+    data = kharaz_data()
+    out = {}
+    for quantity, attr in (
+        ("centre_rebound_angle_deg", "rebound_angle"),
+        ("spin_rad_per_s", "spin"),
+        ("tangential_restitution", "tangential_restitution"),
+    ):
+        angles, values = data[quantity]
+        out[quantity] = _rms(getattr(kharaz_batch(angles), attr), values)
+    return out

@@ -1,0 +1,56 @@
+"""The case: every table and key defined once (:mod:`wear.case.tables`), each job's default case
+(:mod:`wear.case.jobs`) and case files (:mod:`wear.case.toml`).
+
+>>> from wear.case import Case, default_case, dump_case
+>>> Case().impact.speed                      # impactwear run's default (m/s)
+3.0
+>>> default_case("impact").plate.name        # impactwear impact's default: Kharaz et al. (2001)
+'soda-lime glass'
+>>> Case().with_(impact={"angle": 120.0})
+Traceback (most recent call last):
+...
+ValueError: impact.angle=120 is out of range: impact angle from the plate normal must be in [0, 90) deg
+"""
+
+from wear.case.jobs import JOBS, Job, default_case
+from wear.case.schema import Key, Table, key
+from wear.case.tables import (
+    COUPLINGS,
+    TABLES,
+    BallSpec,
+    Case,
+    ErosionSpec,
+    FemSpec,
+    ImpactSpec,
+    OutputSpec,
+    PlateSpec,
+    RepeatSpec,
+    WearSpec,
+)
+from wear.case.toml import apply_override, dump_case, key_reference, load_case, parse_case, toml_value
+
+__all__ = [
+    "COUPLINGS",
+    "JOBS",
+    "TABLES",
+    "BallSpec",
+    "Case",
+    "ErosionSpec",
+    "FemSpec",
+    "ImpactSpec",
+    "Job",
+    "Key",
+    "OutputSpec",
+    "PlateSpec",
+    "RepeatSpec",
+    "Table",
+    "WearSpec",
+    "apply_override",
+    "default_case",
+    "dump_case",
+    "key",
+    "key_reference",
+    "load_case",
+    "parse_case",
+    "toml_value",
+]

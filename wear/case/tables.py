@@ -1,0 +1,298 @@
+"""The case: every table and key, defined once (type, units, default, valid range, one-line doc).
+
+A :class:`Case` holds the tables ``[ball]``, ``[plate]``, ``[impact]``, ``[wear]``, ``[fem]``, ``[output]``,
+``[erosion]`` and ``[repeat]``; each job reads the tables it needs (:mod:`wear.case.jobs`). The defaults below are
+those of the main job, ``impactwear run``: a hard alumina ball (R 2.5 mm) hitting a Ti-6Al-4V plate at 3 m/s, 30°
+from the normal, μ 0.3 — about 12 times Thornton's yield speed in the normal direction, so first yield is far
+exceeded and the plastic zone reaches the surface — on the FE plate's own force law (two-way coupling), with the
+paper's wear law (Eq. 15, α = 1, β = 0.3, K = 1e-11 m^0.7 s^-0.7 Pa^-1). SI units; angles in degrees from the plate
+normal.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field, fields, replace
+from typing import Any, ClassVar
+
+from contact import Material
+from wear.case.schema import Table, key
+from wear.law import WearLaw
+from wear.pressure import PRESSURE_SOURCES, SPEED_MODELS
+
+__all__ = ["BallSpec", "PlateSpec", "ImpactSpec", "WearSpec", "FemSpec", "OutputSpec", "ErosionSpec", "RepeatSpec",
+           "Case", "COUPLINGS", "NORMAL_MODELS", "TANGENTIAL_MODELS", "SCHEMES"]  # fmt: skip
+
+COUPLINGS = ("two-way", "one-way", "none")
+NORMAL_MODELS = ("hertz", "thornton")
+TANGENTIAL_MODELS = ("hdd", "mindlin")
+SCHEMES = ("verlet", "paper")
+
+_E = dict(low=1e5, high=1e13, allow_inf=True)
+_NU = dict(low=0.0, high=0.5, high_open=True)
+_DENSITY = dict(low=0.0, low_open=True, high=1e5)
+_YIELD = dict(low=1e3, high=1e11, optional=True, inf_is_absent=True, absent="never yields")
+
+
+class _MaterialTable(Table):
+    """A table that describes a material (E, nu, density, yield_strength, name)."""
+
+    def check(self) -> None:
+        self.material()
+
+    def material(self) -> Material:
+        """The table's :class:`contact.Material` (errors name ``table.key``)."""
+        try:
+            return Material(self.E, self.nu, self.density, self.yield_strength, self.name)  # type: ignore[attr-defined]
+        except ValueError as exc:
+            raise ValueError(f"{self.table}.{exc}") from None
+
+
+@dataclass(frozen=True)
+class BallSpec(_MaterialTable):
+    """The ball (or particle): ``radius`` (m), ``E`` (Pa; inf = rigid), ``nu``, ``density`` (kg/m³),
+    ``yield_strength`` (Pa; None = never yields), ``name`` (a label)."""
+
+    table: ClassVar[str] = "ball"
+    radius: float = key(float, 2.5e-3, "ball radius", "m", low=0.0, low_open=True, high=10.0)
+    E: float = key(float, 3.8e11, "Young's modulus (inf: rigid)", "Pa", **_E)
+    nu: float = key(float, 0.23, "Poisson's ratio", **_NU)
+    density: float = key(float, 3950.0, "density", "kg/m^3", **_DENSITY)
+    yield_strength: float | None = key(float, None, "yield strength", "Pa", **_YIELD)
+    name: str = key(str, "alumina", "label of the ball material")
+
+
+@dataclass(frozen=True)
+class PlateSpec(_MaterialTable):
+    """The plate: ``rigid`` (E, nu, density ignored), ``E`` (Pa), ``nu``, ``density`` (kg/m³), ``yield_strength``
+    (Pa; None = never yields), ``name`` (a label)."""
+
+    table: ClassVar[str] = "plate"
+    rigid: bool = key(bool, False, "rigid plate (E, nu, density ignored)")
+    E: float = key(float, 1.14e11, "Young's modulus", "Pa", **_E)
+    nu: float = key(float, 0.34, "Poisson's ratio", **_NU)
+    density: float = key(float, 4430.0, "density", "kg/m^3", **_DENSITY)
+    yield_strength: float | None = key(float, 8.8e8, "yield strength", "Pa", **_YIELD)
+    name: str = key(str, "Ti-6Al-4V", "label of the plate material")
+
+    def material(self) -> Material:
+        """The plate's :class:`contact.Material` (``Material.rigid`` if ``rigid``)."""
+        return Material.rigid(name=self.name) if self.rigid else super().material()
+
+
+@dataclass(frozen=True)
+class ImpactSpec(Table):
+    """The impact (or the stream's particles): ``speed`` (m/s), ``angle`` (deg from the normal), ``friction`` μ,
+    ``restitution`` (Hertz dashpot), ``normal_model`` (the impact model without FE coupling, and the first estimate
+    of a coupled run), ``tangential_model``, ``limiting_pressure`` (Pa), ``scheme``, ``time_step`` (s)."""
+
+    table: ClassVar[str] = "impact"
+    speed: float = key(float, 3.0, "impact speed", "m/s", low=0.0, low_open=True, high=1000.0)
+    angle: float = key(float, 30.0, "impact angle from the plate normal", "deg", low=0.0, high=90.0, high_open=True)
+    friction: float = key(float, 0.3, "Coulomb friction coefficient", low=0.0, high=10.0)
+    restitution: float = key(float, 1.0, "normal restitution setting the Hertz dashpot", low=0.0, low_open=True,
+                             high=1.0)  # fmt: skip
+    normal_model: str = key(str, "thornton", "normal force law (without FE coupling; else the first estimate)",
+                            choices=NORMAL_MODELS)  # fmt: skip
+    tangential_model: str = key(str, "hdd", "tangential force law", choices=TANGENTIAL_MODELS)
+    limiting_pressure: float | None = key(float, None, "Thornton limiting pressure", "Pa", low=1e3, high=1e12,
+                                          optional=True, absent="C(nu)*Y of the body that yields first")  # fmt: skip
+    scheme: str = key(str, "verlet", "time integration scheme", choices=SCHEMES)
+    time_step: float | None = key(float, None, "time step", "s", low=0.0, low_open=True, optional=True,
+                                  absent="Hertz contact time / 2000")  # fmt: skip
+
+
+@dataclass(frozen=True)
+class WearSpec(Table):
+    """The wear law (errata Eq. 15, dw/dt = K p^α v^β): ``K`` (m^(1−β) s^(β−1) Pa^(−α)), ``alpha``, ``beta``;
+    ``pressure`` source along the impact; sliding ``speed`` model; ``points_across`` grid points across the largest
+    contact diameter."""
+
+    table: ClassVar[str] = "wear"
+    K: float = key(float, 1e-11, "wear coefficient of Eq. 15", "m^(1-beta) s^(beta-1) Pa^(-alpha)", low=0.0,
+                   high=1e-3)  # fmt: skip
+    alpha: float = key(float, 1.0, "pressure exponent of Eq. 15", low=0.0, high=4.0)
+    beta: float = key(float, 0.3, "sliding-speed exponent of Eq. 15", low=0.0, high=4.0)
+    pressure: str = key(str, "fe", "contact pressure source", choices=PRESSURE_SOURCES)
+    speed: str = key(str, "sliding", "sliding speed of the contact points", choices=SPEED_MODELS)
+    points_across: int = key(int, 64, "wear grid points across the largest contact diameter", low=40, high=2000)
+
+    def check(self) -> None:
+        self.law()
+
+    def law(self) -> WearLaw:
+        """The :class:`wear.WearLaw` of this table."""
+        try:
+            return WearLaw(K=self.K, alpha=self.alpha, beta=self.beta)
+        except ValueError as exc:
+            raise ValueError(f"wear.{exc}") from None
+
+
+@dataclass(frozen=True)
+class FemSpec(Table):
+    """The FE plate: ``coupling`` ("two-way": the impact runs on the FE plate's own force law; "one-way": the FE
+    plate follows the impact's overlap; "none"), its ``tolerance`` and ``max_iterations``, the FE increments
+    ``load_steps`` and ``unload_steps``, the ``overshoot`` of the single FE loading past the estimated maximum
+    overlap, and ``mesh_scale`` (multiplies the FE element sizes; > 1 coarser)."""
+
+    table: ClassVar[str] = "fem"
+    coupling: str = key(str, "two-way", "impact-FE coupling (two-way = the FE normal law)", choices=COUPLINGS)
+    tolerance: float = key(float, 0.005, "coupling tolerance on the max overlap change (relative)", low=1e-6,
+                           high=0.2)  # fmt: skip
+    max_iterations: int = key(int, 8, "most impact runs of the coupling", low=2, high=50)
+    load_steps: int = key(int, 16, "FE increments of the loading", low=2, high=2000)
+    unload_steps: int = key(int, 8, "FE increments of the unloading", low=1, high=2000)
+    overshoot: float = key(float, 0.1, "FE loading past the estimated max overlap (relative)", low=0.02, high=2.0)
+    mesh_scale: float = key(float, 2.0, "FE element size factor (> 1 coarser)", low=0.25, high=8.0)
+
+
+@dataclass(frozen=True)
+class OutputSpec(Table):
+    """Outputs: ``figures`` (PNG), ``render`` (3-D view), ``plate_mesh`` (a user's meshio plate block to deform
+    instead of the generated one; "" = generate), ``block_thickness`` (m) of the generated block."""
+
+    table: ClassVar[str] = "output"
+    figures: bool = key(bool, True, "write the PNG figures")
+    render: bool = key(bool, True, "write the rendered 3-D view (needs EGL or OSMesa)")
+    plate_mesh: str = key(str, "", 'meshio plate block to deform instead of the generated one ("": generate)')
+    block_thickness: float = key(float, 2e-3, "thickness of the generated plate block", "m", low=0.0,
+                                 low_open=True, high=1.0)  # fmt: skip
+
+    def check(self) -> None:
+        if self.plate_mesh and not os.path.isfile(self.plate_mesh):
+            raise ValueError(f"output.plate_mesh={self.plate_mesh!r} is not a file: give a meshio-readable plate mesh")
+
+
+@dataclass(frozen=True)
+class ErosionSpec(Table):
+    """A particle stream eroding a periodic plate patch (the particle is ``[ball]``, its speed, angle and contact
+    models ``[impact]``, the wear law ``[wear]``): concentration or mass flux, exposure, azimuth, Bitter's deformation
+    wear, the patch, the response table's resolution, the seed and the outputs' sampling."""
+
+    table: ClassVar[str] = "erosion"
+    concentration: float = key(float, 0.464, "particle mass concentration of the stream", "kg/m^3", low=0.0,
+                               low_open=True)  # fmt: skip
+    mass_flux: float | None = key(float, None, "mass flux through a plane normal to the stream", "kg/(m^2 s)",
+                                  low=0.0, low_open=True, optional=True, absent="from concentration")  # fmt: skip
+    exposure_time: float = key(float, 3120.0, "exposure time", "s", low=0.0, low_open=True, high=1e10)
+    azimuth: float = key(float, 0.0, "stream direction in the patch, from the grid x axis", "deg", low=-360.0,
+                         high=360.0)  # fmt: skip
+    deformation_wear: bool = key(bool, False, "add Bitter's (1963) deformation wear")
+    deformation_wear_factor: float | None = key(float, None, "Bitter's deformation wear factor epsilon", "J/m^3",
+                                                low=1e3, high=1e15, optional=True, absent="none")  # fmt: skip
+    deformation_threshold: float | None = key(float, None, "elastic-limit normal speed", "m/s", low=0.0, high=1000.0,
+                                              optional=True, absent="Bitter's formula")  # fmt: skip
+    grid: int = key(int, 512, "grid nodes per side of the patch", low=16, high=8192)
+    patch_size: float | None = key(float, None, "side of the periodic patch", "m", low=0.0, low_open=True, high=10.0,
+                                   optional=True, absent="grid x contact radius / 4")  # fmt: skip
+    seed: int = key(int, 0, "random seed of the impact points", low=0, high=2**63 - 1)
+    frames: int = key(int, 10, "surfaces saved in the .pvd series", low=1, high=1000)
+    samples: int = key(int, 100, "rows of the mass-loss time series", low=1, high=100000)
+    angle_margin: float = key(float, 20.0, "response table: local angles covered around the stream angle", "deg",
+                              low=0.0, high=45.0)  # fmt: skip
+    angle_step: float = key(float, 2.5, "response table: local angle step", "deg", low=0.1, high=15.0)
+    table_speeds: int = key(int, 5, "response table: number of normal speeds", low=2, high=50)
+    points_per_length: int = key(int, 12, "response table: footprint points per contact radius", low=4, high=64)
+
+
+@dataclass(frozen=True)
+class RepeatSpec(Table):
+    """Repeated impacts at one site (:mod:`wear.chain.repeat`): ``impacts``; ``geometry_update`` (the wear moves the
+    FE surface nodes); ``shakedown_tolerance`` (an impact whose largest plastic strain increment is below this × Y/E
+    is shaken down); ``surface_fraction`` (a cycle-jump block moves the surface by at most this × the last computed
+    impact's approach, its max overlap from first contact); ``max_plastic_impacts`` (computed one by one before
+    blocks go on without shakedown); ``save_every`` (FE mesh of every k-th computed impact; 0 = none);
+    ``wear_smoothing`` (width of the Gaussian filter of the wear profile the FE surface takes, × the contact radius;
+    0 = off, which lets a node-scale ripple grow); ``elastic_after_shakedown`` (after a shaken-down impact the next
+    one is solved on the plate's elastic response, :func:`fem.elastic_reload`, unless its elastic field yields)."""
+
+    table: ClassVar[str] = "repeat"
+    impacts: int = key(int, 100, "number of impacts at the site", low=1, high=1e9)
+    geometry_update: bool = key(bool, True, "the wear of each impact moves the FE surface nodes")
+    shakedown_tolerance: float = key(float, 1e-3, "largest plastic strain increment of a shaken-down impact, over "
+                                     "Y/E", low=0.0, low_open=True, high=1.0)  # fmt: skip
+    surface_fraction: float = key(float, 0.1, "surface change per cycle-jump block, fraction of the impact's approach"
+                                  " (max overlap from first contact)", low=0.0, low_open=True, high=1.0)  # fmt: skip
+    max_plastic_impacts: int = key(int, 20, "impacts computed one by one before blocks go on without shakedown",
+                                   low=1, high=100000)  # fmt: skip
+    save_every: int = key(int, 1, "save the FE mesh of every k-th computed impact (0 = none)", low=0, high=1e9)
+    wear_smoothing: float = key(float, 0.1, "width of the filter of the wear profile on the FE surface, fraction of "
+                                "the contact radius (0 = off)", low=0.0, high=1.0)  # fmt: skip
+    elastic_after_shakedown: bool = key(bool, True, "after a shaken-down impact, solve the next on the plate's "
+                                        "elastic response unless its elastic field yields")  # fmt: skip
+
+
+#: The case tables, in order: TOML name → table class.
+TABLES: dict[str, type[Table]] = {
+    t.table: t for t in (BallSpec, PlateSpec, ImpactSpec, WearSpec, FemSpec, OutputSpec, ErosionSpec, RepeatSpec)
+}
+
+
+@dataclass(frozen=True)
+class Case:
+    """A whole case: one frozen table per TOML table (see each class for its keys, units and defaults).
+
+    ``Case()`` is the default case of ``impactwear run`` (:mod:`wear.case.jobs` gives every job's default);
+    :meth:`from_dict` lays tables of values over a base case (keys left out keep the base's values), checking every
+    key; :meth:`with_` replaces some keys.
+    """
+
+    ball: BallSpec = field(default_factory=BallSpec)
+    plate: PlateSpec = field(default_factory=PlateSpec)
+    impact: ImpactSpec = field(default_factory=ImpactSpec)
+    wear: WearSpec = field(default_factory=WearSpec)
+    fem: FemSpec = field(default_factory=FemSpec)
+    output: OutputSpec = field(default_factory=OutputSpec)
+    erosion: ErosionSpec = field(default_factory=ErosionSpec)
+    repeat: RepeatSpec = field(default_factory=RepeatSpec)
+
+    def __post_init__(self) -> None:
+        for f in fields(self):
+            if not isinstance(getattr(self, f.name), TABLES[f.name]):
+                raise ValueError(f"[{f.name}]={getattr(self, f.name)!r} is not a {TABLES[f.name].__name__}")
+
+    @classmethod
+    def default(cls) -> Case:
+        """The default case of ``impactwear run`` (the same as ``Case()``)."""
+        return cls()
+
+    @classmethod
+    def from_dict(cls, tables: dict[str, Any], base: Case | None = None) -> Case:
+        """A case from a dict of tables (e.g. a TOML document) laid over ``base`` (default ``Case()``); unknown
+        tables and keys and bad values are one-line ``ValueError`` naming ``table.key``."""
+        base = cls() if base is None else base
+        if not isinstance(tables, dict):
+            raise ValueError(f"case={tables!r} is not a table of tables")
+        parts = {}
+        for name, values in tables.items():
+            if name not in TABLES:
+                raise ValueError(f"[{name}] is not a known case table: known tables are {', '.join(TABLES)}")
+            if not isinstance(values, dict):
+                raise ValueError(f"{name}={values!r} is not a table: write it as [{name}]")
+            known = TABLES[name].keys()
+            for k in values:
+                if k not in known:
+                    raise ValueError(f"{name}.{k} is not a known key: keys of [{name}] are {', '.join(known)}")
+            parts[name] = replace(getattr(base, name), **values)
+        return replace(base, **parts)
+
+    def to_dict(self, tables: tuple[str, ...] | None = None) -> dict[str, dict[str, Any]]:
+        """Tables of values (None for absent optional keys), all tables or only ``tables``."""
+        names = [f.name for f in fields(self)] if tables is None else tables
+        return {name: getattr(self, name).values() for name in names}
+
+    def with_(self, **tables: dict[str, Any]) -> Case:
+        """A copy with some keys replaced, e.g. ``case.with_(impact={"speed": 2.0})`` (checked as in
+        :meth:`from_dict`)."""
+        return Case.from_dict(tables, base=self)
+
+    def impact_arguments(self, **overrides: Any) -> dict[str, Any]:
+        """Keyword arguments of :func:`contact.simulate_impact` for this case's ``[ball]``, ``[plate]`` and
+        ``[impact]`` (``overrides`` replace some)."""
+        imp = self.impact
+        args = dict(radius=self.ball.radius, ball=self.ball.material(), plate=self.plate.material(), speed=imp.speed,
+                    angle=imp.angle, friction=imp.friction, restitution=imp.restitution,
+                    normal_model=imp.normal_model, tangential_model=imp.tangential_model,
+                    limiting_pressure=imp.limiting_pressure, scheme=imp.scheme, time_step=imp.time_step)  # fmt: skip
+        args.update(overrides)
+        return args

@@ -1,0 +1,133 @@
+"""Case files: TOML ⇄ :class:`~wear.case.Case`, command-line overrides, and the key reference of the docs.
+
+A case file holds any of the case tables (``[ball]``, ``[plate]``, ``[impact]``, ``[wear]``, ``[fem]``,
+``[output]``, ``[erosion]``, ``[repeat]``); keys left out take the job's default (:mod:`wear.case.jobs`), so a
+file written for one command can be given to another. Unknown tables and keys and bad values are one-line
+``ValueError`` naming the key, e.g. ``impact.angle=120 is out of range: impact angle from the plate normal must be
+in [0, 90) deg``. SI units throughout.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import sys
+from pathlib import Path
+from typing import Any
+
+from wear.case.jobs import JOBS, default_case
+from wear.case.schema import Key
+from wear.case.tables import TABLES, Case
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # Python 3.10
+    import tomli as tomllib
+
+__all__ = ["parse_case", "load_case", "dump_case", "apply_override", "key_reference", "toml_value"]
+
+
+def parse_case(text: str, job: str = "run", source: str = "case") -> Case:
+    """The case in the TOML ``text`` laid over ``job``'s default case (``source`` names the text in errors)."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ValueError(f"case={source!r} is not valid TOML: {exc}") from None
+    for table in JOBS[job].required:
+        if table not in data:
+            need = ", ".join(f"[{t}]" for t in JOBS[job].required)
+            raise ValueError(f"[{table}] is missing from case={source!r}: a {job} case needs {need}")
+    return Case.from_dict(data, base=default_case(job))
+
+
+def load_case(path: str | os.PathLike | None, job: str = "run", name: str = "case") -> Case:
+    """The case in the TOML file ``path`` (None: ``job``'s default case); ``name`` names the file in errors."""
+    if path is None:
+        return default_case(job)
+    p = Path(path)
+    if not p.is_file():
+        raise ValueError(f"{name}={str(p)!r} is not a file")
+    try:
+        text = p.read_text(encoding="utf-8")
+    except UnicodeDecodeError:
+        raise ValueError(f"{name}={str(p)!r} is not a UTF-8 text (TOML) file") from None
+    return parse_case(text, job, str(p))
+
+
+def toml_value(value: Any) -> str:
+    """A value as TOML text (floats in a short exponent form: ``3.8e11``, not ``380000000000.0``)."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str):
+        return '"' + value.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    if isinstance(value, float):
+        if math.isinf(value):
+            return "inf" if value > 0 else "-inf"
+        text = repr(value)
+        if value != 0.0 and not 1e-3 <= abs(value) < 1e6 and "e" not in text:
+            mantissa, exponent = f"{value:.15e}".split("e")
+            text = f"{mantissa.rstrip('0').rstrip('.')}e{int(exponent)}"
+        return text
+    return str(value)
+
+
+def _comment(spec: Key) -> str:
+    return f"{spec.doc}; {spec.valid_range()}"
+
+
+def dump_case(case: Case, tables: tuple[str, ...] | None = None, comments: bool = True) -> str:
+    """TOML text of ``case`` (all tables, or ``tables``). Every key is written; an absent optional key is written
+    as a comment saying what absent means, except where ``inf`` states it (a yield strength: never yields). With
+    ``comments`` each key carries its doc, valid range and units."""
+    lines: list[str] = []
+    for name, values in case.to_dict(tables).items():
+        lines.append(f"[{name}]")
+        for k, spec in TABLES[name].keys().items():
+            value = values[k]
+            note = f"  # {_comment(spec)}" if comments else ""
+            if value is None and spec.inf_is_absent:
+                value = math.inf
+            if value is None:
+                lines.append(f"# {k} =  # absent: {spec.absent}; {_comment(spec)}" if comments else f"# {k} =")
+            else:
+                lines.append(f"{k} = {toml_value(value)}{note}")
+        lines.append("")
+    return "\n".join(lines)
+
+
+def apply_override(case: Case, item: str) -> Case:
+    """``case`` with one command-line ``--set TABLE.KEY=VALUE`` applied. VALUE is read as TOML (``3.9``, ``true``,
+    ``"x"``); a bare word that is not TOML is taken as a string (``--set impact.normal_model=thornton``)."""
+    dotted, sep, text = item.partition("=")
+    if not sep:
+        raise ValueError(f"--set {item!r} is not TABLE.KEY=VALUE")
+    try:
+        value = tomllib.loads(f"v = {text}")["v"]
+    except tomllib.TOMLDecodeError:
+        value = text
+    table, dot, name = dotted.strip().partition(".")
+    if not dot:
+        raise ValueError(f"--set {item!r} is not TABLE.KEY=VALUE")
+    return Case.from_dict({table: {name: value}}, base=case)
+
+
+def key_reference() -> str:
+    """Markdown reference of every case key: table, key, valid values, units, meaning, and the default of each job
+    where it differs from ``impactwear run``'s."""
+    defaults = {job: default_case(job).to_dict() for job in JOBS}
+    rows = ["| key | run default | valid | meaning | other jobs' defaults |", "|---|---|---|---|---|"]
+    for name, table in TABLES.items():
+        for k, spec in table.keys().items():
+            run = defaults["run"][name][k]
+            other = [f"{job}: {_shown(v[name][k], spec)}" for job, v in defaults.items()
+                     if name in JOBS[job].tables and v[name][k] != run]  # fmt: skip
+            doc = spec.doc + (f" (absent: {spec.absent})" if spec.optional else "")
+            rows.append(f"| `{name}.{k}` | {_shown(run, spec)} | {spec.valid_range().replace('|', '/')} | {doc} | "
+                        f"{'; '.join(other)} |")  # fmt: skip
+    return "\n".join(rows)
+
+
+def _shown(value: Any, spec: Key) -> str:
+    if value is None:
+        return "inf" if spec.inf_is_absent else "(absent)"
+    return f"`{toml_value(value)}`"

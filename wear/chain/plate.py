@@ -1,0 +1,66 @@
+"""The FE plate of a case: its mesh, the :class:`fem.Plate`, the coupling's settings and the impact run on a force
+law (SI units). Every chain that couples an impact to the plate builds them here."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from skfem import MeshTri
+
+import fem
+from contact import ImpactResult, TabulatedLaw, simulate_impact
+from fem.mesh import DEFAULT_PARAMETERS
+from wear.case import Case
+
+__all__ = ["case_mesh", "case_plate", "coupling_settings", "impact_on_law"]
+
+
+def case_mesh(case: Case, max_overlap: float, growth: float = 1.0) -> MeshTri:
+    """The FE mesh for a path reaching ``max_overlap`` (m): fem's default mesh scaled to it, or with
+    ``fem.mesh_scale`` ≠ 1 a generated mesh with fem's default element counts across the contact and first-yield
+    radii divided by ``mesh_scale``; ``growth``: the contact will widen to that × its first radius
+    (:func:`fem.mesh.generate_mesh`)."""
+    ball, plate = case.ball.material(), case.plate.material()
+    ball_arg = None if ball.is_rigid else ball
+    scale = case.fem.mesh_scale
+    if scale == 1.0:
+        return fem.plate_mesh(case.ball.radius, plate, max_overlap, ball_arg, growth=growth)
+    return fem.plate_mesh(
+        case.ball.radius,
+        plate,
+        max_overlap,
+        ball_arg,
+        contact_elements=max(6, round(DEFAULT_PARAMETERS["contact_elements"] / scale)),
+        yield_elements=max(4, round(DEFAULT_PARAMETERS["yield_elements"] / scale)),
+        growth=growth,
+    )
+
+
+def case_plate(case: Case, max_overlap: float, growth: float = 1.0, taper_depth: float | None = None) -> fem.Plate:
+    """A virgin :class:`fem.Plate` of the case's plate (an elastic ball enters through E*) on :func:`case_mesh`,
+    sized for ``max_overlap`` (m)."""
+    ball, plate = case.ball.material(), case.plate.material()
+    if plate.is_rigid:
+        raise ValueError("plate.rigid=true: the FE plate needs a deformable plate (set plate.rigid = false)")
+    mesh = case_mesh(case, max_overlap, growth)
+    return fem.Plate(case.ball.radius, plate, max_overlap, ball=None if ball.is_rigid else ball, mesh=mesh,
+                     taper_depth=taper_depth)  # fmt: skip
+
+
+def coupling_settings(case: Case) -> fem.CouplingSettings:
+    """The coupling's numbers from the case's ``[fem]`` table."""
+    f = case.fem
+    return fem.CouplingSettings(tolerance=f.tolerance, max_iterations=f.max_iterations, load_steps=f.load_steps,
+                                unload_steps=f.unload_steps, overshoot=f.overshoot)  # fmt: skip
+
+
+def impact_on_law(case: Case) -> Callable[[TabulatedLaw], ImpactResult]:
+    """The case's impact (with histories) run on a tabulated force law (overlaps from first contact)."""
+    args = case.impact_arguments(normal_model="tabulated", history=True)
+    for unused in ("restitution", "limiting_pressure"):  # the tabulated law carries its own unloading
+        del args[unused]
+
+    def run(law: TabulatedLaw) -> ImpactResult:
+        return simulate_impact(**args, force_law=law)
+
+    return run

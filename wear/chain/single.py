@@ -1,0 +1,220 @@
+r"""The whole chain for one impact case: impact → FE plate → coupling → wear → deformed surface.
+
+``run(case) -> RunResult`` for a :class:`wear.Case` (its ``[ball]``, ``[plate]``, ``[impact]``, ``[wear]``,
+``[fem]`` tables; SI units, angles in degrees from the plate normal)::
+
+    from wear import Case, run
+    result = run(Case())
+    result.summary()["wear"]["volume_m3"]
+
+Stages (their wall times are in ``RunResult.stage_times``):
+
+1. ``impact``: the H-DD impact (:func:`contact.simulate_impact`) with ``case.impact``'s normal model.
+2. ``fem`` + ``coupling``: with ``fem.coupling = "two-way"``
+   the impact is re-run on the FE plate's own force–overlap law and contact radius until the maximum
+   overlap changes by < ``fem.tolerance`` (:func:`fem.couple`); ``"one-way"`` drives the FE plate with
+   the impact's overlap history (``fem.indent_impact``); ``"none"`` skips the FE (no dent; the pressure
+   source must then not be ``"fe"``).
+3. ``wear``: Eq. 15 integrated over the moving contact patch (:func:`wear.integrate_wear`).
+4. ``surface``: the residual FE dent placed at the contact centre of maximum overlap plus the wear map
+   (:class:`wear.surface.DeformedSurface`).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+import fem
+from contact import ImpactResult, Material, effective_modulus, simulate_impact
+from contact.theory import PAPER_YIELD_COEFFICIENT, first_yield, yield_velocity
+from fem import CoupledImpact, IndentationResult, PlateCycle, worst_regime
+from wear.case import JOBS, Case
+from wear.chain.plate import case_mesh, case_plate, coupling_settings, impact_on_law
+from wear.integrate import WearMap, integrate_wear
+from wear.pressure import PressureHistory, pressure_history, sliding_speed
+from wear.surface import DeformedSurface
+
+__all__ = ["RunResult", "run", "estimate_impact", "impact_wear", "speed_ratio", "STAGES"]
+
+#: Stages of :func:`run`, in order (the output writer adds "meshes" and "figures").
+STAGES = ("impact", "fem", "coupling", "wear", "surface")
+
+
+@dataclass(frozen=True, eq=False)
+class RunResult:
+    """Everything one :func:`run` produced (SI units).
+
+    ``estimate`` (the impact on the case's own normal model), ``impact`` (:class:`contact.ImpactResult`, the final
+    impact: coupled if two-way), ``fe`` (the plate's :class:`fem.PlateCycle` (two-way), its
+    :class:`fem.IndentationResult` (one-way) or None), ``coupling`` (:class:`fem.CoupledImpact` or None),
+    ``pressure`` (:class:`wear.PressureHistory`), ``wear`` (:class:`wear.WearMap`), ``surface``
+    (:class:`wear.surface.DeformedSurface`), ``yield_info`` (dict: ``F_y_paper`` Eq. 18 with C = 1.6, ``F_c_exact``
+    with C(ν), ``fe_first_yield_force``, ``V_y`` Thornton's yield speed, N and m/s), ``regime`` (str),
+    ``stage_times`` (dict stage → s).
+    """
+
+    case: Case
+    estimate: ImpactResult
+    impact: ImpactResult
+    fe: PlateCycle | IndentationResult | None
+    coupling: CoupledImpact | None
+    pressure: PressureHistory
+    wear: WearMap
+    surface: DeformedSurface
+    yield_info: dict[str, float | None]
+    regime: str
+    stage_times: dict[str, float]
+
+    def summary(self) -> dict:
+        """The numbers of summary.json (without versions; the writer adds them)."""
+        imp = self.impact
+        names = ("normal_restitution", "tangential_restitution", "rebound_angle", "contact_point_rebound_angle",
+                 "spin", "rebound_normal_velocity", "rebound_tangential_velocity", "contact_time", "sliding_time",
+                 "max_force", "max_tangential_force", "max_overlap", "max_contact_radius", "max_peak_pressure",
+                 "normal_model")  # fmt: skip
+        impact = {k: getattr(imp, k) for k in names}
+        impact["units"] = "s, N, m, Pa, m/s, rad/s, deg"
+        w, c = self.wear, self.coupling
+        coupling = None
+        if c is not None:
+            coupling = {"iterations": c.iterations, "final_change": c.change, "converged": c.converged,
+                        "max_overlaps_m": list(c.max_overlaps), "estimate_model": self.estimate.normal_model,
+                        "estimate_max_overlap_m": self.estimate.max_overlap}  # fmt: skip
+        return {
+            "case": self.case.to_dict(JOBS["run"].tables),
+            "impact": impact,
+            "yield": dict(self.yield_info),
+            "regime": self.regime,
+            "wear": {
+                "volume_m3": w.volume_m3,
+                "mass_kg": w.mass_kg,
+                "max_depth_m": w.max_depth_m,
+                "scar_length_m": w.scar_length_m,
+                "scar_width_m": w.scar_width_m,
+                "law": str(self.case.wear.law()),
+                "pressure_source": self.pressure.source,
+            },
+            "dent": {
+                "max_depth_m": self.surface.max_dent_depth,
+                "centre_x_m": self.surface.dent_centre[0],
+            },
+            "coupling": coupling,
+            "stage_times_s": dict(self.stage_times),
+        }
+
+
+def _yield_info(case: Case, ball: Material, plate: Material, fe: PlateCycle | IndentationResult | None) -> dict:
+    info: dict[str, float | None] = {"F_y_paper": None, "F_c_exact": None, "fe_first_yield_force": None, "V_y": None}
+    if plate.yield_strength and not plate.is_rigid:
+        e_star = effective_modulus(ball, plate)
+        R, Y = case.ball.radius, plate.yield_strength
+        info["F_y_paper"] = first_yield(R, e_star, Y, plate.nu, coefficient=PAPER_YIELD_COEFFICIENT).force
+        info["F_c_exact"] = first_yield(R, e_star, Y, plate.nu).force
+        info["V_y"] = yield_velocity(R, ball, plate)
+    if fe is not None and fe.first_yield is not None:
+        info["fe_first_yield_force"] = float(fe.first_yield.force)
+    return info
+
+
+def _regime(impact: ImpactResult, info: dict, fe: PlateCycle | IndentationResult | None) -> str:
+    if fe is not None and len(fe.regime):
+        return worst_regime(fe.regime)
+    if info["F_c_exact"] is None:
+        return "elastic"
+    return "elastic" if impact.max_force < info["F_c_exact"] else "plastic (no FE: regime not resolved)"
+
+
+def estimate_impact(case: Case, **overrides) -> ImpactResult:
+    """The impact of ``case`` on its own normal model (``impact.normal_model``; Thornton's law is Hertz's when
+    nothing yields), with its histories: the impact of an uncoupled run and the first estimate of a coupled one."""
+    args = case.impact_arguments(history=True)
+    if args["normal_model"] == "thornton" and not args["plate"].yield_strength and not args["ball"].yield_strength:
+        args["normal_model"] = "hertz"  # nothing yields: Thornton's law is Hertz
+    args.update(overrides)
+    return simulate_impact(**args)
+
+
+def impact_wear(case: Case, impact: ImpactResult, fe_table=None) -> tuple[PressureHistory, WearMap]:
+    """Stage ``wear``: the pressure history p(r, t) of ``impact`` (``case.wear.pressure``; ``fe_table`` the FE
+    (time s, r m, pressure Pa) table where it is "fe") and the wear map of Eq. 15 integrated over the moving
+    patch (m)."""
+    ph = pressure_history(impact, case.wear.pressure, fe=fe_table, limiting_pressure=case.impact.limiting_pressure)
+    wm = integrate_wear(ph, sliding_speed(impact, case.wear.speed), case.wear.law(),
+                        density=case.plate.material().density, points_across=case.wear.points_across)  # fmt: skip
+    return ph, wm
+
+
+def one_way(case: Case, impact: ImpactResult) -> IndentationResult:
+    """The FE plate along the impact's overlap history (``fem.indent_impact``, ``fem.load_steps + unload_steps``
+    increments, the mesh of ``fem.mesh_scale``): the FE stage of a one-way run."""
+    mesh = case_mesh(case, impact.max_overlap)
+    steps = case.fem.load_steps + case.fem.unload_steps
+    return fem.indent_impact(impact, case.plate.material(), steps=steps, mesh=mesh)
+
+
+def run(case: Case, progress: Callable[[str], None] | None = None) -> RunResult:
+    """Run the whole chain for ``case`` (see the module docstring). ``progress(stage)`` is called as each stage
+    starts ("impact", "fem", "coupling", "wear", "surface")."""
+    if not isinstance(case, Case):
+        raise ValueError(f"case={type(case).__name__} is not a wear.Case")
+    notify = progress or (lambda stage: None)
+    ball, plate = case.ball.material(), case.plate.material()
+    coupling_mode = case.fem.coupling
+    if coupling_mode != "none" and plate.is_rigid:
+        raise ValueError(f"fem.coupling={coupling_mode!r} needs a deformable plate: set fem.coupling='none'")
+    if coupling_mode == "none" and case.wear.pressure == "fe":
+        raise ValueError("wear.pressure='fe' needs the FE plate: set fem.coupling to 'two-way' or 'one-way'")
+    times: dict[str, float] = {}
+
+    def timed(stage, fn, *args, **kwargs):
+        notify(stage)
+        t0 = time.perf_counter()
+        out = fn(*args, **kwargs)
+        times[stage] = time.perf_counter() - t0
+        return out
+
+    estimate = impact = timed("impact", estimate_impact, case)
+    fe: PlateCycle | IndentationResult | None = None
+    coupled = fe_table = None
+    if coupling_mode == "two-way":
+        plate_fe = timed("fem", case_plate, case, (1.0 + case.fem.overshoot) * estimate.max_overlap)
+        coupled = timed("coupling", fem.couple, plate_fe, impact_on_law(case), estimate.max_overlap,
+                        coupling_settings(case))  # fmt: skip
+        impact, fe, fe_table = coupled.impact, coupled.cycle, coupled.pressure_table
+    elif coupling_mode == "one-way":
+        fe = timed("fem", one_way, case, impact)
+        times["coupling"] = 0.0
+        rows = fem.contact_pressure(fe.pressure, fe.surface_r, fe.contact_radius)
+        fe_table = (np.asarray(fe.time, float), np.asarray(fe.surface_r, float), rows)
+
+    ph, wm = timed("wear", impact_wear, case, impact, fe_table)
+
+    def surface_stage() -> DeformedSurface:
+        h = impact.history
+        i_max = int(np.argmax(h.overlap))
+        centre = (float(h.contact_x[i_max]), 0.0)
+        if fe is None:
+            return DeformedSurface(wm.x, wm.y, wm.depth.T, np.array([0.0, 1.0]), np.zeros(2), centre)
+        r = np.asarray(fe.surface_r, dtype=float)
+        order = np.argsort(r)
+        return DeformedSurface(wm.x, wm.y, wm.depth.T, r[order], np.asarray(fe.residual_depth, float)[order], centre)
+
+    surface = timed("surface", surface_stage)
+    info = _yield_info(case, ball, plate, fe)
+    return RunResult(case=case, estimate=estimate, impact=impact, fe=fe, coupling=coupled, pressure=ph, wear=wm,
+                     surface=surface, yield_info=info, regime=_regime(impact, info, fe),
+                     stage_times=times)  # fmt: skip
+
+
+def speed_ratio(case: Case) -> float:
+    """Normal impact speed over Thornton's yield speed V_y (dimensionless; inf if the plate never yields)."""
+    ball, plate = case.ball.material(), case.plate.material()
+    if not plate.yield_strength:
+        return math.inf
+    v_n = case.impact.speed * math.cos(math.radians(case.impact.angle))
+    return v_n / yield_velocity(case.ball.radius, ball, plate)

@@ -1,0 +1,144 @@
+"""Erosion of a case: the stream, the response table and the eroded patch from a :class:`wear.Case` (SI units,
+angles in degrees from the plate normal).
+
+The case's ``[ball]`` is the particle, ``[plate]`` the plate, ``[impact]`` the stream's speed, angle, friction and
+contact models, ``[wear]`` the wear law and its pressure source, ``[erosion]`` the stream's concentration or mass
+flux, exposure, patch and table resolution. :func:`erode_case` runs one erosion, :func:`erode_angles` one per stream
+angle on a common patch; both return :class:`ErosionRun` (no files: the command line writes them).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass
+
+from contact import simulate_impact
+from wear.case import JOBS, Case
+from wear.erosion.response import ImpactResponse, build_response_table, table_axes
+from wear.erosion.stream import ErosionResult, Stream, erode
+
+__all__ = ["ErosionRun", "erode_case", "erode_angles", "nominal_contact_radius", "STREAM_PRESSURES",
+           "MAX_STREAM_ANGLE", "CELLS_PER_RADIUS"]  # fmt: skip
+
+#: Pressure sources a stream's response table can use (it is built from batched impacts, without the FE plate).
+STREAM_PRESSURES = ("hertz", "paper", "thornton")
+#: Largest stream angle from the normal (deg): beyond it the response table has no footprints.
+MAX_STREAM_ANGLE = 85.0
+#: Default grid spacing: the nominal contact radius / this (as :func:`wear.erosion.erode`).
+CELLS_PER_RADIUS = 4.0
+
+
+@dataclass(frozen=True, eq=False)
+class ErosionRun:
+    """One erosion of a case: ``case``, ``result`` (:class:`wear.erosion.ErosionResult`: the stream, the response
+    table, the surface and the time series) and ``seconds`` (wall times of the ``table`` and the ``erosion``, s, and
+    ``impacts_per_s``)."""
+
+    case: Case
+    result: ErosionResult
+    seconds: dict[str, float]
+
+    def summary(self) -> dict:
+        """The numbers of summary.json (SI units)."""
+        r = self.result
+        area = r.patch_size**2
+        return {
+            "case": self.case.to_dict(JOBS["erode"].tables),
+            "stream": {
+                "speed_m_s": r.stream.speed,
+                "angle_deg": r.stream.angle,
+                "flux_kg_m2_s": r.stream.flux,
+                "plate_flux_kg_m2_s": r.stream.plate_flux,
+                "exposure_time_s": r.stream.exposure_time,
+            },
+            "patch": {"size_m": r.patch_size, "grid": int(r.x.size), "spacing_m": r.spacing, "area_m2": area},
+            "table": {"resolution": r.table.resolution, "description": r.table.description},
+            "results": {
+                "impacts": r.n_impacts,
+                "shadowed": r.shadowed,
+                "clamped": r.clamped,
+                "particle_mass_kg": float(r.particle_mass_kg[-1]),
+                "mass_loss_kg": float(r.mass_loss_kg[-1]),
+                "mass_loss_per_area_kg_m2": float(r.mass_loss_kg[-1] / area),
+                "erosion_rate_kg_per_kg": r.final_erosion_rate,
+                "max_depth_m": float(r.max_depth_m[-1]),
+                "rms_slope": float(r.rms_slope[-1]),
+            },
+            "seconds": dict(self.seconds),
+        }
+
+
+def _stream_angle(case: Case, angle: float | None) -> float:
+    theta = case.impact.angle if angle is None else angle
+    if theta > MAX_STREAM_ANGLE:
+        raise ValueError(f"impact.angle={theta:g} is out of range: a stream angle must be in [0, "
+                         f"{MAX_STREAM_ANGLE:g}] deg")  # fmt: skip
+    return theta
+
+
+def _response(case: Case) -> ImpactResponse:
+    if case.wear.pressure not in STREAM_PRESSURES:
+        raise ValueError(f"wear.pressure={case.wear.pressure!r} is not a valid choice for erosion: must be one of "
+                         f"{', '.join(map(repr, STREAM_PRESSURES))} (the stream's response table is built from "
+                         "batched impacts, without the FE plate)")  # fmt: skip
+    ball = case.ball.material()
+    if math.isinf(ball.density):
+        raise ValueError("ball.density=inf: the particle needs a finite density (kg/m^3)")
+    imp, ero = case.impact, case.erosion
+    return ImpactResponse(radius=case.ball.radius, ball=ball, plate=case.plate.material(), friction=imp.friction,
+                          law=case.wear.law(), pressure=case.wear.pressure, speed_model=case.wear.speed,
+                          restitution=imp.restitution, normal_model=imp.normal_model,
+                          tangential_model=imp.tangential_model, points_across=case.wear.points_across,
+                          deformation_wear=ero.deformation_wear, deformation_wear_factor=ero.deformation_wear_factor,
+                          deformation_threshold=ero.deformation_threshold)  # fmt: skip
+
+
+def _stream(case: Case, theta: float) -> Stream:
+    ero = case.erosion
+    supply = {"mass_flux": ero.mass_flux} if ero.mass_flux is not None else {"concentration": ero.concentration}
+    return Stream(case.impact.speed, theta, ero.exposure_time, azimuth=ero.azimuth, **supply)
+
+
+def nominal_contact_radius(case: Case, angle: float | None = None) -> float:
+    """Largest contact radius (m) of one particle of the case's stream at ``angle`` (deg; default
+    ``impact.angle``) on the flat plate."""
+    theta = _stream_angle(case, angle)
+    return float(simulate_impact(**case.impact_arguments(angle=theta), history=False).max_contact_radius)
+
+
+def erode_case(case: Case, *, angle: float | None = None, patch_size: float | None = None,
+               progress: bool = False) -> ErosionRun:  # fmt: skip
+    """One erosion of ``case``: the response table over normal speed × local angle (batched impacts and the wear
+    law), then the patch eroded by the stream (:func:`wear.erosion.erode`). ``angle`` (deg) and ``patch_size`` (m)
+    override ``impact.angle`` and ``erosion.patch_size``; ``progress``: a progress bar on stderr."""
+    theta = _stream_angle(case, angle)
+    response, stream = _response(case), _stream(case, theta)
+    ero = case.erosion
+    speeds, angles = table_axes(case.impact.speed, theta, angle_margin=ero.angle_margin, angle_step=ero.angle_step,
+                                speeds=ero.table_speeds)  # fmt: skip
+    t0 = time.perf_counter()
+    table = build_response_table(
+        response,
+        speeds,
+        angles,
+        points_per_length=ero.points_per_length,
+        description=f"ImpactResponse(pressure={response.pressure!r}, law: {response.law})",
+    )
+    t1 = time.perf_counter()
+    result = erode(table, stream, grid=ero.grid, patch_size=ero.patch_size if patch_size is None else patch_size,
+                   seed=ero.seed, frames=ero.frames, samples=ero.samples, progress=progress)  # fmt: skip
+    t2 = time.perf_counter()
+    seconds = {"table": t1 - t0, "erosion": t2 - t1, "impacts_per_s": result.n_impacts / max(t2 - t1, 1e-9)}
+    return ErosionRun(case, result, seconds)
+
+
+def erode_angles(case: Case, angles: list[float], progress: bool = False) -> list[ErosionRun]:
+    """One erosion of ``case`` per stream angle (deg), on one patch for every angle: ``erosion.patch_size``, or the
+    grid resolving the smallest nominal contact (the most oblique stream)."""
+    for a in angles:
+        _stream_angle(case, a)
+    patch = case.erosion.patch_size
+    if patch is None:
+        patch = case.erosion.grid * min(nominal_contact_radius(case, a) for a in angles) / CELLS_PER_RADIUS
+    return [erode_case(case, angle=a, patch_size=patch, progress=progress) for a in angles]
