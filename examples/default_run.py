@@ -1,4 +1,7 @@
-"""The whole chain on the default case through the public API: impact → FE plate (two-way) → wear → meshes.
+"""The whole chain on the default case
+===================================
+
+The whole chain on the default case through the public API: impact → FE plate (two-way) → wear → meshes.
 
 Equivalent to ``impactwear run`` (an alumina ball, R 2.5 mm, on a Ti-6Al-4V plate at 3 m/s, 30° from the
 normal); prints the main results and writes the output folder (summary.json, history.csv, pressure.npz,

@@ -1,4 +1,7 @@
-"""Erosion of a steel plate by a stream of sand particles, with surface feedback (public API of wear.erosion.stream).
+"""Erosion of a steel plate by a stream of sand particles
+======================================================
+
+Erosion of a steel plate by a stream of sand particles, with surface feedback (public API of wear.erosion).
 
 Builds the response table of one particle impact over normal speed x local angle (H-DD impact + the wear law,
 errata Eq. 15), erodes a periodic patch for a few seconds of the paper's Fig. 10 stream (20 m/s, 464 g/m^3) at

@@ -1,4 +1,7 @@
-"""Press a rigid 10 mm ball into a steel plate past first yield and unload (fem.indent).
+"""Indentation of a steel plate past first yield
+=============================================
+
+Press a rigid 10 mm ball into a steel plate past first yield and unload (fem.indent).
 
 Prints the FE first yield against F_c (errata Eq. 18, exact C(ν) and the paper's C = 1.6), the force at the
 maximum, the residual dent, and writes the F–δ table, the figures and the deformed mesh into --out.

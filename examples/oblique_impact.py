@@ -1,4 +1,7 @@
-"""Oblique impacts of an alumina ball on soda-lime glass (Kharaz, Gorham & Salman 2001), H-DD model.
+"""Oblique impacts of an alumina ball on soda-lime glass
+=====================================================
+
+Oblique impacts of an alumina ball on soda-lime glass (Kharaz, Gorham & Salman 2001), H-DD model.
 
 Sweeps the impact angle at 3.9 m/s, prints the rebound against rigid-body theory (valid in gross sliding,
 large angles), and writes ``oblique_impact.csv`` (the sweep) and ``history_30deg.csv`` (one impact's time

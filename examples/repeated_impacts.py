@@ -1,4 +1,7 @@
-"""Repeated normal impacts of an alumina ball at one spot on a Ti-6Al-4V plate, below the shakedown limit.
+"""Repeated normal impacts at one spot: shakedown
+==============================================
+
+Repeated normal impacts of an alumina ball at one spot on a Ti-6Al-4V plate, below the shakedown limit.
 
 At V_n = 2.2 V_y (Thornton's yield speed) the first impact yields the plate; the dent it leaves and its residual
 stresses make the later impacts elastic (shakedown). Prints one line per computed impact (restitution, peak

@@ -1,4 +1,7 @@
-"""Run examples/sweep_angles.toml (impact stage, 17 angles) and print the rebound angles from results.csv.
+"""A sweep over the impact angle
+=============================
+
+Run examples/sweep_angles.toml (impact stage, 17 angles) and print the rebound angles from results.csv.
 
     python examples/sweep_angles.py --out DIR [--workers N]
 

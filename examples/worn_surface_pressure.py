@@ -1,4 +1,7 @@
-"""Pressure of a ball on a worn surface: the FE plate against the half-space solution of the same gap.
+"""Pressure of a ball on a worn surface
+====================================
+
+Pressure of a ball on a worn surface: the FE plate against the half-space solution of the same gap.
 
 A steel plate worn into a smooth pit w(r) = D (1 − r²/a₀²)² (a₀ the flat Hertz contact radius, D = 0.5 a₀²/R) is
 pressed by a rigid 10 mm ball (fem.Plate.move_surface, then Plate.load). The same gap is solved on a 2-D grid by

@@ -1,0 +1,238 @@
+"""Sphinx configuration of the impactwear documentation.
+
+Build (warnings are errors)::
+
+    pip install ".[docs]" && sphinx-build -W --keep-going -b html docs docs/_build/html
+
+Generated at build time, into ``docs/_generated/`` (not committed):
+
+- ``commands.md``: the ``--help`` of every ``impactwear`` command, from the argparse parser;
+- ``keys.md``: every case key, from the case schema;
+- ``api/``: the API reference stubs (autosummary, recursive over ``contact``, ``fem``, ``wear``);
+- ``examples/``: a copy of ``examples/`` plus the gallery header, which sphinx-gallery executes in quick mode
+  (``IMPACTWEAR_QUICK=1``) into ``docs/auto_examples/``.
+
+Switches (environment): ``IMPACTWEAR_DOCS_API=0`` leaves the API reference out; ``IMPACTWEAR_DOCS_GALLERY=0``
+shows the gallery without running the examples.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import sys
+from pathlib import Path
+
+DOCS = Path(__file__).resolve().parent
+ROOT = DOCS.parent
+GENERATED = DOCS / "_generated"
+sys.path.insert(0, str(ROOT))  # document (and run the gallery against) this source tree
+sys.path.insert(0, str(DOCS / "_ext"))
+
+# Off-screen, quick, quiet: the gallery runs the examples at reduced size and nothing opens a window.
+os.environ.setdefault("IMPACTWEAR_QUICK", "1")
+os.environ.setdefault("MPLBACKEND", "Agg")
+os.environ.setdefault("PYVISTA_OFF_SCREEN", "true")
+
+
+def _switch(name: str, default: bool = True) -> bool:
+    value = os.environ.get(name)
+    if value is None or value.strip() == "":
+        return default
+    return value.strip().lower() not in ("0", "false", "no", "off")
+
+
+API = _switch("IMPACTWEAR_DOCS_API")
+GALLERY_RUN = _switch("IMPACTWEAR_DOCS_GALLERY")
+
+project = "impactwear"
+author = "the impactwear developers"
+copyright = "the impactwear developers"
+try:
+    from importlib.metadata import version as _version
+
+    release = _version("impactwear")
+except Exception:  # not installed: documenting a bare source tree
+    release = "unknown"
+version = release
+
+extensions = [
+    "myst_parser",
+    "sphinx.ext.autodoc",
+    "sphinx.ext.autosummary",
+    "sphinx.ext.intersphinx",
+    "sphinx.ext.mathjax",
+    "sphinx.ext.napoleon",
+    "sphinx_gallery.gen_gallery",
+]
+
+source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
+root_doc = "index"
+exclude_patterns = [
+    "_build",
+    "_ext",
+    "_generated/examples",
+    "_generated/*.md",  # included from commands.md and keys.md, not pages of their own
+    "auto_examples/*.ipynb",
+    "auto_examples/*.py",
+    "auto_examples/*.zip",
+    "auto_examples/*.json",
+    "auto_examples/*.md5",
+    "sg_execution_times.rst",
+]
+if not API:
+    exclude_patterns += ["_generated/api"]  # stubs of an earlier build
+templates_path = ["_templates"]
+smartquotes = False  # keep "quotes" and -- as typed: TOML defaults, option names and code-like text
+
+# MyST: $...$ and $$...$$ maths, ``:::`` fences, and anchors on headings so that links such as
+# reproduce.md#fig-4-peak-normal-force-vs-impact-angle resolve (the generated reports are linked this way).
+myst_enable_extensions = ["dollarmath", "colon_fence", "deflist"]
+myst_heading_anchors = 3
+
+# API reference: docstrings are reST (``code``, :func: roles, ``.. math::``); some classes and functions use
+# numpy-style "Parameters" / "Attributes" sections, which napoleon turns into field lists. Every object is documented
+# in the module that defines it (the packages' re-exports are not documented twice).
+napoleon_google_docstring = False
+napoleon_numpy_docstring = True
+napoleon_use_ivar = True  # "Attributes" as a field list: no second description of a dataclass field
+autosummary_generate = API
+autosummary_imported_members = False
+autosummary_ignore_module_all = True
+autodoc_default_options = {"member-order": "bysource"}
+autodoc_typehints = "signature"
+autodoc_preserve_defaults = True
+add_module_names = False
+nitpicky = False  # unresolved cross-references (e.g. np.ndarray in a type hint) are not errors
+intersphinx_mapping = {
+    "python": ("https://docs.python.org/3", None),
+    "numpy": ("https://numpy.org/doc/stable/", None),
+    "scipy": ("https://docs.scipy.org/doc/scipy/", None),
+    "matplotlib": ("https://matplotlib.org/stable/", None),
+}
+# The build machine may have no network: an unreachable inventory is then a warning, which -W would turn into an
+# error. Set IMPACTWEAR_DOCS_INTERSPHINX=1 to fetch the inventories (links into the Python/numpy/scipy docs).
+if not _switch("IMPACTWEAR_DOCS_INTERSPHINX", default=False):
+    intersphinx_mapping = {}
+
+html_theme = "furo"
+html_title = f"impactwear {release}"
+html_static_path: list[str] = []
+
+# ---------------------------------------------------------------------------------------------------------------
+# Generated pages: commands and case keys. An import failure stops the build: these pages must not go stale.
+
+
+def _write_if_changed(path: Path, text: str) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    if not path.is_file() or path.read_text(encoding="utf-8") != text:
+        path.write_text(text, encoding="utf-8")
+
+
+def _commands_markdown() -> str:
+    import argparse
+
+    from wear.app.cli import build_parser  # no fallback: a missing parser must fail the build
+
+    columns = os.environ.get("COLUMNS")
+    os.environ["COLUMNS"] = "88"  # argparse wraps help to the terminal width: the same page on every machine
+    try:
+        parser = build_parser()
+        subparsers = [a for a in parser._actions if isinstance(a, argparse._SubParsersAction)]
+        if not subparsers or not subparsers[0].choices:
+            raise RuntimeError("docs/conf.py: wear.app.cli.build_parser() has no sub-commands")
+        texts = {"impactwear": parser.format_help()}
+        texts.update({f"impactwear {name}": sub.format_help() for name, sub in subparsers[0].choices.items()})
+    finally:
+        if columns is None:
+            del os.environ["COLUMNS"]
+        else:
+            os.environ["COLUMNS"] = columns
+    parts = []
+    for title, text in texts.items():
+        parts += [f"## `{title}`", "", "```text", text.rstrip(), "```", ""]
+    return "\n".join(parts)
+
+
+def _keys_markdown() -> str:
+    import importlib.util
+
+    if importlib.util.find_spec("wear.case") is not None:  # the new schema module: no fallback once it exists
+        from wear.case import key_reference
+
+        return key_reference().rstrip() + "\n"
+    import wear.app.run_case  # noqa: F401  (registers the [wear], [fem] and [output] tables)
+    from wear.app.case import render_defaults
+    from wear.app.cli import build_parser
+
+    build_parser()  # imports every command module, which register their own tables ([repeat], [erosion])
+    return render_defaults().rstrip() + "\n"
+
+
+_write_if_changed(GENERATED / "commands.md", _commands_markdown())
+_write_if_changed(GENERATED / "keys.md", _keys_markdown())
+
+# ---------------------------------------------------------------------------------------------------------------
+# Gallery: the examples, executed in quick mode. sphinx-gallery needs a header file in the examples folder; the
+# examples folder holds only scripts and their data, so a copy of it with docs/_ext/GALLERY_HEADER.rst is run.
+
+GALLERY_SRC = GENERATED / "examples"
+
+
+def _copy_examples() -> None:
+    GALLERY_SRC.mkdir(parents=True, exist_ok=True)
+    wanted = {p.name: p for p in (ROOT / "examples").iterdir() if p.suffix in (".py", ".toml")}
+    wanted["GALLERY_HEADER.rst"] = DOCS / "_ext" / "GALLERY_HEADER.rst"
+    for old in GALLERY_SRC.iterdir():
+        if old.name not in wanted and old.is_file():
+            old.unlink()
+    for name, src in wanted.items():
+        dst = GALLERY_SRC / name
+        if not dst.is_file() or dst.read_bytes() != src.read_bytes():
+            shutil.copyfile(src, dst)
+
+
+_copy_examples()
+
+sphinx_gallery_conf = {
+    "examples_dirs": os.path.relpath(GALLERY_SRC, DOCS),
+    "gallery_dirs": "auto_examples",
+    "filename_pattern": r".*\.py$",  # run every example
+    "ignore_pattern": r"__init__\.py",
+    "plot_gallery": "True" if GALLERY_RUN else "False",
+    "reset_argv": "gallery_support.reset_argv",  # --out <temporary folder>, and the script's __doc__/__file__
+    "image_scrapers": ("matplotlib",),
+    "reset_modules": ("matplotlib", "gallery_support.guard_exit"),  # sys.exit in an example must not end the build
+    "reset_modules_order": "both",
+    "within_subsection_order": "FileNameSortKey",
+    "download_all_examples": False,
+    "remove_config_comments": True,
+    "abort_on_example_error": False,  # every failing example is reported, then the build fails
+    "only_warn_on_example_error": False,
+    "show_memory": False,
+    "capture_repr": (),
+}
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# IMPACTWEAR_DOCS_API=0: the API page stays (links to it hold) but its autosummary block is replaced by a note, so
+# no docstring is read.
+
+_API_BLOCK = re.compile(r"^% api-reference: start.*?^% api-reference: end[^\n]*$", re.DOTALL | re.MULTILINE)
+_API_OFF_NOTE = """```{note}
+The API reference was left out of this build (`IMPACTWEAR_DOCS_API=0`). Build without the variable to include
+it.
+```"""
+
+
+def _api_switch(app, docname: str, source: list[str]) -> None:
+    if docname == "api" and not API:
+        text, n = _API_BLOCK.subn(_API_OFF_NOTE, source[0])
+        if n != 1:
+            raise RuntimeError("docs/api.md: the '% api-reference: start/end' markers are missing")
+        source[0] = text
+
+
+def setup(app) -> None:
+    app.connect("source-read", _api_switch)
