@@ -25,8 +25,7 @@ import numpy as np
 
 from contact import Material
 from wear import WearLaw
-from wear.erosion.response import ImpactResponse, build_response_table, table_axes
-from wear.erosion.stream import Stream, erode
+from wear.erosion import ImpactResponse, Stream, build_response_table, erode, table_axes
 
 TARGET_IMPACTS_PER_MINUTE = 1e5
 

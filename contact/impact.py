@@ -126,20 +126,33 @@ def simulate_impacts(
 
     Parameters
     ----------
-    radius : ball radius R (m), in (0, 10].
-    ball, plate : :class:`contact.Material` (the plate may be ``Material.rigid()``).
-    speed : impact speed |v| (m/s), in (0, 1000]; scalar or array.
-    angle : impact angle θ from the plate normal (deg), in [0, 90); scalar or array.
-    friction : Coulomb friction coefficient μ, in [0, 10]; scalar or array.
-        ``speed``, ``angle`` and ``friction`` are broadcast together to the batch shape (flattened).
-    restitution : normal restitution e in (0, 1] that sets the Hertz dashpot (errata Eq. 6); 1 = no damping.
-    normal_model : ``"hertz"``, ``"thornton"`` (with ``limiting_pressure`` p_y in Pa, default C(ν)·Y of the body
-        that yields first) or ``"tabulated"`` (with ``force_law``, a :class:`contact.TabulatedLaw`).
-    tangential_model : ``"hdd"`` (F_t = −(2/3)·8G*a·ξ) or ``"mindlin"`` (without the 2/3).
-    scheme : ``"verlet"`` (second order, default) or ``"paper"`` (the paper's Eqs. 12–13, first order).
-    time_step : Δt (s); default: the Hertz contact time of each impact's normal speed / 2000.
-    histories : record a :class:`History` per impact; ``history_every`` k keeps every k-th step (and the last).
+    radius
+        Ball radius R (m), in (0, 10].
+    ball, plate
+        :class:`contact.Material` (the plate may be ``Material.rigid()``).
+    speed
+        Impact speed \|v\| (m/s), in (0, 1000]; scalar or array.
+    angle
+        Impact angle θ from the plate normal (deg), in [0, 90); scalar or array.
+    friction
+        Coulomb friction coefficient μ, in [0, 10]; scalar or array. ``speed``, ``angle`` and ``friction`` are
+        broadcast together to the batch shape (flattened).
+    restitution
+        Normal restitution e in (0, 1] that sets the Hertz dashpot (errata Eq. 6); 1 = no damping.
+    normal_model
+        ``"hertz"``, ``"thornton"`` (with ``limiting_pressure`` p_y in Pa, default C(ν)·Y of the body that yields
+        first) or ``"tabulated"`` (with ``force_law``, a :class:`contact.TabulatedLaw`).
+    tangential_model
+        ``"hdd"`` (F_t = −(2/3)·8G*a·ξ) or ``"mindlin"`` (without the 2/3).
+    scheme
+        ``"verlet"`` (second order, default) or ``"paper"`` (the paper's Eqs. 12–13, first order).
+    time_step
+        Δt (s); default: the Hertz contact time of each impact's normal speed / 2000.
+    histories
+        Record a :class:`History` per impact; ``history_every`` k keeps every k-th step (and the last).
 
+    Notes
+    -----
     Tabulated law: loading follows F(δ), a(δ) of the table; once δ decreases, unloading (and any reloading up to
     δ*) follows the unloading curve of the reached δ*, interpolated linearly in δ* between the tabulated curves in
     the normalised coordinate s = (δ − δ_p)/(δ* − δ_p), with F and a normalised by their values at δ* (so unloading

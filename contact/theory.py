@@ -65,6 +65,9 @@ def hertz_force(overlap, radius, effective_modulus):
     r"""Hertz normal force (N): :math:`F = \tfrac43 E^* \sqrt{R}\,\delta^{3/2}` (errata Eq. 4).
 
     Negative overlaps (no contact) give zero.
+
+    >>> round(float(hertz_force(1e-6, radius=0.01, effective_modulus=1e11)), 6)  # 4/3 · 1e11 · 0.1 · 1e-9 N
+    13.333333
     """
     d = np.maximum(np.asarray(overlap, dtype=float), 0.0)
     return 4.0 / 3.0 * effective_modulus * np.sqrt(radius) * d**1.5
@@ -191,6 +194,10 @@ def first_yield(
     ``coefficient`` C defaults to the exact C(ν) of :func:`yield_coefficient`; pass
     :data:`PAPER_YIELD_COEFFICIENT` (1.6) for the paper's value. ``nu`` is the Poisson's ratio of
     the yielding body.
+
+    >>> fy = first_yield(radius=0.01, effective_modulus=230.8e9, yield_strength=210e6, nu=0.3)
+    >>> round(fy.coefficient, 3), round(fy.depth / fy.contact_radius, 2)  # Johnson (1985): 1.61 and 0.48
+    (1.613, 0.48)
     """
     c = yield_coefficient(nu) if coefficient is None else float(coefficient)
     p0 = c * yield_strength

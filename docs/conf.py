@@ -156,18 +156,9 @@ def _commands_markdown() -> str:
 
 
 def _keys_markdown() -> str:
-    import importlib.util
+    from wear.case import key_reference  # no fallback: the key table comes from the schema or the build fails
 
-    if importlib.util.find_spec("wear.case") is not None:  # the new schema module: no fallback once it exists
-        from wear.case import key_reference
-
-        return key_reference().rstrip() + "\n"
-    import wear.app.run_case  # noqa: F401  (registers the [wear], [fem] and [output] tables)
-    from wear.app.case import render_defaults
-    from wear.app.cli import build_parser
-
-    build_parser()  # imports every command module, which register their own tables ([repeat], [erosion])
-    return render_defaults().rstrip() + "\n"
+    return key_reference().rstrip() + "\n"
 
 
 _write_if_changed(GENERATED / "commands.md", _commands_markdown())

@@ -22,8 +22,7 @@ from pathlib import Path
 
 from contact import Material
 from wear import WearLaw
-from wear.erosion.response import ImpactResponse, build_response_table, table_axes
-from wear.erosion.stream import Stream, erode
+from wear.erosion import ImpactResponse, Stream, build_response_table, erode, table_axes
 
 
 def write_csv(path: Path, header: list[str], rows) -> None:

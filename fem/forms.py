@@ -36,7 +36,7 @@ SQRT2 = math.sqrt(2.0)
 class Discretisation:
     """Everything the solver needs about the mesh, precomputed once.
 
-    ``B`` (elements, qp, 4, 12) strain operators, ``weight`` (elements, qp) = 2πr w |J| (m³),
+    ``B`` (elements, qp, 4, 12) strain operators, ``weight`` (elements, qp) = 2πr w det J (m³),
     ``element_dofs`` (elements, 12), ``qp_r``/``qp_z`` (elements, qp) quadrature coordinates (m),
     CSR pattern (``indptr``, ``indices``) with ``entry_index`` mapping element entries to it,
     ``axis_dofs``/``bottom_dofs`` (constrained), ``surface_nodes`` (scalar node ids sorted by r),

@@ -15,6 +15,10 @@ does not converge is cut in halves (up to ``max_cuts`` times) before :class:`Con
 
 States (u, ε_p, ᾱ, contact set) are plain frozen records so a loading run can keep them and an unloading run can
 restart from any of them (path independence of the loading branch).
+
+One module for one algorithm (~410 lines): the Newton loop, the active-set correction and the step cutting share
+the solver's state (tangent factorisation, CSR pattern, contact set) increment by increment; split apart they would
+pass that state back and forth.
 """
 
 from __future__ import annotations

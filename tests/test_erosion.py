@@ -13,8 +13,7 @@ import pytest
 
 from contact import Material, simulate_impact
 from wear import WearLaw, wear_from_impact
-from wear.erosion.response import ImpactResponse, build_response_table, table_axes
-from wear.erosion.stream import Stream, erode, footprint_on_grid
+from wear.erosion import ImpactResponse, Stream, build_response_table, erode, footprint_on_grid, table_axes
 
 SAND = Material(E=94e9, nu=0.17, density=2650.0, name="silica")
 STEEL = Material(E=200e9, nu=0.3, density=7850.0, yield_strength=350e6, name="steel")

@@ -8,15 +8,16 @@ from scipy.interpolate import RegularGridInterpolator
 
 from contact import Material, yield_velocity
 from wear import WearLaw
-from wear.erosion.response import (
+from wear.erosion import (
     Footprint,
     ImpactResponse,
+    Stream,
     bitter_threshold_velocity,
     bitter_volume,
     build_response_table,
+    erode,
     table_axes,
 )
-from wear.erosion.stream import Stream, erode
 
 SAND = Material(E=94e9, nu=0.17, density=2650.0, name="silica")
 STEEL = Material(E=200e9, nu=0.3, density=7850.0, yield_strength=350e6, name="steel")

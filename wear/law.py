@@ -74,6 +74,10 @@ class WearLaw:
         does not wear; with β = 0 the speed does not enter (0⁰ = 1).
     K_units : str or None
         Optional statement of the unit you gave K in; if given it must equal m^(1−β) s^(β−1) Pa^(−α).
+
+    >>> law = WearLaw(K=1e-12, alpha=1.0, beta=0.3)
+    >>> f"{law.rate(pressure=1e9, speed=2.0):.4e}"  # 1e-12 · 1e9 · 2^0.3 m/s
+    '1.2311e-03'
     """
 
     K: float
@@ -106,7 +110,7 @@ class WearLaw:
         return wear_coefficient_units(self.alpha, self.beta)
 
     def rate(self, pressure, speed):
-        """Wear depth rate dw/dt (m/s) at ``pressure`` (Pa, clipped at 0) and sliding ``speed`` (m/s, |·| used)."""
+        """Wear depth rate dw/dt (m/s) at ``pressure`` (Pa, clipped at 0) and sliding ``speed`` (m/s, sign ignored)."""
         p = np.maximum(np.asarray(pressure, dtype=float), 0.0)
         v = np.abs(np.asarray(speed, dtype=float))
         return self.K * p**self.alpha * v**self.beta

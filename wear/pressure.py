@@ -35,8 +35,8 @@ Sources (``source=`` of :func:`pressure_history`):
     field is piecewise linear on the surface) onto the table in s with extent = the first node
     beyond the last loaded one; negative nodal values (FE noise) are set to zero.
 
-Sliding speed (``model=`` of :func:`sliding_speed`): ``"sliding"`` is |v_t − Rω| while the contact is in
-gross sliding and 0 while it sticks; ``"kinematic"`` is |v_t − Rω| whether stuck or not (the rigid-body
+Sliding speed (``model=`` of :func:`sliding_speed`): ``"sliding"`` is ``|v_t − Rω|`` while the contact is in
+gross sliding and 0 while it sticks; ``"kinematic"`` is ``|v_t − Rω|`` whether stuck or not (the rigid-body
 slip of the contact centre; while stuck it is the small micro-slip speed of the tangential spring).
 
 SI units throughout: time s, lengths m, forces N, pressures Pa, speeds m/s.
@@ -390,8 +390,8 @@ def pressure_history(
 def sliding_speed(impact, model: str = "sliding") -> SlidingSpeed:
     """Sliding speed of the contact points along ``impact`` (an ImpactResult or its History), m/s.
 
-    ``model="sliding"``: |v_t − Rω| while ``sliding`` (gross sliding), 0 while stuck;
-    ``model="kinematic"``: |v_t − Rω| throughout.
+    ``model="sliding"``: ``|v_t − Rω|`` while ``sliding`` (gross sliding), 0 while stuck;
+    ``model="kinematic"``: ``|v_t − Rω|`` throughout.
     """
     check_choice("model", model, SPEED_MODELS)
     h = _history_of(impact)

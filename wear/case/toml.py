@@ -27,16 +27,17 @@ else:  # Python 3.10
 __all__ = ["parse_case", "load_case", "dump_case", "apply_override", "key_reference", "toml_value"]
 
 
-def parse_case(text: str, job: str = "run", source: str = "case") -> Case:
-    """The case in the TOML ``text`` laid over ``job``'s default case (``source`` names the text in errors)."""
+def parse_case(text: str, job: str = "run", source: str = "case", name: str = "case") -> Case:
+    """The case in the TOML ``text`` laid over ``job``'s default case (``name``=``source`` names the text in
+    errors)."""
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise ValueError(f"case={source!r} is not valid TOML: {exc}") from None
+        raise ValueError(f"{name}={source!r} is not valid TOML: {exc}") from None
     for table in JOBS[job].required:
         if table not in data:
             need = ", ".join(f"[{t}]" for t in JOBS[job].required)
-            raise ValueError(f"[{table}] is missing from case={source!r}: a {job} case needs {need}")
+            raise ValueError(f"[{table}] is missing from {name}={source!r}: a {job} case needs {need}")
     return Case.from_dict(data, base=default_case(job))
 
 
@@ -51,7 +52,7 @@ def load_case(path: str | os.PathLike | None, job: str = "run", name: str = "cas
         text = p.read_text(encoding="utf-8")
     except UnicodeDecodeError:
         raise ValueError(f"{name}={str(p)!r} is not a UTF-8 text (TOML) file") from None
-    return parse_case(text, job, str(p))
+    return parse_case(text, job, str(p), name)
 
 
 def toml_value(value: Any) -> str:

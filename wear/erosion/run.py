@@ -15,8 +15,10 @@ from dataclasses import dataclass
 
 from contact import simulate_impact
 from wear.case import JOBS, Case
-from wear.erosion.response import ImpactResponse, build_response_table, table_axes
-from wear.erosion.stream import ErosionResult, Stream, erode
+from wear.erosion.patch import ErosionResult, erode
+from wear.erosion.response import ImpactResponse
+from wear.erosion.stream import Stream
+from wear.erosion.table import build_response_table, table_axes
 
 __all__ = ["ErosionRun", "erode_case", "erode_angles", "nominal_contact_radius", "STREAM_PRESSURES",
            "MAX_STREAM_ANGLE", "CELLS_PER_RADIUS"]  # fmt: skip

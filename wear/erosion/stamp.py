@@ -1,10 +1,10 @@
-r"""The per-impact height-field update of the stream erosion (:func:`wear.erosion.stream.erode`), two engines.
+r"""The per-impact height-field update of the stream erosion (:func:`wear.erosion.erode`), two engines.
 
 :func:`stamp_impacts` (numba, ``cache=True``) and :func:`stamp_impacts_numpy` (plain numpy, vectorised over
 the nodes of one footprint: the benchmark's reference) apply the same update, one impact after the other, to
 the worn depth ``wear`` (m) and the ``relief`` (m: initial surface depth plus dents; surface = wear + relief)
 of a periodic grid of spacing ``h`` (m), for the impact points ``positions`` (k, 2) (m). Per impact (see
-:mod:`wear.erosion.stream`):
+:mod:`wear.erosion.patch`):
 
 - the least-squares slope over the node offsets ``disc``, scaled by ``disc_norm`` = 1/(h Σ p²);
 - the local angle and normal speed of the particle ``direction`` = (sin θ cos ψ, sin θ sin ψ, cos θ, cos ψ,

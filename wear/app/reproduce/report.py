@@ -54,6 +54,7 @@ def render_markdown(reports: list[FigureReport], quick: bool = False) -> str:
         lines += [f"**Paper.** {r.paper}", "", f"**We get.** {r.ours}", "", f"**Differences.** {r.differences}", ""]
         if r.numbers:
             lines += ["| quantity | value |", "|---|---|"]
-            lines += [f"| {k} | {_fmt(v)} |" for k, v in r.numbers.items()]
+            # a "|" in a quantity's name would split its table row
+            lines += ["| " + k.replace("|", "\\|") + f" | {_fmt(v)} |" for k, v in r.numbers.items()]
             lines.append("")
     return "\n".join(lines)

@@ -25,8 +25,8 @@ AREAS = ("contact", "fem", "wear")
 class Check:
     """One validation check.
 
-    ``error`` is computed by the check: ``measure`` says how (``"relative"``: |obtained − reference|/|reference|;
-    ``"absolute"``: |obtained − reference| in ``units``; or a stated measure such as ``"max |Δ| over table"``).
+    ``error`` is computed by the check: ``measure`` says how (``"relative"``: ``|obtained − reference|/|reference|``;
+    ``"absolute"``: ``|obtained − reference|`` in ``units``; or a stated measure such as ``"max |Δ| over table"``).
     ``units`` are those of reference and obtained, ``error_units`` those of error and tolerance. The check passes
     when ``error`` is finite and ≤ ``tolerance`` (same measure and units)."""
 
@@ -49,14 +49,14 @@ class Check:
 
 
 def relative(area, quantity, case, reference, source, obtained, tolerance, units="") -> Check:
-    """A check of ``obtained`` against ``reference`` with the relative error |o − r|/|r| ≤ ``tolerance``."""
+    """A check of ``obtained`` against ``reference`` with the relative error ``|o − r|/|r|`` ≤ ``tolerance``."""
     reference, obtained = float(reference), float(obtained)
     error = abs(obtained - reference) / abs(reference) if reference != 0.0 else math.inf
     return Check(area, quantity, case, reference, source, obtained, error, tolerance, "relative", units)
 
 
 def absolute(area, quantity, case, reference, source, obtained, tolerance, units="", measure="absolute") -> Check:
-    """A check of ``obtained`` against ``reference`` with the absolute error |o − r| ≤ ``tolerance`` (``units``)."""
+    """A check of ``obtained`` against ``reference`` with the absolute error ``|o − r|`` ≤ ``tolerance`` (``units``)."""
     reference, obtained = float(reference), float(obtained)
     error = abs(obtained - reference)
     return Check(area, quantity, case, reference, source, obtained, error, tolerance, measure, units, "", units)

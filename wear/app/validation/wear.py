@@ -29,8 +29,7 @@ from wear.app.validation.checks import Check, absolute, register, relative
 from wear.case import Case
 from wear.chain.restitution import restitution_sweep
 from wear.chain.single import run
-from wear.erosion.response import ImpactResponse, build_response_table, table_axes
-from wear.erosion.stream import Stream, erode
+from wear.erosion import ImpactResponse, Stream, build_response_table, erode, table_axes
 from wear.pressure import SlidingSpeed
 
 BALL = Material(E=380e9, nu=0.23, density=4000.0, name="alumina")

@@ -1,0 +1,142 @@
+"""The package's imports go one way and sit at the top of modules.
+
+Rooms, lowest first (a module may import from its own room and the rooms below it, never above): ``contact`` ←
+``fem`` ← the wear law (``wear.law``, ``wear.pressure``, ``wear.integrate``, ``wear.surface``) ← the case
+(``wear.case``) ← erosion (``wear.erosion``) ← the chains (``wear.chain``) ← the command line (``wear.app``).
+``meshes`` is data: only its ``__main__`` (which regenerates the mesh) imports ``fem``. No import cycle between the
+project's modules, and at most 10 function-level imports of them, each with a comment saying why.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+PACKAGES = ("contact", "fem", "wear", "meshes")
+ROOMS = (
+    ("contact",),
+    ("fem",),
+    ("wear.law", "wear.pressure", "wear.integrate", "wear.surface"),
+    ("wear.case",),
+    ("wear.erosion",),
+    ("wear.chain",),
+    ("wear.app",),
+)
+
+
+def _modules() -> dict[str, Path]:
+    out = {}
+    for package in PACKAGES:
+        for path in sorted((ROOT / package).rglob("*.py")):
+            parts = list(path.relative_to(ROOT).with_suffix("").parts)
+            if parts[-1] == "__init__":
+                parts = parts[:-1]
+            out[".".join(parts)] = path
+    return out
+
+
+MODULES = _modules()
+
+
+def _room(module: str) -> int:
+    """The room of a module; the package ``wear`` itself re-exports the chains (its room is theirs)."""
+    if module == "wear":
+        return 5
+    for rank, prefixes in enumerate(ROOMS):
+        if any(module == p or module.startswith(p + ".") for p in prefixes):
+            return rank
+    raise AssertionError(f"{module} is in no room: add it to ROOMS")
+
+
+def _target(name: str) -> str | None:
+    """The project module an imported dotted name refers to (the longest known prefix), or None."""
+    parts = name.split(".")
+    for n in range(len(parts), 0, -1):
+        candidate = ".".join(parts[:n])
+        if candidate in MODULES:
+            return candidate
+    return None
+
+
+def _imports(module: str) -> list[tuple[str, int, bool]]:
+    """(imported project module, line, at module level) of ``module``."""
+    path = MODULES[module]
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    top = {id(node) for node in tree.body}
+    found = []
+    for node in ast.walk(tree):
+        names: list[str] = []
+        if isinstance(node, ast.Import):
+            names = [a.name for a in node.names]
+        elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+            names = [f"{node.module}.{a.name}" for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            raise AssertionError(f"{path}:{node.lineno}: relative import; write the module's full name")
+        for name in names:
+            target = _target(name)
+            if target is not None and target != module:
+                found.append((target, node.lineno, id(node) in top))
+    return found
+
+
+def test_every_module_is_in_a_room():
+    for module in MODULES:
+        if module.split(".")[0] != "meshes":
+            _room(module)
+
+
+@pytest.mark.parametrize("module", sorted(m for m in MODULES if not m.startswith("meshes")))
+def test_imports_go_one_way(module):
+    room = _room(module)
+    for target, line, _ in _imports(module):
+        assert not target.startswith("meshes"), f"{MODULES[module]}:{line} imports the data package meshes"
+        if module.endswith("__init__") or MODULES[module].name == "__init__.py":
+            continue  # a package's __init__ re-exports what is below it
+        assert _room(target) <= room, (
+            f"{MODULES[module]}:{line}: {module} (room {ROOMS[room]}) imports {target} (room "
+            f"{ROOMS[_room(target)]}), against the direction contact <- fem <- wear law <- case <- erosion <- "
+            "chains <- app"
+        )
+
+
+def test_meshes_is_data():
+    for module in (m for m in MODULES if m.startswith("meshes")):
+        targets = {t for t, _, _ in _imports(module)}
+        allowed = {"fem", "fem.mesh"} if module == "meshes.__main__" else set()
+        assert targets <= allowed, f"{module} imports {sorted(targets - allowed)}"
+
+
+def test_no_import_cycle():
+    graph = {m: sorted({t for t, _, top in _imports(m) if top}) for m in MODULES}
+    state: dict[str, int] = {}
+    stack: list[str] = []
+
+    def visit(node: str) -> None:
+        state[node] = 1
+        stack.append(node)
+        for nxt in graph[node]:
+            if state.get(nxt) == 1:
+                raise AssertionError("import cycle: " + " -> ".join(stack[stack.index(nxt) :] + [nxt]))
+            elif nxt not in state:
+                visit(nxt)
+        stack.pop()
+        state[node] = 2
+
+    for module in graph:
+        if module not in state:
+            visit(module)
+
+
+def test_function_level_imports_are_few_and_say_why():
+    inner = []
+    for module, path in MODULES.items():
+        lines = path.read_text(encoding="utf-8").splitlines()
+        for _target_module, line, top in _imports(module):
+            if not top:
+                here, before = lines[line - 1], lines[line - 2] if line > 1 else ""
+                assert "#" in here or before.strip().startswith("#"), f"{path}:{line}: say why the import is here"
+                inner.append(f"{path.relative_to(ROOT)}:{line}")
+    assert len(inner) <= 10, inner
