@@ -35,6 +35,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse.linalg as spla
+from scipy.optimize import nnls
 
 from contact.checks import check_array
 from fem.forms import strain
@@ -106,8 +107,6 @@ class SurfaceCompliance:
         r"""Elastic step from the converged ``start`` (its contact reactions ``start_reactions``, N, one per surface
         node) to ``overlap`` (m): the LCP of the module docstring with q = z_s − z − u_{s,z} − C f_s. Returns
         (state, reactions N, gap m, trial Δᾱ, penetration outside the nodes: bool)."""
-        from scipy.optimize import nnls
-
         solver = self.solver
         nodes = self.nodes
         rigid_gap = solver.obstacle(overlap) - start.u[solver.surface_uz]

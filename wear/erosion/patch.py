@@ -36,6 +36,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+from tqdm import tqdm
 
 from contact.checks import check_bool, check_choice, check_number
 from wear.erosion.stamp import stamp_impacts, stamp_impacts_numpy
@@ -247,8 +248,6 @@ def erode(
     frame_list, frame_impacts = [], []
     bar = None
     if progress:
-        from tqdm import tqdm
-
         bar = tqdm(total=n_impacts, unit="impact", desc="erode", leave=False)
     done = 0
     sample_set, frame_set = set(sample_at.tolist()), set(frame_at.tolist())

@@ -12,6 +12,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
+from matplotlib.colors import BoundaryNorm, ListedColormap
 
 from contact.theory import thornton_restitution
 from fem import REGIMES
@@ -199,8 +200,6 @@ def plot_pressure_regimes(loading: Sequence[dict], unloading: Sequence[dict], pa
 def plot_regime_map(speeds, yields, regime, ratio, e_fe, e_thornton, path, source: str) -> Path:
     """Maps over impact speed (m/s, x) and plate yield strength (Pa, y): regime (index into :data:`REGIMES`),
     p_max/p_mean, and the coupled-FE normal restitution against Thornton 1997. Arrays have shape (yields, speeds)."""
-    from matplotlib.colors import BoundaryNorm, ListedColormap
-
     fig, axes = plt.subplots(1, 3, figsize=(13, 4.3))
     sx, sy = np.asarray(speeds), np.asarray(yields) / 1e6
     cmap = ListedColormap(["#4c72b0", "#55a868", "#dd8452", "#c44e52"])

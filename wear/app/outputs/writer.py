@@ -66,7 +66,10 @@ def atomic_write(path: str | os.PathLike, dump: Callable[[IO], Any] | Callable[[
     "path" (``dump(name)`` gets the temporary file's name, ending in ``path``'s suffix, for writers that open the
     file themselves). ``fsync``: flush to disk before the rename (files a resumed run trusts)."""
     path = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.{os.getpid()}.", suffix=f".tmp{path.suffix}", dir=path.parent)
+    # the suffix is kept only for writers that open the file themselves and may read the format from it: a temporary
+    # name ending in the target's suffix would match a reader's glob of the finished files (e.g. "*.json")
+    suffix = f".tmp{path.suffix}" if mode == "path" else ".tmp"
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.{os.getpid()}.", suffix=suffix, dir=path.parent)
     try:
         if mode == "path":
             os.close(fd)

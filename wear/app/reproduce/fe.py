@@ -24,6 +24,7 @@ from contact.theory import (
 from fem import REGIMES
 from wear.app.figures import paper as plots
 from wear.app.reproduce.report import FigureReport
+from wear.app.validation.references import unloading_path_w
 from wear.case import Case
 from wear.chain.restitution import restitution_sweep
 from wear.chain.single import run
@@ -140,14 +141,8 @@ def loading_path(delta_c: float, quick: bool) -> tuple[np.ndarray, np.ndarray]:
 def unloading_path(delta_c: float, quick: bool) -> np.ndarray:
     """Overlaps (m) of a load to w = 50 (increments ≤ 0.25 δ_c up to w = 2: the radial return integrates the
     path) and an unload in steps of ~1 w to w ≈ 28 (a/a* ≈ 0.5 is reached near w ≈ 30): the path of the
-    Mesarovic-Johnson check of ``impactwear validate``."""
-    if quick:
-        w_load = np.array([0.25, 0.5, 0.75, 1, 1.25, 1.5, 2, 3, 4, 5, 6, 8, 10, 14, 20, 30, 40, 50], dtype=float)
-        w_unload = np.concatenate([[50.0 * 0.995], np.linspace(49.0, 29.0, 11)])
-    else:
-        w_load = np.unique(np.concatenate([np.linspace(0.25, 2, 8), np.linspace(2.5, 6, 8), np.linspace(7, 20, 14),
-                                           np.linspace(22, 50, 15)]))  # fmt: skip
-        w_unload = np.concatenate([[50.0 * 0.995], np.linspace(49.0, 28.0, 22)])
+    Mesarovic-Johnson check of ``impactwear validate`` (:func:`wear.app.validation.references.unloading_path_w`)."""
+    w_load, w_unload = unloading_path_w(quick)
     return np.concatenate([w_load, w_unload]) * delta_c
 
 

@@ -38,6 +38,8 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from tqdm import tqdm
+
 from wear.app.figures.sweep import plot_sweep
 from wear.app.outputs.writer import remove_stale_temps, write_text
 from wear.app.sweep.spec import SweepCase, SweepSpec, flatten
@@ -338,9 +340,6 @@ def run_sweep(
     if pending:  # the tables are rewritten when every case is done; until then there is no stale one
         for name in ("results.csv", "sweep_1d.png", "sweep_2d.png"):
             (out / name).unlink(missing_ok=True)
-
-    from tqdm import tqdm
-
     bar = tqdm(
         total=outcome.total,
         initial=outcome.skipped,

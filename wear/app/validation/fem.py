@@ -17,6 +17,7 @@ from contact import Material
 from contact.halfspace import sphere_on_axisymmetric_surface
 from contact.theory import first_yield, hertz_force, hertz_peak_pressure, mesarovic_johnson_pressure
 from wear.app.validation.checks import Check, absolute, register, relative
+from wear.app.validation.references import unloading_path_w
 
 if not hasattr(fem, "indent"):
     raise ModuleNotFoundError("fem.indent is not available", name=__name__)
@@ -122,16 +123,7 @@ def fem_elastic_plastic(quick: bool) -> list[Check]:
     fc = _critical()
     dc = fc.overlap
     pc, ac = fc.force, math.pi * R * dc
-    # Loading through w = 2, 6, 20 to 50 in increments of at most 0.25 δ_c up to w = 2 (the radial return integrates
-    # the path: with one increment from w = 0.5 to 1 the fine-mesh FE flags a spurious surface-plastic point), then
-    # unloading in steps of ~1 w (a/a* = 0.5 is reached near w ≈ 30).
-    if quick:
-        w_load = np.array([0.25, 0.5, 0.75, 1, 1.25, 1.5, 2, 3, 4, 5, 6, 8, 10, 14, 20, 30, 40, 50], dtype=float)
-        w_unload = np.concatenate([[50.0 * 0.995], np.linspace(49.0, 29.0, 11)])
-    else:
-        w_load = np.unique(np.concatenate([np.linspace(0.25, 2, 8), np.linspace(2.5, 6, 8), np.linspace(7, 20, 14),
-                                           np.linspace(22, 50, 15)]))  # fmt: skip
-        w_unload = np.concatenate([[50.0 * 0.995], np.linspace(49.0, 28.0, 22)])
+    w_load, w_unload = unloading_path_w(quick)
     path = np.concatenate([w_load, w_unload]) * dc
     res = _indent(R, _plate(), path, (16, 10) if quick else (32, 20))
     src = "Kogut & Etsion 2002, J. Appl. Mech. 69:657"

@@ -14,7 +14,7 @@ import numpy as np
 
 from contact import BatchResult, Material, simulate_impacts
 
-__all__ = ["KHARAZ", "KHARAZ_SOURCE", "kharaz_batch", "kharaz_data", "kharaz_rms"]
+__all__ = ["KHARAZ", "KHARAZ_SOURCE", "kharaz_batch", "kharaz_data", "kharaz_rms", "unloading_path_w"]
 
 #: Kharaz, Gorham & Salman (2001) setup (see the module docstring).
 KHARAZ = dict(
@@ -65,3 +65,19 @@ def kharaz_rms() -> dict[str, float]:
         angles, values = data[quantity]
         out[quantity] = _rms(getattr(kharaz_batch(angles), attr), values)
     return out
+
+
+def unloading_path_w(quick: bool) -> tuple[np.ndarray, np.ndarray]:
+    """The load–unload path of the Kogut–Etsion and Mesarovic–Johnson checks, in w = δ/δ_c: (loading, unloading).
+
+    Loading through w = 2, 6, 20 to 50 in increments of at most 0.25 δ_c up to w = 2 (the radial return integrates
+    the path: with one increment from w = 0.5 to 1 the fine-mesh FE flags a spurious surface-plastic point), then
+    unloading in steps of ~1 w (a/a* ≈ 0.5, the second Mesarovic–Johnson point, is reached near w ≈ 30)."""
+    if quick:
+        w_load = np.array([0.25, 0.5, 0.75, 1, 1.25, 1.5, 2, 3, 4, 5, 6, 8, 10, 14, 20, 30, 40, 50], dtype=float)
+        w_unload = np.concatenate([[50.0 * 0.995], np.linspace(49.0, 29.0, 11)])
+    else:
+        w_load = np.unique(np.concatenate([np.linspace(0.25, 2, 8), np.linspace(2.5, 6, 8), np.linspace(7, 20, 14),
+                                           np.linspace(22, 50, 15)]))  # fmt: skip
+        w_unload = np.concatenate([[50.0 * 0.995], np.linspace(49.0, 28.0, 22)])
+    return w_load, w_unload
