@@ -193,7 +193,7 @@ sphinx_gallery_conf = {
     "ignore_pattern": r"__init__\.py",
     "plot_gallery": "True" if GALLERY_RUN else "False",
     "reset_argv": "gallery_support.reset_argv",  # --out <temporary folder>, and the script's __doc__/__file__
-    "image_scrapers": ("matplotlib",),
+    "image_scrapers": ("matplotlib", "gallery_support.output_figures"),  # open figures, and the PNGs written
     "reset_modules": ("matplotlib", "gallery_support.guard_exit"),  # sys.exit in an example must not end the build
     "reset_modules_order": "both",
     "within_subsection_order": "FileNameSortKey",

@@ -8,7 +8,7 @@ normal); prints the main results and writes the output folder (summary.json, his
 surface.vtu, plate.vtu, plate_fe.vtu, figures) into ``--out``/default_run. SI units.
 
 Run: ``python examples/default_run.py [--out DIR]`` (IMPACTWEAR_QUICK=1: coarser FE mesh, fewer steps, no
-figures, for the test suite).
+3-D render, for the test suite).
 """
 
 from __future__ import annotations
@@ -30,7 +30,7 @@ def main() -> None:
         case = case.with_(
             fem={"mesh_scale": 4.0, "load_steps": 10, "unload_steps": 6},
             wear={"points_across": 40},
-            output={"figures": False, "render": False},
+            output={"render": False},
         )
     result = run(case, progress=lambda stage: print(f"stage: {stage}", flush=True))
     summary = write_run(result, Path(args.out) / "default_run")

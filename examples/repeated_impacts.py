@@ -6,7 +6,8 @@ Repeated normal impacts of an alumina ball at one spot on a Ti-6Al-4V plate, bel
 At V_n = 2.2 V_y (Thornton's yield speed) the first impact yields the plate; the dent it leaves and its residual
 stresses make the later impacts elastic (shakedown). Prints one line per computed impact (restitution, peak
 force and pressure, plastic strain increment, dent) and the impact at which the plate shook down, and writes
-repeat.csv into --out. IMPACTWEAR_QUICK=1 uses a coarser FE mesh (seconds per impact, not validation quality).
+repeat.csv and repeat.png into --out. IMPACTWEAR_QUICK=1 uses a coarser FE mesh (seconds per impact, not
+validation quality).
 """
 
 import argparse
@@ -15,6 +16,7 @@ from pathlib import Path
 
 from contact.theory import yield_velocity
 from wear import Case, repeat
+from wear.app.figures.repeat import plot_repeat
 from wear.app.outputs.writer import write_csv
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -45,3 +47,5 @@ for row in result.records:
         )
 print(f"shakedown at impact {result.shakedown_impact}" if result.shakedown_impact else "no shakedown")
 write_csv(out / "repeat.csv", result.columns())
+plot_repeat(result.columns(), out / "repeat.png", title=f"{case.repeat.impacts} impacts at one site (no wear)",
+            shakedown_impact=result.shakedown_impact)  # fmt: skip

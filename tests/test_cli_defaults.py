@@ -2,12 +2,14 @@
 tables give the default; a key unknown to the schema is a one-line error naming it."""
 
 import json
+from pathlib import Path
 
 import pytest
 
 from wear.app.cli import build_parser, main
 from wear.app.commands.common import case_from_args
-from wear.case import JOBS, default_case
+from wear.app.sweep.spec import load_sweep
+from wear.case import JOBS, default_case, load_case
 
 COMMANDS = ("run", "repeat", "impact", "indent", "erode")
 
@@ -55,3 +57,14 @@ def test_unknown_key_is_one_line_naming_it(command, tmp_path, capsys):
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "impact.sped is not a known key" in err
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("path", sorted(Path(__file__).resolve().parents[1].joinpath("examples").glob("*.toml")),
+                         ids=lambda p: p.name)  # fmt: skip
+def test_example_case_files_are_valid(path):
+    """The case and sweep files shipped in examples/ stay valid against the schema."""
+    if "[sweep]" in path.read_text(encoding="utf-8"):
+        assert load_sweep(path).cases
+    else:
+        case = load_case(path, "erode")
+        assert case.wear.pressure == "paper" and case.erosion.seed == 2012  # the file's own values were read

@@ -9,6 +9,9 @@ A script that calls ``sys.exit`` would end sphinx-build itself, silently and wit
 never built). :func:`guard_exit` replaces ``sys.exit`` while an example runs: ``sys.exit(0)`` / ``sys.exit()``
 return (correct for a trailing ``sys.exit(main())``, the usual end of a script), any other status raises
 ``RuntimeError``, so sphinx-gallery reports the example as failed and the build fails.
+
+The examples write their figures with the toolkit's own writers (PNG files in ``--out``), as ``impactwear`` does:
+:func:`output_figures` shows them in the gallery (beside any matplotlib figure an example leaves open).
 """
 
 from __future__ import annotations
@@ -20,6 +23,8 @@ import sys
 import tempfile
 from pathlib import Path
 from typing import Any
+
+from sphinx_gallery.scrapers import figure_rst
 
 _OUT = Path(tempfile.mkdtemp(prefix="impactwear-gallery-"))
 atexit.register(shutil.rmtree, _OUT, ignore_errors=True)
@@ -47,3 +52,18 @@ def _example_exit(status: object = None) -> None:
 def guard_exit(gallery_conf: dict[str, Any], fname: str | None, when: str) -> None:
     """``reset_modules`` hook: ``sys.exit`` guarded while an example runs, restored after it."""
     sys.exit = _example_exit if (when == "before" and fname is not None) else _REAL_EXIT
+
+
+_SHOWN: set[Path] = set()
+
+
+def output_figures(block: Any, block_vars: dict[str, Any], gallery_conf: dict[str, Any]) -> str:
+    """Image scraper: the PNG files the example wrote into its ``--out`` folder since the last call."""
+    out = _OUT / Path(block_vars["src_file"]).stem
+    new = sorted(p for p in out.rglob("*.png") if p not in _SHOWN)
+    images = []
+    for png, target in zip(new, block_vars["image_path_iterator"], strict=False):
+        shutil.copyfile(png, target)
+        _SHOWN.add(png)
+        images.append(target)
+    return figure_rst(images, gallery_conf["src_dir"])

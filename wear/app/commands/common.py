@@ -15,8 +15,8 @@ from tqdm import tqdm
 from wear.app.outputs.writer import to_jsonable
 from wear.case import JOBS, Case, apply_override, dump_case, load_case
 
-__all__ = ["add_case_options", "case_from_args", "collect_notes", "print_json", "print_notes", "progress_bar",
-           "show_progress"]  # fmt: skip
+__all__ = ["add_case_options", "case_from_args", "collect_notes", "print_default", "print_json", "print_notes",
+           "progress_bar", "show_progress"]  # fmt: skip
 
 
 def add_case_options(parser: argparse.ArgumentParser, job: str, *, flag: bool = False) -> None:
@@ -48,6 +48,9 @@ def case_from_args(args: argparse.Namespace, job: str,
 
 def print_default(job: str) -> int:
     """Print ``job``'s default case (the tables it reads) as commented TOML."""
+    print(f"# impactwear {job}: the default case ({JOBS[job].doc}).")
+    print("# Every key the command reads, with its meaning and valid range; SI units, angles in degrees from the plate")
+    print("# normal. Keys left out of a case file take these values.\n")
     sys.stdout.write(dump_case(JOBS[job].default_case(), JOBS[job].tables))
     return 0
 
