@@ -24,7 +24,7 @@ NORMAL_MODELS = {"hertz": laws.HERTZ, "thornton": laws.THORNTON, "tabulated": la
 TANGENTIAL_MODELS = {"hdd": 2.0 / 3.0, "mindlin": 1.0}
 SCHEMES = {"verlet": engine.VERLET, "paper": engine.PAPER}
 
-#: Default number of steps per Hertz contact time t_c (time step t_c/2000, the issue's default).
+#: Default number of steps per Hertz contact time t_c (time step t_c/2000).
 STEPS_PER_CONTACT = 2000
 #: Safety stop: an impact may take at most this many default Hertz contact times (plastic contacts last longer).
 MAX_CONTACT_TIMES = 200.0

@@ -78,7 +78,7 @@ def generate_mesh(
     Parameters
     ----------
     contact_elements : int
-        Elements across a_max in the contact box (≥ 30 by the issue's rule; 32 by default).
+        Elements across a_max in the contact box (≥ 30 resolve the pressure profile; 32 by default).
     yield_elements : int
         Elements across the first-yield contact radius a_y (≈ 20); 0 switches the box off.
     yield_radius_ratio : float

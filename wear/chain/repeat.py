@@ -1,4 +1,4 @@
-r"""Repeated impacts of the same ball at the same spot, each on the plate the previous ones left (issue 6 §1).
+r"""Repeated impacts of the same ball at the same spot, each on the plate the previous ones left.
 
 ``repeat(case) -> RepeatResult`` (the repetition's settings are ``case.repeat``, :class:`wear.case.RepeatSpec`).
 One FE plate (:class:`fem.Plate`) lives through the whole sequence: it keeps

@@ -31,7 +31,7 @@ from wear.chain.single import run
 
 __all__ = ["FIGURES", "STEEL", "indent", "loading_path", "unloading_path"]
 
-#: The FE reference plate of issue 3: E 210 GPa, ν 0.3, Y 210 MPa (rigid ball R 10 mm).
+#: The FE reference plate (steel): E 210 GPa, ν 0.3, Y 210 MPa (rigid ball R 10 mm).
 STEEL = dict(E=210e9, nu=0.3, Y=210e6, radius=10e-3)
 
 
@@ -152,7 +152,7 @@ def _sorted(res):
 
 
 def pressure_regimes(quick: bool) -> dict:
-    """Two FE runs on the issue-3 steel plate: a load to w = 100 (profiles at :data:`REGIME_W` against Hertz at
+    """Two FE runs on the steel plate :data:`STEEL`: a load to w = 100 (profiles at :data:`REGIME_W` against Hertz at
     the same force) and a load to w = 50 with unloading (profiles at a/a* = 0.75, 0.5 against Eq. 19)."""
     mat = plate(STEEL["E"], STEEL["nu"], STEEL["Y"])
     radius = STEEL["radius"]

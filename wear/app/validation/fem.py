@@ -47,7 +47,7 @@ def _critical():
 @register("fem")
 def fem_hertz(quick: bool) -> list[Check]:
     """Elastic plate (yield_strength=None) up to a = 0.05R: force within 1% of (4/3)E*√R δ^{3/2}, contact radius
-    within 3% of √(Rδ), pressure within 5% RMS of p0 of p0√(1 − r²/a²) (Hertz; issue 3, acceptance 1); the MOOSE
+    within 3% of √(Rδ), pressure within 5% RMS of p0 of p0√(1 − r²/a²) (Hertz); the MOOSE
     Hertz benchmark (E* = 7.5 MPa, R = 1 m, F = 1e4 N → a = 0.1 m, δ = 0.01 m) within 2%."""
     delta = (0.05 * R) ** 2 / R
     res = _indent(R, _plate(None), np.linspace(0.0, delta, 5)[1:], (12, 0) if quick else (32, 0))
@@ -81,7 +81,7 @@ def fem_hertz(quick: bool) -> list[Check]:
 @register("fem")
 def fem_first_yield(quick: bool) -> list[Check]:
     """First yield (Y = 210 MPa) within 3% of F_c = π³C³Y³R²/(6E*²), C(0.3) = 1.6128, on the axis at depth
-    0.481a ± 0.03a (issue 3, acceptance 2); loading to 0.9 F_c and unloading leaves no plastic strain."""
+    0.481a ± 0.03a; loading to 0.9 F_c and unloading leaves no plastic strain."""
     fc = _critical()
     path = np.linspace(0.0, 1.5 * fc.overlap, 7 if quick else 13)[1:]
     res = _indent(R, _plate(), path, (12, 10) if quick else (24, 20))
@@ -117,8 +117,8 @@ def _kogut_etsion(w: float) -> tuple[float, float]:
 def fem_elastic_plastic(quick: bool) -> list[Check]:
     """Elastic-plastic loading against Kogut & Etsion (2002), w = δ/δ_c: P/P_c and A/A_c within 15% at w = 2, 6, 20
     (their case is a deformable sphere on a rigid flat: the same while elastic, close in early plasticity); the
-    plastic zone reaches the surface between w = 4 and 10 (issue 3, acceptance 3); elastic unloading stiffness
-    dF/dδ = 2E*a at the start of unloading within 3% (acceptance 4); after w = 50, the unloading pressure at
+    plastic zone reaches the surface between w = 4 and 10; elastic unloading stiffness
+    dF/dδ = 2E*a at the start of unloading within 3%; after w = 50, the unloading pressure at
     a/a* = 0.75 and 0.5 within 15% RMS of p* of Mesarovic & Johnson (Eq. 19) from the FE's own a*, p*."""
     fc = _critical()
     dc = fc.overlap
@@ -139,7 +139,7 @@ def fem_elastic_plastic(quick: bool) -> list[Check]:
     w_surface = float(surface[0]) if surface else math.inf
     out.append(
         Check("fem", "w at which the plastic zone reaches the surface", CASE + ", Y 210 MPa", "4 ≤ w ≤ 10",
-              "Kogut & Etsion 2002 (issue 3, acceptance 3)", w_surface, max(4.0 - w_surface, w_surface - 10.0, 0.0),
+              "Kogut & Etsion 2002", w_surface, max(4.0 - w_surface, w_surface - 10.0, 0.0),
               0.0, "distance outside [4, 10]")
     )  # fmt: skip
     k_star = w_load.size - 1

@@ -2,7 +2,7 @@
 
 References: closed forms evaluated here (the steady Hertz track; the impulse identity V = K m V_n (1 + e) from
 conservation of momentum; Archard's V = K W_f/μ), an independent quadrature of the normal Hertz impact's depth
-profile (and the table of issue 4), and the additivity of Eq. 15 without geometry update.
+profile (and its tabulated values), and the additivity of Eq. 15 without geometry update.
 """
 
 from __future__ import annotations
@@ -64,7 +64,7 @@ def steady_track(quick: bool) -> list[Check]:
         err = float(np.max(np.abs(h - exact)) / exact.max())
         out.append(
             Check("wear", f"track depth h(y), α = {alpha:g}, β = {beta:g}", "a 0.1 mm, p0 1.2 GPa, v 2 m/s",
-                  float(exact.max()), "closed form (issue 4, acceptance 1)", float(h.max()), err, 0.01,
+                  float(exact.max()), "closed form", float(h.max()), err, 0.01,
                   "max |Δh| / max h", "m")
         )  # fmt: skip
     return out
@@ -89,7 +89,7 @@ def impulse_identity(quick: bool) -> list[Check]:
         out.append(
             relative("wear", f"worn volume = K m V_n (1+e), {source} pressure", f"{CASE}, 5 m/s, {angle:g}°, "
                      f"{model} impact" + (f", e {e:g}" if model == "hertz" else ""), expected,
-                     "conservation of momentum (issue 4, acceptance 2)", wm.volume_m3, 5e-3, "m³")
+                     "conservation of momentum", wm.volume_m3, 5e-3, "m³")
         )  # fmt: skip
     return out
 
@@ -112,7 +112,7 @@ def _hertz_impact_profile(rho) -> np.ndarray:
 @register("wear")
 def hertz_impact_profile(quick: bool) -> list[Check]:
     """Normal Hertz impact, α = 1, β = 0: the depth profile h(r)/h(0) at r/a_max = 0, 0.25, 0.5, 0.75, 0.9, 1 equals
-    1, 0.930, 0.727, 0.409, 0.173, 0 (issue 4, acceptance 3; reproduced here by quadrature) within 0.01."""
+    1, 0.930, 0.727, 0.409, 0.173, 0 (tabulated; reproduced here by quadrature) within 0.01."""
     rho = np.array([0.0, 0.25, 0.5, 0.75, 0.9, 1.0])
     table = np.array([1.0, 0.930, 0.727, 0.409, 0.173, 0.0])
     quadrature = _hertz_impact_profile(rho)
@@ -126,7 +126,7 @@ def hertz_impact_profile(quick: bool) -> list[Check]:
     case = f"{CASE}, 3.9 m/s, normal"
     measure = "max |Δ| over r/a_max = 0, 0.25, 0.5, 0.75, 0.9, 1"
     rows = (
-        ("quadrature of a closed-form Hertz impact", "closed form", quadrature, table, "issue 4 table", 1e-3),
+        ("quadrature of a closed-form Hertz impact", "closed form", quadrature, table, "tabulated h(r)/h(0)", 1e-3),
         ("axisymmetric profile", case, h / h[0], quadrature, "quadrature (this module)", 0.01),
         ("2-D depth map centreline", case, line / wm.centreline().max(), quadrature, "quadrature (this module)", 0.01),
     )
@@ -156,9 +156,9 @@ def sliding_and_additivity(quick: bool) -> list[Check]:
     wm1 = wear_from_impact(archard, law1, pressure="hertz", speed="sliding")
     return [
         absolute("wear", "worn volume, normal impact, β = 0.3, sliding speed", f"{CASE}, 5 m/s, 0°", 0.0,
-                 "no slip at normal incidence (issue 4, acceptance 4)", wm0.volume_m3, 0.0, "m³"),
+                 "no slip at normal incidence", wm0.volume_m3, 0.0, "m³"),
         relative("wear", "worn volume of 5 identical impacts", f"{CASE}, 5 m/s, 55°", 5 * one.volume_m3,
-                 "additivity of Eq. 15 (issue 4, acceptance 4)", many.volume_m3, 1e-12, "m³"),
+                 "additivity of Eq. 15", many.volume_m3, 1e-12, "m³"),
         relative("wear", "worn volume, α = 1, β = 1, sliding throughout", f"{CASE}, 5 m/s, 70°, e 0.9",
                  law1.K * archard.friction_work / archard.friction, "Archard: V = K W_f / μ", wm1.volume_m3, 5e-3,
                  "m³"),
