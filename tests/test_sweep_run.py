@@ -276,3 +276,43 @@ def test_sigint_stops_with_status_130_keeping_finished_cases(reference, tmp_path
     assert 3 <= len(kept) < 40
     expected = _records(ref)
     assert all(kept[k]["results"] == expected[k]["results"] for k in kept)  # finished cases are complete and right
+
+
+def test_erode_and_repeat_are_sweep_stages(tmp_path):
+    """The erosion and the repeated impacts run as sweep stages: each case's results are the runner's own summary
+    numbers (wear.erode_case, wear.repeat called directly on the same case)."""
+    from wear import erode_case, repeat
+    from wear.app.sweep.stages import stage_case
+
+    erosion = load_sweep(_sweep_file(tmp_path, """
+        [sweep]
+        stage = "erode"
+        [base]
+        erosion.grid = 128
+        erosion.exposure_time = 20.0
+        erosion.table_speeds = 2
+        erosion.angle_step = 10.0
+        [grid]
+        "impact.angle" = [15.0, 45.0]
+        """))  # fmt: skip
+    out = run_sweep(erosion, tmp_path / "erode", workers=1, quiet=True)
+    assert (out.computed, out.failed) == (2, 0)
+    records = _records(tmp_path / "erode")
+    for sc in erosion.cases:
+        direct = erode_case(stage_case(sc.case, "erode")).summary()["results"]
+        assert records[sc.case_id]["results"]["results.mass_loss_kg"] == direct["mass_loss_kg"] > 0
+    many = load_sweep(_sweep_file(tmp_path, """
+        [sweep]
+        stage = "repeat"
+        [base]
+        fem.mesh_scale = 4.0
+        plate.yield_strength = inf
+        [grid]
+        "repeat.impacts" = [2]
+        """))  # fmt: skip
+    out = run_sweep(many, tmp_path / "repeat", workers=1, quiet=True)
+    assert (out.computed, out.failed) == (1, 0), out.failures
+    result = _records(tmp_path / "repeat")[many.cases[0].case_id]["results"]
+    direct = repeat(stage_case(many.cases[0].case, "repeat")).summary()
+    assert result["impacts"] == 2
+    assert result["after_last_impact.total_wear_volume_m3"] == direct["after_last_impact"]["total_wear_volume_m3"]

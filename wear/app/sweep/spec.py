@@ -3,7 +3,7 @@
 A sweep file has three parts::
 
     [sweep]
-    stage = "impact"                 # "impact", "indent" or "run" (see wear.app.sweep.stages)
+    stage = "impact"                 # "impact", "indent", "run", "erode" or "repeat" (wear.app.sweep.stages)
 
     [base]                           # optional: a case, same tables as a case file; keys left out take
     impact.speed = 3.9               # the stage's default case's values (see wear.app.sweep.stages)
@@ -230,13 +230,13 @@ def parse_sweep(data: Mapping, *, source: str = "") -> SweepSpec:
     if unknown:
         raise ValueError(f"{unknown[0]}: unknown table: a sweep file has [sweep], [base], and [grid] or [[cases]]")
     if "sweep" not in data:
-        raise ValueError('sweep: missing table [sweep] with stage = "impact", "indent" or "run"')
+        raise ValueError(f"sweep: missing table [sweep] with stage = one of {', '.join(map(repr, STAGES))}")
     head = _check_table("sweep", data["sweep"])
     for key in head:
         if key not in _SWEEP_KEYS:
             raise ValueError(f"sweep.{key}: unknown key: [sweep] takes {', '.join(_SWEEP_KEYS)}")
     if "stage" not in head:
-        raise ValueError('sweep.stage: missing: give stage = "impact", "indent" or "run"')
+        raise ValueError(f"sweep.stage: missing: give stage = one of {', '.join(map(repr, STAGES))}")
     stage = head["stage"]
     if not isinstance(stage, str) or stage not in STAGES:
         listed = ", ".join(repr(s) for s in STAGES)

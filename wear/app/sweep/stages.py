@@ -26,9 +26,21 @@ from contact import simulate_impact
 from contact.results import OUTPUT_UNITS
 from fem import worst_regime
 from wear.case import Case, default_case
+from wear.chain.repeat import repeat
 from wear.chain.single import one_way, run
+from wear.erosion.run import erode_case
 
-__all__ = ["Stage", "STAGES", "execute_case", "impact_stage", "indent_stage", "run_stage", "stage_case"]
+__all__ = [
+    "Stage",
+    "STAGES",
+    "erode_stage",
+    "execute_case",
+    "impact_stage",
+    "indent_stage",
+    "repeat_stage",
+    "run_stage",
+    "stage_case",
+]
 
 
 @dataclass(frozen=True)
@@ -113,6 +125,22 @@ _INDENT_UNITS = {
 }
 
 
+def _flat(summary: dict, skip: tuple[str, ...]) -> dict:
+    """A summary's scalar numbers under dotted names (``section.key``), without the sections ``skip`` and the
+    ``units`` strings."""
+    out: dict = {}
+    for section, values in summary.items():
+        if section in skip:
+            continue
+        if isinstance(values, dict):
+            for key, value in values.items():
+                if key != "units" and not isinstance(value, (dict, list, tuple)):
+                    out[f"{section}.{key}"] = value
+        elif values is not None and not isinstance(values, (list, tuple)):
+            out[section] = values
+    return out
+
+
 def run_stage(case: dict) -> dict:
     """The whole chain (:func:`wear.run`: impact, FE plate, coupling, wear, surface; no files written).
 
@@ -121,18 +149,23 @@ def run_stage(case: dict) -> dict:
     ``max_depth_m``, ``scar_length_m``, ``scar_width_m``, law, pressure source), ``dent.*`` (m) and
     ``coupling.*`` — without the input case and without the stage wall times (not reproducible).
     """
-    summary = run(stage_case(case, "run")).summary()
-    out: dict = {}
-    for section, values in summary.items():
-        if section in ("case", "stage_times_s"):
-            continue
-        if isinstance(values, dict):
-            for key, value in values.items():
-                if key != "units" and not isinstance(value, (dict, list, tuple)):
-                    out[f"{section}.{key}"] = value
-        elif values is not None:
-            out[section] = values
-    return out
+    return _flat(run(stage_case(case, "run")).summary(), ("case", "stage_times_s"))
+
+
+def erode_stage(case: dict) -> dict:
+    """A particle-stream erosion (:func:`wear.erode_case`; no files written). Results: ``stream.*`` (m/s, deg,
+    kg/(m² s), s), ``patch.*`` (m, m²), ``results.*`` (``impacts``, ``mass_loss_kg``, ``erosion_rate_kg_per_kg``,
+    ``max_depth_m``, ``rms_slope``, ...), without the wall times."""
+    return _flat(erode_case(stage_case(case, "erode")).summary(), ("case", "seconds", "table"))
+
+
+def repeat_stage(case: dict) -> dict:
+    """Repeated impacts at one site (:func:`wear.repeat`; no files written). Results: ``impacts``,
+    ``computed_impacts``, ``shakedown_impact``, ``first_impact.*``, ``last_computed_impact.*`` and
+    ``after_last_impact.*`` (the columns of repeat.csv: SI units in their names), without the wall time."""
+    summary = repeat(stage_case(case, "repeat")).summary()
+    out = _flat(summary, ("wall_time_s", "notes"))
+    return {k: v for k, v in out.items() if not isinstance(v, str)}
 
 
 def _run_units() -> dict[str, str]:
@@ -150,7 +183,14 @@ STAGES: dict[str, Stage] = {
                     lambda: dict(_INDENT_UNITS)),
     "run": Stage("run", run_stage, ("ball", "plate", "impact", "wear", "fem"),
                  "the whole chain impact -> FE -> coupling -> wear (wear.run)", "run", _run_units),
+    "erode": Stage("erode", erode_stage, ("ball", "plate", "impact", "wear", "erosion"),
+                   "particle-stream erosion of a plate patch (wear.erode_case)", "erode", lambda: dict(_ERODE_UNITS)),
+    "repeat": Stage("repeat", repeat_stage, ("ball", "plate", "impact", "wear", "fem", "repeat"),
+                    "repeated impacts at one site (wear.repeat)", "repeat", dict),
 }  # fmt: skip
+
+_ERODE_UNITS = {"stream.speed_m_s": "m/s", "stream.angle_deg": "deg", "patch.size_m": "m",
+                "results.mass_loss_kg": "kg", "results.max_depth_m": "m"}  # fmt: skip
 
 
 def flat_results(values: Mapping[str, Any], stage: str) -> dict[str, Any]:
