@@ -39,7 +39,7 @@ from contact import ImpactResult, TabulatedLaw
 from contact.impact import ForceLawRangeError
 from fem.reload import elastic_reload
 from fem.result import FirstYieldPoint, IndentationResult, join, loading_branch, unloading_curve
-from fem.solver import ConvergenceError
+from fem.solver import ConvergenceError, PlateState
 
 __all__ = ["UNLOAD_MARGIN", "CouplingSettings", "CoupledImpact", "PlateCycle", "couple", "couple_elastic",
            "contact_pressure", "force_law", "loading_path", "pressure_table"]  # fmt: skip
@@ -59,8 +59,11 @@ class CoupledPlate(Protocol):
     """What the coupling needs of a plate (:class:`fem.Plate` is one)."""
 
     effective_modulus: float
+    state: PlateState
 
     def first_contact_overlap(self) -> float: ...
+
+    def plastic_work(self, since: PlateState) -> float: ...
 
     def first_yield_overlap(self) -> float | None: ...
 
@@ -172,7 +175,8 @@ class CoupledImpact:
     change of δ_max), ``converged``, ``unload_overlap`` δ* (m, from first contact: where the unloading starts, a hair
     above the impact's δ_max), ``elastic`` (solved on the plate's elastic response, the plate's state
     unchanged) and ``trial_increment`` (the largest Δᾱ a return mapping of that elastic response gives; 0 for a
-    plastic solve), ``pressure_table`` ((time s, surface_r m, pressure Pa) of :func:`pressure_table`)."""
+    plastic solve), ``plastic_work`` (J, the plate's plastic dissipation over the cycle: 0 on the elastic
+    response), ``pressure_table`` ((time s, surface_r m, pressure Pa) of :func:`pressure_table`)."""
 
     impact: ImpactResult
     law: TabulatedLaw
@@ -185,6 +189,7 @@ class CoupledImpact:
     unload_overlap: float
     elastic: bool = False
     trial_increment: float = 0.0
+    plastic_work: float = 0.0
 
     @property
     def iterations(self) -> int:
@@ -255,6 +260,7 @@ def couple(plate: CoupledPlate, impact_on: ImpactOnLaw, estimate: float, setting
                          "unloading)")  # fmt: skip
     first_contact = plate.first_contact_overlap()
     first_yield = plate.first_yield_overlap()
+    before = plate.state
 
     def load(target: float) -> IndentationResult:
         return plate.load(first_contact + loading_path(target, settings.load_steps, first_yield))
@@ -281,7 +287,7 @@ def couple(plate: CoupledPlate, impact_on: ImpactOnLaw, estimate: float, setting
             break
     cycle = PlateCycle.join(loading, unloading, first_contact, d_star)
     return CoupledImpact(impact, law, cycle, first_contact, tuple(overlaps), change, change < settings.tolerance,
-                         pressure_table(cycle, impact), unload_at)  # fmt: skip
+                         pressure_table(cycle, impact), unload_at, plastic_work=plate.plastic_work(before))  # fmt: skip
 
 
 def couple_elastic(plate, impact_on: ImpactOnLaw, estimate: float, settings: CouplingSettings,

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["J2Material", "StressUpdate", "radial_return", "von_mises"]
+__all__ = ["J2Material", "StressUpdate", "plastic_work", "radial_return", "von_mises"]
 
 _ONE = np.array([1.0, 1.0, 1.0, 0.0])
 _P_VOL = np.outer(_ONE, _ONE) / 3.0
@@ -115,3 +115,15 @@ def radial_return(
         - 2.0 * G * theta_bar[:, None, None] * ny[:, :, None] * ny[:, None, :]
     )
     return StressUpdate(stress, new_plastic, new_alpha, yielding, ratio, tangent)
+
+
+def plastic_work(material: J2Material, weight: np.ndarray, alpha_before: np.ndarray, alpha_after: np.ndarray) -> float:
+    r"""Plastic work (J) dissipated between two states: :math:`\int \int_{\bar\alpha_0}^{\bar\alpha_1} (Y + H\bar\alpha)
+    \,d\bar\alpha\,dV = \sum_q w_q \left[Y \Delta\bar\alpha + \tfrac{H}{2}\Delta(\bar\alpha^2)\right]` (J2 with
+    linear hardening: the dissipation rate σ : ε̇_p is σ_y(ᾱ) ᾱ̇). ``weight`` (m³) and the equivalent plastic strains
+    are per quadrature point; 0 for an elastic material."""
+    if material.yield_strength is None:
+        return 0.0
+    a0, a1 = np.asarray(alpha_before, float), np.asarray(alpha_after, float)
+    density = material.yield_strength * (a1 - a0) + 0.5 * material.hardening * (a1**2 - a0**2)
+    return float(np.sum(weight * density))

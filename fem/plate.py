@@ -36,6 +36,7 @@ from contact.checks import check_array, check_number
 from contact.materials import Material
 from contact.theory import first_yield as hertz_first_yield
 from fem.indent import _plate_model, _Run, check_small_strain, plate_mesh, state_mesh
+from fem.plasticity import plastic_work
 from fem.result import IndentationResult, join
 from fem.solver import PlateSolver, PlateState
 
@@ -120,6 +121,11 @@ class Plate:
         if not self._virgin or m.yield_strength is None:
             return None
         return hertz_first_yield(self.radius, self.effective_modulus, m.yield_strength, m.nu).overlap
+
+    def plastic_work(self, since: PlateState) -> float:
+        """Plastic work (J) the plate dissipated from the state ``since`` to its current state
+        (:func:`fem.plasticity.plastic_work`)."""
+        return plastic_work(self.material, self.solver.disc.weight, since.alpha, self.state.alpha)
 
     def first_contact_overlap(self) -> float:
         """Overlap δ (m, sphere tip below the original plane) at which the sphere first touches the current

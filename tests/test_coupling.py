@@ -83,7 +83,11 @@ class ClosedFormPlate:
 
     def __init__(self, radius, e_star, p_y=None):
         self.effective_modulus = e_star
+        self.state = None  # no field: the closed forms carry no plastic strain
         self._indent = closed_form_indent(radius, e_star, p_y)
+
+    def plastic_work(self, since) -> float:
+        return 0.0
 
     def first_contact_overlap(self) -> float:
         return 0.0

@@ -85,7 +85,7 @@ def test_erode_angles_writes_erosion_vs_angle(tmp_path):
         (["--set", "wear.K=-1.0"], "wear.K=-1 is out of range"),
         (["--set", "wear.pressure='fe'"], "wear.pressure='fe' is not a valid choice"),
         (["--angles", "0,95"], "angle=95 is out of range"),
-        (["--set", "erosion.deformation_wear=true"], "deformation_wear_factor=None"),
+        (["--set", "wear.law='combined'"], "wear.deformation_factor=None"),
     ],
 )
 def test_erode_bad_input_is_one_line(tmp_path, capsys, extra, message):

@@ -12,11 +12,11 @@ import sys
 from importlib.metadata import PackageNotFoundError, version
 
 from fem import ConvergenceError
-from wear.app.commands import erode, impact, indent, repeat, reproduce, run, sweep, validate
+from wear.app.commands import calibrate, erode, impact, indent, repeat, reproduce, run, sweep, validate
 
 #: name → command module, in the order of ``impactwear --help``.
-COMMANDS = {"run": run, "impact": impact, "indent": indent, "repeat": repeat, "erode": erode, "sweep": sweep,
-            "reproduce": reproduce, "validate": validate}  # fmt: skip
+COMMANDS = {"run": run, "impact": impact, "indent": indent, "repeat": repeat, "erode": erode,
+            "calibrate": calibrate, "sweep": sweep, "reproduce": reproduce, "validate": validate}  # fmt: skip
 
 
 def build_parser() -> argparse.ArgumentParser:

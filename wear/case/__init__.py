@@ -18,6 +18,7 @@ from wear.case.tables import (
     COUPLINGS,
     TABLES,
     BallSpec,
+    CalibrationSpec,
     Case,
     ErosionSpec,
     FemSpec,
@@ -27,13 +28,24 @@ from wear.case.tables import (
     RepeatSpec,
     WearSpec,
 )
-from wear.case.toml import apply_override, dump_case, key_reference, load_case, parse_case, toml_value
+from wear.case.toml import (
+    apply_override,
+    dump_case,
+    key_reference,
+    load_case,
+    override_tables,
+    parse_case,
+    toml_value,
+)
+from wear.laws import LAWS
 
 __all__ = [
     "COUPLINGS",
     "JOBS",
+    "LAWS",
     "TABLES",
     "BallSpec",
+    "CalibrationSpec",
     "Case",
     "ErosionSpec",
     "FemSpec",
@@ -51,6 +63,7 @@ __all__ = [
     "key",
     "key_reference",
     "load_case",
+    "override_tables",
     "parse_case",
     "toml_value",
 ]

@@ -24,6 +24,17 @@ KHARAZ_2001 = {
 }
 
 
+#: Silica sand on a plain carbon steel (the assumptions of examples/fig10_stream.toml), elastic–plastic impacts on
+#: Thornton's law and pressure without the FE plate: the erosion setting of the calibration.
+SAND_ON_STEEL = {
+    "ball": {"radius": 150e-6, "E": 94e9, "nu": 0.17, "density": 2650.0, "name": "silica sand"},
+    "plate": {"E": 200e9, "nu": 0.3, "density": 7850.0, "yield_strength": 350e6, "name": "carbon steel"},
+    "impact": {"speed": 20.0, "friction": 0.3, "normal_model": "thornton"},
+    "wear": {"pressure": "thornton"},
+    "fem": {"coupling": "none"},
+}
+
+
 @dataclass(frozen=True)
 class Job:
     """A job: ``name`` (its command), the ``tables`` it reads (what ``--print-default`` prints and
@@ -58,6 +69,8 @@ JOBS: dict[str, Job] = {
                 "plate": {"E": 210e9, "nu": 0.3, "density": 7850.0, "yield_strength": 210e6, "name": "steel"},
                 "fem": {"load_steps": 40, "unload_steps": 20, "mesh_scale": 1.0},
             }),
+        Job("calibrate", ("ball", "plate", "impact", "wear", "fem", "calibration"), "silica sand (R 150 µm) on a "
+            "carbon steel (Y 350 MPa) at 20 m/s, Thornton's normal law and pressure, no FE", SAND_ON_STEEL),
         Job("erode", ("ball", "plate", "impact", "wear", "erosion"), "a stream of the Kharaz (2001) alumina balls on "
             "soda-lime glass at 3.9 m/s, 30° from the normal, 0.464 kg/m³ for 52 min, Eq. 15 on the Hertz pressure",
             {**KHARAZ_2001, "wear": {"pressure": "hertz"}}),

@@ -1,12 +1,12 @@
 """The case: every table and key, defined once (type, units, default, valid range, one-line doc).
 
 A :class:`Case` holds the tables ``[ball]``, ``[plate]``, ``[impact]``, ``[wear]``, ``[fem]``, ``[output]``,
-``[erosion]`` and ``[repeat]``; each job reads the tables it needs (:mod:`wear.case.jobs`). The defaults below are
-those of the main job, ``impactwear run``: a hard alumina ball (R 2.5 mm) hitting a Ti-6Al-4V plate at 3 m/s, 30°
-from the normal, μ 0.3 — about 12 times Thornton's yield speed in the normal direction, so first yield is far
-exceeded and the plastic zone reaches the surface — on the FE plate's own force law (two-way coupling), with the
-paper's wear law (Eq. 15, α = 1, β = 0.3, K = 1e-11 m^0.7 s^-0.7 Pa^-1). SI units; angles in degrees from the plate
-normal.
+``[erosion]``, ``[repeat]`` and ``[calibration]``; each job reads the tables it needs (:mod:`wear.case.jobs`). The
+defaults below are those of the main job, ``impactwear run``: a hard alumina ball (R 2.5 mm) hitting a Ti-6Al-4V
+plate at 3 m/s, 30° from the normal, μ 0.3 — about 12 times Thornton's yield speed in the normal direction, so first
+yield is far exceeded and the plastic zone reaches the surface — on the FE plate's own force law (two-way coupling),
+with the paper's wear law (Eq. 15, α = 1, β = 0.3, K = 1e-11 m^0.7 s^-0.7 Pa^-1). SI units; angles in degrees from
+the plate normal.
 """
 
 from __future__ import annotations
@@ -18,9 +18,11 @@ from typing import Any, ClassVar
 from contact import Material
 from wear.case.schema import Table, key
 from wear.law import WearLaw
+from wear.laws import CUTTING_LAWS, LAWS
 from wear.pressure import PRESSURE_SOURCES, SPEED_MODELS
 
 __all__ = ["BallSpec", "PlateSpec", "ImpactSpec", "WearSpec", "FemSpec", "OutputSpec", "ErosionSpec", "RepeatSpec",
+           "CalibrationSpec",
            "Case", "COUPLINGS", "NORMAL_MODELS", "TANGENTIAL_MODELS", "SCHEMES"]  # fmt: skip
 
 COUPLINGS = ("two-way", "one-way", "none")
@@ -73,6 +75,8 @@ class PlateSpec(_MaterialTable):
     nu: float = key(float, 0.34, "Poisson's ratio", **_NU)
     density: float = key(float, 4430.0, "density", "kg/m^3", **_DENSITY)
     yield_strength: float | None = key(float, 8.8e8, "yield strength", "Pa", **_YIELD)
+    hardness: float | None = key(float, None, "hardness: plastic flow pressure (Finnie) and Vickers hardness (Oka)",
+                                 "Pa", low=1e6, high=1e11, optional=True, absent="3 x yield strength")  # fmt: skip
     name: str = key(str, "Ti-6Al-4V", "label of the plate material")
 
     def material(self) -> Material:
@@ -104,11 +108,15 @@ class ImpactSpec(Table):
 
 @dataclass(frozen=True)
 class WearSpec(Table):
-    """The wear law (errata Eq. 15, dw/dt = K p^α v^β): ``K`` (m^(1−β) s^(β−1) Pa^(−α)), ``alpha``, ``beta``;
-    ``pressure`` source along the impact; sliding ``speed`` model; ``points_across`` grid points across the largest
-    contact diameter."""
+    """The wear law (:mod:`wear.laws`): ``law`` by name; the local law (errata Eq. 15, dw/dt = K p^α v^β): ``K``
+    (m^(1−β) s^(β−1) Pa^(−α)), ``alpha``, ``beta``, the ``pressure`` source along the impact, the sliding ``speed``
+    model, ``points_across`` grid points across the largest contact diameter; Finnie's cutting: ``cutting_fraction``,
+    ``force_ratio``, ``depth_ratio`` (and the plate's ``hardness``); Bitter's deformation wear:
+    ``deformation_factor`` ε (J/m³); ``combined``: the ``cutting`` law plus deformation; the correlations: ``oka_e90``,
+    ``oka_k2``, ``dnv_K``, ``dnv_n``."""
 
     table: ClassVar[str] = "wear"
+    law: str = key(str, "local", "wear law (wear.laws)", choices=tuple(LAWS))
     K: float = key(float, 1e-11, "wear coefficient of Eq. 15", "m^(1-beta) s^(beta-1) Pa^(-alpha)", low=0.0,
                    high=1e-3)  # fmt: skip
     alpha: float = key(float, 1.0, "pressure exponent of Eq. 15", low=0.0, high=4.0)
@@ -116,12 +124,31 @@ class WearSpec(Table):
     pressure: str = key(str, "fe", "contact pressure source", choices=PRESSURE_SOURCES)
     speed: str = key(str, "sliding", "sliding speed of the contact points", choices=SPEED_MODELS)
     points_across: int = key(int, 64, "wear grid points across the largest contact diameter", low=40, high=2000)
+    cutting: str = key(str, "local", "the cutting law of the combined law", choices=CUTTING_LAWS)
+    cutting_fraction: float = key(float, 0.5, "Finnie's fraction of particles cutting ideally, c", low=0.0,
+                                  low_open=True, high=10.0)  # fmt: skip
+    force_ratio: float = key(float, 2.0, "Finnie's ratio of vertical to horizontal force on the particle, K", low=0.1,
+                             high=20.0)  # fmt: skip
+    depth_ratio: float = key(float, 2.0, "Finnie's ratio of contact depth to cut depth, psi", low=0.1, high=20.0)
+    deformation_factor: float | None = key(float, None, "Bitter's deformation wear factor epsilon", "J/m^3", low=1e3,
+                                           high=1e15, optional=True,
+                                           absent="none: the deformation and combined laws need it")  # fmt: skip
+    oka_e90: float = key(float, 6.154e-4, "Oka's erosion ratio at normal incidence, 104 m/s, 326 um", "kg/kg",
+                         low=0.0, low_open=True, high=1.0)  # fmt: skip
+    oka_k2: float | None = key(float, None, "Oka's speed exponent", low=0.5, high=5.0, optional=True,
+                               absent="2.3 Hv^0.038")  # fmt: skip
+    dnv_K: float = key(float, 2e-9, "DNV-RP-O501 material constant K", "(kg/kg) (m/s)^-n", low=0.0, low_open=True,
+                       high=1.0)  # fmt: skip
+    dnv_n: float = key(float, 2.6, "DNV-RP-O501 speed exponent n", low=0.5, high=5.0)
 
     def check(self) -> None:
-        self.law()
+        self.wear_law()
+        if self.law in ("deformation", "combined") and self.deformation_factor is None:
+            raise ValueError(f"wear.deformation_factor=None: wear.law={self.law!r} needs Bitter's deformation wear "
+                             "factor epsilon (J/m^3)")  # fmt: skip
 
-    def law(self) -> WearLaw:
-        """The :class:`wear.WearLaw` of this table."""
+    def wear_law(self) -> WearLaw:
+        """The local law's :class:`wear.WearLaw` (Eq. 15) of this table."""
         try:
             return WearLaw(K=self.K, alpha=self.alpha, beta=self.beta)
         except ValueError as exc:
@@ -166,8 +193,8 @@ class OutputSpec(Table):
 @dataclass(frozen=True)
 class ErosionSpec(Table):
     """A particle stream eroding a periodic plate patch (the particle is ``[ball]``, its speed, angle and contact
-    models ``[impact]``, the wear law ``[wear]``): concentration or mass flux, exposure, azimuth, Bitter's deformation
-    wear, the patch, the response table's resolution, the seed and the outputs' sampling."""
+    models ``[impact]``, the wear law ``[wear]``): concentration or mass flux, exposure, azimuth, the patch, the
+    response table's resolution, the seed and the outputs' sampling."""
 
     table: ClassVar[str] = "erosion"
     concentration: float = key(float, 0.464, "particle mass concentration of the stream", "kg/m^3", low=0.0,
@@ -177,11 +204,6 @@ class ErosionSpec(Table):
     exposure_time: float = key(float, 3120.0, "exposure time", "s", low=0.0, low_open=True, high=1e10)
     azimuth: float = key(float, 0.0, "stream direction in the patch, from the grid x axis", "deg", low=-360.0,
                          high=360.0)  # fmt: skip
-    deformation_wear: bool = key(bool, False, "add Bitter's (1963) deformation wear")
-    deformation_wear_factor: float | None = key(float, None, "Bitter's deformation wear factor epsilon", "J/m^3",
-                                                low=1e3, high=1e15, optional=True, absent="none")  # fmt: skip
-    deformation_threshold: float | None = key(float, None, "elastic-limit normal speed", "m/s", low=0.0, high=1000.0,
-                                              optional=True, absent="Bitter's formula")  # fmt: skip
     grid: int = key(int, 512, "grid nodes per side of the patch", low=16, high=8192)
     patch_size: float | None = key(float, None, "side of the periodic patch", "m", low=0.0, low_open=True, high=10.0,
                                    optional=True, absent="grid x contact radius / 4")  # fmt: skip
@@ -222,9 +244,24 @@ class RepeatSpec(Table):
                                         "elastic response unless its elastic field yields")  # fmt: skip
 
 
+@dataclass(frozen=True)
+class CalibrationSpec(Table):
+    """A calibration of the wear law (:mod:`wear.chain.calibrate`): the ``data`` file (CSV of measurements) and the
+    ``free`` constants (comma-separated; "" = the law's scale constant)."""
+
+    table: ClassVar[str] = "calibration"
+    data: str = key(str, "", "CSV of measured wear: angle_deg, speed_m_s, one measured quantity, optional case keys")
+    free: str = key(str, "", 'the constants to fit, comma-separated ("": the law\'s scale constant)')
+
+    def free_constants(self) -> tuple[str, ...]:
+        """The free constants' names."""
+        return tuple(n.strip() for n in self.free.split(",") if n.strip())
+
+
 #: The case tables, in order: TOML name → table class.
 TABLES: dict[str, type[Table]] = {
-    t.table: t for t in (BallSpec, PlateSpec, ImpactSpec, WearSpec, FemSpec, OutputSpec, ErosionSpec, RepeatSpec)
+    t.table: t
+    for t in (BallSpec, PlateSpec, ImpactSpec, WearSpec, FemSpec, OutputSpec, ErosionSpec, RepeatSpec, CalibrationSpec)
 }
 
 
@@ -245,6 +282,7 @@ class Case:
     output: OutputSpec = field(default_factory=OutputSpec)
     erosion: ErosionSpec = field(default_factory=ErosionSpec)
     repeat: RepeatSpec = field(default_factory=RepeatSpec)
+    calibration: CalibrationSpec = field(default_factory=CalibrationSpec)
 
     def __post_init__(self) -> None:
         for f in fields(self):

@@ -24,7 +24,7 @@ if sys.version_info >= (3, 11):
 else:  # Python 3.10
     import tomli as tomllib
 
-__all__ = ["parse_case", "load_case", "dump_case", "apply_override", "key_reference", "toml_value"]
+__all__ = ["parse_case", "load_case", "dump_case", "apply_override", "override_tables", "key_reference", "toml_value"]
 
 
 def parse_case(text: str, job: str = "run", source: str = "case", name: str = "case") -> Case:
@@ -96,20 +96,26 @@ def dump_case(case: Case, tables: tuple[str, ...] | None = None, comments: bool 
     return "\n".join(lines)
 
 
+def override_tables(items: list[str]) -> dict[str, dict[str, Any]]:
+    """Command-line ``--set TABLE.KEY=VALUE`` items as tables of values (later items win). VALUE is read as TOML
+    (``3.9``, ``true``, ``"x"``); a bare word that is not TOML is taken as a string (``impact.normal_model=hertz``)."""
+    tables: dict[str, dict[str, Any]] = {}
+    for item in items:
+        dotted, sep, text = item.partition("=")
+        table, dot, name = dotted.strip().partition(".")
+        if not sep or not dot:
+            raise ValueError(f"--set {item!r} is not TABLE.KEY=VALUE")
+        try:
+            value = tomllib.loads(f"v = {text}")["v"]
+        except tomllib.TOMLDecodeError:
+            value = text
+        tables.setdefault(table, {})[name] = value
+    return tables
+
+
 def apply_override(case: Case, item: str) -> Case:
-    """``case`` with one command-line ``--set TABLE.KEY=VALUE`` applied. VALUE is read as TOML (``3.9``, ``true``,
-    ``"x"``); a bare word that is not TOML is taken as a string (``--set impact.normal_model=thornton``)."""
-    dotted, sep, text = item.partition("=")
-    if not sep:
-        raise ValueError(f"--set {item!r} is not TABLE.KEY=VALUE")
-    try:
-        value = tomllib.loads(f"v = {text}")["v"]
-    except tomllib.TOMLDecodeError:
-        value = text
-    table, dot, name = dotted.strip().partition(".")
-    if not dot:
-        raise ValueError(f"--set {item!r} is not TABLE.KEY=VALUE")
-    return Case.from_dict({table: {name: value}}, base=case)
+    """``case`` with one command-line ``--set TABLE.KEY=VALUE`` applied (:func:`override_tables`)."""
+    return Case.from_dict(override_tables([item]), base=case)
 
 
 def key_reference() -> str:

@@ -129,7 +129,7 @@ def impact_on_plate(case: Case, fe_plate: fem.Plate, estimate: float, axis_x: fl
         coupled = fem.couple_elastic(*args, yield_tolerance)
         if coupled is None:
             return None
-    wm = impact_wear(case, coupled.impact, coupled.pressure_table)[1]
+    wm = impact_wear(case, coupled.impact, coupled.pressure_table, coupled.plastic_work)[1]
     # the ball flies d0·V_t/V_n along x before it touches the dented surface: same spot, shifted first contact
     v_n = case.impact.speed * math.cos(math.radians(case.impact.angle))
     v_t = case.impact.speed * math.sin(math.radians(case.impact.angle))

@@ -35,11 +35,21 @@ from contact.theory import PAPER_YIELD_COEFFICIENT, first_yield, yield_velocity
 from fem import CoupledImpact, IndentationResult, PlateCycle, worst_regime
 from wear.case import JOBS, Case
 from wear.chain.plate import case_mesh, case_plate, coupling_settings, impact_on_law
-from wear.integrate import WearMap, integrate_wear
+from wear.integrate import WearMap
+from wear.laws import LAWS, ImpactWear, wear_of_impact
 from wear.pressure import PressureHistory, pressure_history, sliding_speed
 from wear.surface import DeformedSurface
 
-__all__ = ["RunResult", "run", "estimate_impact", "impact_wear", "speed_ratio", "STAGES"]
+__all__ = [
+    "RunResult",
+    "run",
+    "estimate_arguments",
+    "estimate_impact",
+    "impact_wear",
+    "wear_constants",
+    "speed_ratio",
+    "STAGES",
+]
 
 #: Stages of :func:`run`, in order (the output writer adds "meshes" and "figures").
 STAGES = ("impact", "fem", "coupling", "wear", "surface")
@@ -52,7 +62,8 @@ class RunResult:
     ``estimate`` (the impact on the case's own normal model), ``impact`` (:class:`contact.ImpactResult`, the final
     impact: coupled if two-way), ``fe`` (the plate's :class:`fem.PlateCycle` (two-way), its
     :class:`fem.IndentationResult` (one-way) or None), ``coupling`` (:class:`fem.CoupledImpact` or None),
-    ``pressure`` (:class:`wear.PressureHistory`), ``wear`` (:class:`wear.WearMap`), ``surface``
+    ``pressure`` (:class:`wear.PressureHistory`), ``wear`` (:class:`wear.WearMap`), ``worn`` (the wear law's volumes
+    by mechanism, :class:`wear.laws.ImpactWear`), ``surface``
     (:class:`wear.surface.DeformedSurface`), ``yield_info`` (dict: ``F_y_paper`` Eq. 18 with C = 1.6, ``F_c_exact``
     with C(ν), ``fe_first_yield_force``, ``V_y`` Thornton's yield speed, N and m/s), ``regime`` (str),
     ``stage_times`` (dict stage → s).
@@ -65,6 +76,7 @@ class RunResult:
     coupling: CoupledImpact | None
     pressure: PressureHistory
     wear: WearMap
+    worn: ImpactWear
     surface: DeformedSurface
     yield_info: dict[str, float | None]
     regime: str
@@ -96,8 +108,11 @@ class RunResult:
                 "max_depth_m": w.max_depth_m,
                 "scar_length_m": w.scar_length_m,
                 "scar_width_m": w.scar_width_m,
-                "law": str(self.case.wear.law()),
+                "law": str(self.case.wear.wear_law())
+                if self.worn.law == "local"
+                else f"{self.worn.law}: {LAWS[self.worn.law]}",
                 "pressure_source": self.pressure.source,
+                "parts_m3": dict(self.worn.parts),
             },
             "dent": {
                 "max_depth_m": self.surface.max_dent_depth,
@@ -129,24 +144,38 @@ def _regime(impact: ImpactResult, info: dict, fe: PlateCycle | IndentationResult
     return "elastic" if impact.max_force < info["F_c_exact"] else "plastic (no FE: regime not resolved)"
 
 
-def estimate_impact(case: Case, **overrides) -> ImpactResult:
-    """The impact of ``case`` on its own normal model (``impact.normal_model``; Thornton's law is Hertz's when
-    nothing yields), with its histories: the impact of an uncoupled run and the first estimate of a coupled one."""
-    args = case.impact_arguments(history=True)
+def estimate_arguments(case: Case, **overrides) -> dict:
+    """:func:`contact.simulate_impact`'s arguments for the case's impact on its own normal model
+    (``impact.normal_model``; Thornton's law is Hertz's when nothing yields), ``overrides`` replacing some."""
+    args = case.impact_arguments()
     if args["normal_model"] == "thornton" and not args["plate"].yield_strength and not args["ball"].yield_strength:
         args["normal_model"] = "hertz"  # nothing yields: Thornton's law is Hertz
     args.update(overrides)
-    return simulate_impact(**args)
+    return args
 
 
-def impact_wear(case: Case, impact: ImpactResult, fe_table=None) -> tuple[PressureHistory, WearMap]:
+def estimate_impact(case: Case, **overrides) -> ImpactResult:
+    """The impact of ``case`` on its own normal model, with its histories (:func:`estimate_arguments`): the impact
+    of an uncoupled run and the first estimate of a coupled one."""
+    return simulate_impact(**estimate_arguments(case, history=True, **overrides))
+
+
+def wear_constants(case: Case) -> dict[str, float | str | None]:
+    """The constants of the case's wear law (:mod:`wear.laws`): the ``[wear]`` table and the plate's hardness."""
+    return {**case.wear.values(), "hardness": case.plate.hardness}
+
+
+def impact_wear(case: Case, impact: ImpactResult, fe_table=None,
+                plate_work: float | None = None) -> tuple[PressureHistory, WearMap, ImpactWear]:  # fmt: skip
     """Stage ``wear``: the pressure history p(r, t) of ``impact`` (``case.wear.pressure``; ``fe_table`` the FE
-    (time s, r m, pressure Pa) table where it is "fe") and the wear map of Eq. 15 integrated over the moving
-    patch (m)."""
-    ph = pressure_history(impact, case.wear.pressure, fe=fe_table, limiting_pressure=case.impact.limiting_pressure)
-    wm = integrate_wear(ph, sliding_speed(impact, case.wear.speed), case.wear.law(),
-                        density=case.plate.material().density, points_across=case.wear.points_across)  # fmt: skip
-    return ph, wm
+    (time s, r m, pressure Pa) table where it is "fe"), the wear map (m) and the worn volumes of the case's wear law
+    (:func:`wear.laws.wear_of_impact`; ``plate_work`` the FE plate's plastic dissipation, J)."""
+    w = case.wear
+    ph = pressure_history(impact, w.pressure, fe=fe_table, limiting_pressure=case.impact.limiting_pressure)
+    wm, worn = wear_of_impact(w.law, wear_constants(case), w.wear_law(), impact, ph, sliding_speed(impact, w.speed),
+                              density=case.plate.material().density, points_across=w.points_across,
+                              plate_work=plate_work)  # fmt: skip
+    return ph, wm, worn
 
 
 def one_way(case: Case, impact: ImpactResult) -> IndentationResult:
@@ -192,7 +221,8 @@ def run(case: Case, progress: Callable[[str], None] | None = None) -> RunResult:
         rows = fem.contact_pressure(fe.pressure, fe.surface_r, fe.contact_radius)
         fe_table = (np.asarray(fe.time, float), np.asarray(fe.surface_r, float), rows)
 
-    ph, wm = timed("wear", impact_wear, case, impact, fe_table)
+    plate_work = None if coupled is None else coupled.plastic_work
+    ph, wm, worn = timed("wear", impact_wear, case, impact, fe_table, plate_work)
 
     def surface_stage() -> DeformedSurface:
         h = impact.history
@@ -207,7 +237,7 @@ def run(case: Case, progress: Callable[[str], None] | None = None) -> RunResult:
     surface = timed("surface", surface_stage)
     info = _yield_info(case, ball, plate, fe)
     return RunResult(case=case, estimate=estimate, impact=impact, fe=fe, coupling=coupled, pressure=ph, wear=wm,
-                     surface=surface, yield_info=info, regime=_regime(impact, info, fe),
+                     worn=worn, surface=surface, yield_info=info, regime=_regime(impact, info, fe),
                      stage_times=times)  # fmt: skip
 
 

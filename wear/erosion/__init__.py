@@ -4,7 +4,7 @@ eroded patch (:mod:`wear.erosion.patch`, with the stamping kernels of :mod:`wear
 a case (:mod:`wear.erosion.run`). SI units, angles in degrees from the plate normal."""
 
 from wear.erosion.patch import ErosionResult, erode, footprint_on_grid
-from wear.erosion.response import Footprint, ImpactResponse, bitter_threshold_velocity, bitter_volume
+from wear.erosion.response import Footprint, ImpactResponse
 from wear.erosion.run import ErosionRun, erode_angles, erode_case, nominal_contact_radius
 from wear.erosion.stream import Stream, impacts_on_patch
 from wear.erosion.table import ResponseTable, build_response_table, table_axes
@@ -16,8 +16,6 @@ __all__ = [
     "ImpactResponse",
     "ResponseTable",
     "Stream",
-    "bitter_threshold_velocity",
-    "bitter_volume",
     "build_response_table",
     "erode",
     "erode_angles",

@@ -87,13 +87,12 @@ def _response(case: Case) -> ImpactResponse:
     ball = case.ball.material()
     if math.isinf(ball.density):
         raise ValueError("ball.density=inf: the particle needs a finite density (kg/m^3)")
-    imp, ero = case.impact, case.erosion
+    imp, w = case.impact, case.wear
     return ImpactResponse(radius=case.ball.radius, ball=ball, plate=case.plate.material(), friction=imp.friction,
-                          law=case.wear.law(), pressure=case.wear.pressure, speed_model=case.wear.speed,
-                          restitution=imp.restitution, normal_model=imp.normal_model,
-                          tangential_model=imp.tangential_model, points_across=case.wear.points_across,
-                          deformation_wear=ero.deformation_wear, deformation_wear_factor=ero.deformation_wear_factor,
-                          deformation_threshold=ero.deformation_threshold)  # fmt: skip
+                          law=w.wear_law(), pressure=w.pressure, speed_model=w.speed, restitution=imp.restitution,
+                          normal_model=imp.normal_model, tangential_model=imp.tangential_model,
+                          points_across=w.points_across, wear_law=w.law,
+                          constants={**w.values(), "hardness": case.plate.hardness})  # fmt: skip
 
 
 def _stream(case: Case, theta: float) -> Stream:

@@ -30,7 +30,8 @@ class ResponseTable:
     ``normal_speed`` (ns,) m/s and ``angle`` (na,) deg: the table axes (increasing). ``u`` (nu,), ``v`` (nv,):
     normalised coordinates (units of L) along and across the tangential direction. ``shape`` (ns, na, nv, nu)
     (1/L² units: Σ shape Δu Δv = 1, or all 0 for an entry that does not wear); ``volume_m3`` (ns, na) worn
-    volume; ``sliding_volume_m3``, ``deformation_volume_m3`` its parts; ``length_scale`` (ns, na) L (m);
+    volume; ``cutting_volume_m3`` (all but Bitter's), ``deformation_volume_m3`` (Bitter's) its parts;
+    ``length_scale`` (ns, na) L (m);
     ``dent`` (ns, na, nv, nu) dent depth / L or None. ``particle_radius`` (m), ``particle_mass`` (kg),
     ``plate_density`` (kg/m³) for the stream; ``description`` says which model built it.
     """
@@ -41,7 +42,7 @@ class ResponseTable:
     v: np.ndarray
     shape: np.ndarray
     volume_m3: np.ndarray
-    sliding_volume_m3: np.ndarray
+    cutting_volume_m3: np.ndarray
     deformation_volume_m3: np.ndarray
     length_scale: np.ndarray
     particle_radius: float
@@ -61,13 +62,13 @@ class ResponseTable:
         )
 
     def rows(self) -> list[tuple[float, ...]]:
-        """(normal_speed m/s, angle deg, volume m³, sliding m³, deformation m³, L m) per entry, for a CSV."""
+        """(normal_speed m/s, angle deg, volume m³, cutting m³, deformation m³, L m) per entry, for a CSV."""
         return [
             (
                 float(self.normal_speed[i]),
                 float(self.angle[j]),
                 float(self.volume_m3[i, j]),
-                float(self.sliding_volume_m3[i, j]),
+                float(self.cutting_volume_m3[i, j]),
                 float(self.deformation_volume_m3[i, j]),
                 float(self.length_scale[i, j]),
             )
@@ -177,13 +178,13 @@ def build_response_table(
     shape = np.zeros((vn.size, theta.size, v.size, u.size))
     dent = np.zeros_like(shape) if has_dent else None
     length = np.zeros((vn.size, theta.size))
-    sliding = np.zeros_like(length)
+    cutting = np.zeros_like(length)
     deform = np.zeros_like(length)
     for k, p in enumerate(prints):
         i, j = divmod(k, theta.size)
         L = check_number("length_scale", p.length_scale, low=0.0, low_open=True, units="m")
         length[i, j] = L
-        sliding[i, j] = p.sliding_volume_m3
+        cutting[i, j] = p.cutting_volume_m3
         deform[i, j] = p.deformation_volume_m3
         pts = np.column_stack([(vv * L).ravel(), (uu * L).ravel()])
         resample = RegularGridInterpolator((p.y, p.x), p.wear, bounds_error=False, fill_value=0.0)
@@ -200,8 +201,8 @@ def build_response_table(
         u=u,
         v=v,
         shape=shape,
-        volume_m3=sliding + deform,
-        sliding_volume_m3=sliding,
+        volume_m3=cutting + deform,
+        cutting_volume_m3=cutting,
         deformation_volume_m3=deform,
         length_scale=length,
         particle_radius=float(particle_radius),

@@ -13,7 +13,7 @@ from contextlib import contextmanager
 from tqdm import tqdm
 
 from wear.app.outputs.writer import to_jsonable
-from wear.case import JOBS, Case, apply_override, dump_case, load_case
+from wear.case import JOBS, Case, dump_case, load_case, override_tables
 
 __all__ = ["add_case_options", "case_from_args", "collect_notes", "print_default", "print_json", "print_notes",
            "progress_bar", "show_progress"]  # fmt: skip
@@ -39,11 +39,12 @@ def add_case_options(parser: argparse.ArgumentParser, job: str, *, flag: bool = 
 def case_from_args(args: argparse.Namespace, job: str,
                    options: dict[str, dict[str, object]] | None = None) -> Case:  # fmt: skip
     """The checked case of a command: the case file (or ``job``'s default case), then the command's own ``options``
-    (tables of values), then each ``--set``."""
-    case = load_case(args.case, job, args.case_option).with_(**(options or {}))
-    for item in args.overrides:
-        case = apply_override(case, item)
-    return case
+    (tables of values), then each ``--set`` — all laid on at once, so keys that depend on each other may be given
+    by different options."""
+    tables = {t: dict(v) for t, v in (options or {}).items()}
+    for table, values in override_tables(args.overrides).items():
+        tables.setdefault(table, {}).update(values)
+    return load_case(args.case, job, args.case_option).with_(**tables)
 
 
 def print_default(job: str) -> int:

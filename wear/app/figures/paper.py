@@ -29,6 +29,7 @@ __all__ = [
     "plot_pressure_regimes",
     "plot_regime_map",
     "plot_restitution",
+    "plot_wear_laws",
 ]
 
 DPI = 100
@@ -243,4 +244,33 @@ def plot_restitution(ratio, e_fe, ratio_curve, e_thornton, path, source: str, no
     ax2.set_ylabel("$e_{FE}/e_{Thornton} - 1$ (%)")
     ax2.grid(alpha=0.3, which="both")
     fig.subplots_adjust(bottom=0.16, wspace=0.3)
+    return save_sourced(fig, path, source)
+
+
+def plot_wear_laws(curves: list[dict], data_angle, data_rate, speeds, path, source: str) -> Path:
+    """Erosion ratio (kg/kg) against the angle from the surface at the calibration speed, and against the speed at
+    30° from the surface, for each law (``curves``: label, angles deg from the surface, rate, speeds m/s,
+    rate_vs_speed; ``reference``: drawn in black), with the data they were calibrated to (markers)."""
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(11, 5.6))
+    styles = iter(("--", ":", "-."))
+    for k, c in enumerate(curves):
+        style, colour = (next(styles), "k") if c.get("reference") else ("-", COLORS[k % len(COLORS)])
+        ax.semilogy(c["angles"], np.where(np.asarray(c["rate"]) > 0, c["rate"], np.nan), style, color=colour,
+                    lw=1.3, label=c["label"])  # fmt: skip
+        ax2.loglog(c["speeds"], c["rate_vs_speed"], style, color=colour, lw=1.3)
+    ax.plot(data_angle, data_rate, "ko", ms=4, label="calibration data (Oka et al. 2005 curve, 50 m/s)")
+    top = max(np.nanmax(c["rate"]) for c in curves)
+    ax.set_ylim(top * 1e-3, top * 2)
+    ax.set_xlabel("impact angle from the surface (deg)")
+    ax.set_ylabel("erosion ratio (kg/kg)")
+    ax.set_title("at 50 m/s (the calibration speed)", fontsize=9)
+    ax.grid(alpha=0.3, which="both")
+    ax2.set_xlabel("impact speed (m/s)")
+    ax2.set_title("at 30° from the surface (grey lines: the calibration speeds)", fontsize=9)
+    ax2.grid(alpha=0.3, which="both")
+    for s in speeds:
+        ax2.axvline(s, color="0.7", lw=0.8)
+    fig.legend(*ax.get_legend_handles_labels(), loc="lower center", bbox_to_anchor=(0.5, 0.05), ncol=3, fontsize=7,
+               frameon=False)  # fmt: skip
+    fig.subplots_adjust(bottom=0.34, wspace=0.25, top=0.93)
     return save_sourced(fig, path, source)

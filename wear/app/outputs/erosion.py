@@ -29,7 +29,7 @@ __all__ = ["write_erosion", "write_erosion_angles", "surface_grid_mesh", "EROSIO
 
 EROSION_COLUMNS = ["time_s", "impacts", "particle_mass_kg", "mass_loss_kg", "mass_loss_per_area_kg_m2", "erosion_rate",
                    "interval_erosion_rate", "max_depth_m", "rms_slope"]  # fmt: skip
-TABLE_COLUMNS = ["normal_speed_m_s", "angle_deg", "volume_m3", "sliding_volume_m3", "deformation_volume_m3",
+TABLE_COLUMNS = ["normal_speed_m_s", "angle_deg", "volume_m3", "cutting_volume_m3", "deformation_volume_m3",
                  "contact_radius_m"]  # fmt: skip
 
 

@@ -119,7 +119,7 @@ def _plate_fe(result: RunResult) -> meshio.Mesh:
     if result.case.impact.angle == 0.0:
         undeformed_r = pts[:, 0] - u[:, 0]
         h = axisymmetric_wear_depth(result.pressure, sliding_speed(result.impact, result.case.wear.speed),
-                                    result.case.wear.law(), undeformed_r)  # fmt: skip
+                                    result.case.wear.wear_law(), undeformed_r)  # fmt: skip
         wear = np.where(on_surface & (undeformed_r >= 0), h, 0.0)
     pts[:, 1] -= wear
     point_data = dict(mesh.point_data)

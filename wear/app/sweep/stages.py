@@ -26,6 +26,7 @@ from contact import simulate_impact
 from contact.results import OUTPUT_UNITS
 from fem import worst_regime
 from wear.case import Case, default_case
+from wear.chain.calibrate import calibrate, read_data
 from wear.chain.repeat import repeat
 from wear.chain.single import one_way, run
 from wear.erosion.run import erode_case
@@ -33,6 +34,7 @@ from wear.erosion.run import erode_case
 __all__ = [
     "Stage",
     "STAGES",
+    "calibrate_stage",
     "erode_stage",
     "execute_case",
     "impact_stage",
@@ -168,6 +170,21 @@ def repeat_stage(case: dict) -> dict:
     return {k: v for k, v in out.items() if not isinstance(v, str)}
 
 
+def calibrate_stage(case: dict) -> dict:
+    """A calibration of the wear law (:func:`wear.chain.calibrate.calibrate`) to the data file ``calibration.data``
+    (e.g. one law per case, to compare them on the same data). Results: each fitted constant (its units in the
+    schema) with its 95% interval (``*_low``, ``*_high``; None where the data do not determine it), ``rms_log_error``,
+    ``fitted_rows``, ``evaluations``."""
+    c = stage_case(case, "calibrate")
+    result = calibrate(c, read_data(c.calibration.data), c.calibration.free_constants())
+    f = result.fit
+    out: dict = {"rms_log_error": f.rms_log_error, "fitted_rows": int(f.residuals.size), "evaluations": f.evaluations}
+    for name, value, interval in zip(f.names, f.values, f.intervals, strict=True):
+        out[name] = value
+        out[f"{name}_low"], out[f"{name}_high"] = interval if interval is not None else (None, None)
+    return out
+
+
 def _run_units() -> dict[str, str]:
     units = {f"impact.{k}": u for k, u in OUTPUT_UNITS.items()}
     units.update({"yield.F_y_paper": "N", "yield.F_c_exact": "N", "yield.fe_first_yield_force": "N",
@@ -187,6 +204,8 @@ STAGES: dict[str, Stage] = {
                    "particle-stream erosion of a plate patch (wear.erode_case)", "erode", lambda: dict(_ERODE_UNITS)),
     "repeat": Stage("repeat", repeat_stage, ("ball", "plate", "impact", "wear", "fem", "repeat"),
                     "repeated impacts at one site (wear.repeat)", "repeat", dict),
+    "calibrate": Stage("calibrate", calibrate_stage, ("ball", "plate", "impact", "wear", "fem", "calibration"),
+                       "a calibration of the wear law to measured wear (wear.chain.calibrate)", "calibrate", dict),
 }  # fmt: skip
 
 _ERODE_UNITS = {"stream.speed_m_s": "m/s", "stream.angle_deg": "deg", "patch.size_m": "m",

@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from wear.app.outputs.writer import write_text
-from wear.app.validation import contact, fem, wear  # noqa: F401  (importing them registers their groups)
+from wear.app.validation import contact, fem, laws, wear  # noqa: F401  (importing them registers their groups)
 from wear.app.validation.checks import AREAS, GROUPS, Check
 
 __all__ = ["Validation", "run_validation", "render_report", "write_report"]

@@ -1,0 +1,66 @@
+"""``impactwear calibrate DATA.csv [CASE.toml] --law NAME [--free K,alpha,...] --out DIR``: fit a wear law's
+constants to measured wear (:mod:`wear.chain.calibrate`; outputs: :mod:`wear.app.outputs.calibration`).
+
+DATA.csv: one row per measurement, columns ``angle_deg`` (from the normal), ``speed_m_s``, one of
+``erosion_kg_per_kg``, ``mass_per_impact_kg``, ``volume_per_impact_m3`` (empty: predicted, not fitted), and
+optional case keys per row (``ball.radius``, ...). The case (default: ``impactwear calibrate --print-default``)
+gives the particle, the plate, the contact models and the law's other constants.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+from wear.app.commands.common import add_case_options, case_from_args, print_default, print_json
+from wear.app.outputs.calibration import write_calibration
+from wear.case import LAWS
+from wear.chain.calibrate import calibrate, read_data
+
+HELP = "fit a wear law's constants to measured wear (least squares on logs, with intervals); write calibrated.toml"
+
+DEFAULT_OUT = "impactwear-calibrate"
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("data", nargs="?", metavar="DATA.csv", help="measured wear (see above)")
+    add_case_options(parser, "calibrate")
+    parser.add_argument("--law", choices=tuple(LAWS), help="the wear law to fit [wear.law]")
+    parser.add_argument("--free", metavar="K,alpha,...", help="the constants to fit [calibration.free]; default: the "
+                        "law's scale constant")  # fmt: skip
+    parser.add_argument("--out", default=DEFAULT_OUT, metavar="DIR", help=f"output folder (default: {DEFAULT_OUT})")
+    parser.add_argument("--quiet", action="store_true", help="no table")
+    parser.add_argument("--json", action="store_true", help="print calibration.json to stdout instead of a table")
+
+
+def _table(summary: dict, out: str) -> str:
+    lines = [f"law {summary['law']!r}: {summary['fitted_rows']} rows fitted of {summary['rows']} "
+             f"({summary['quantity']}); RMS log error {summary['rms_log_error']:.3g}"]  # fmt: skip
+    for name, c in summary["constants"].items():
+        interval = c["interval_95"]
+        ci = "not determined by the data" if interval is None else f"95% [{interval[0]:.4g}, {interval[1]:.4g}]"
+        lines.append(f"  {name} = {c['value']:.6g} {c['units']}  ({ci})".rstrip())
+    lines += [f"  note: {s}" for s in summary["statements"]]
+    lines.append(f"{summary['evaluations']} evaluations of the forward model ({summary['evaluations_per_s']:.3g}/s); "
+                 f"output: {out}")  # fmt: skip
+    return "\n".join(lines)
+
+
+def main(args: argparse.Namespace) -> int:
+    if args.print_default:
+        return print_default("calibrate")
+    if args.data is None:
+        raise ValueError("DATA.csv is missing: give the file of measured wear (see impactwear calibrate --help)")
+    options: dict[str, dict[str, object]] = {"calibration": {"data": args.data}}
+    if args.law is not None:
+        options["wear"] = {"law": args.law}
+    if args.free is not None:
+        options["calibration"]["free"] = args.free
+    case = case_from_args(args, "calibrate", options)
+    data = read_data(case.calibration.data)  # bad data: one line naming the column and row, before any output
+    result = calibrate(case, data, case.calibration.free_constants())
+    summary = write_calibration(result, args.out)
+    if args.json:
+        print_json(summary)
+    elif not args.quiet:
+        print(_table(summary, args.out))
+    return 0

@@ -1,0 +1,149 @@
+r"""Least squares on log residuals with confidence intervals and a plain statement of what the data cannot determine.
+
+The model predicts positive quantities y_i(θ); the fit minimises Σ (ln y_i(θ) − ln m_i)² over the free constants θ,
+each in its own coordinate: the logarithm for a positive scale constant (a wear coefficient, ε), the value itself
+for an exponent. At the optimum, with J the Jacobian of the residuals in those coordinates, n rows and p constants,
+
+.. math:: s^2 = \frac{\sum r_i^2}{n - p}, \qquad C = s^2 (J^T J)^{-1}, \qquad
+          \theta_k \pm t_{0.975,\,n-p}\sqrt{C_{kk}}
+
+(an interval in log coordinates is mapped back: multiplicative). A direction along which the residuals do not
+change (a singular value of J below 1e-7 of the largest: e.g. a speed exponent fitted to a single speed, where it
+trades off exactly against the scale constant) has no interval: the constants that move along it are reported as
+not determined by the data, instead of a number.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import least_squares
+from scipy.stats import t as student_t
+
+__all__ = ["Constant", "LogFit", "log_fit"]
+
+#: A singular value of the Jacobian below this × the largest is a direction the data do not determine.
+SINGULAR = 1e-7
+#: A constant whose component in such a direction exceeds this is not determined.
+LOADING = 0.05
+
+
+@dataclass(frozen=True)
+class Constant:
+    """A free constant: ``name``, its ``start`` value, whether it is fitted in ``log`` coordinates (a positive scale
+    constant) or as is (an exponent), and its bounds ``low``/``high`` (None: unbounded)."""
+
+    name: str
+    start: float
+    log: bool
+    low: float | None = None
+    high: float | None = None
+
+    def to_coordinate(self, value: float) -> float:
+        return math.log(value) if self.log else value
+
+    def from_coordinate(self, x: float) -> float:
+        return math.exp(x) if self.log else x
+
+    def bounds(self) -> tuple[float, float]:
+        def coordinate(v: float | None, inf: float) -> float:
+            if v is None or (self.log and v <= 0.0):
+                return inf
+            return self.to_coordinate(v)
+
+        return coordinate(self.low, -math.inf), coordinate(self.high, math.inf)
+
+
+@dataclass(frozen=True)
+class LogFit:
+    """A log least-squares fit: ``names``, ``values`` (the fitted constants), ``intervals`` (95% (low, high), or None
+    where not determined or without residual degrees of freedom), ``determined`` (per constant), ``statements`` (plain
+    sentences on what the data cannot determine), ``residuals`` (ln predicted − ln measured per fitted row),
+    ``rms_log_error``, ``correlations`` (p × p, NaN where undefined), ``dof`` (n − p), ``evaluations``."""
+
+    names: tuple[str, ...]
+    values: tuple[float, ...]
+    intervals: tuple[tuple[float, float] | None, ...]
+    determined: tuple[bool, ...]
+    statements: tuple[str, ...]
+    residuals: np.ndarray
+    rms_log_error: float
+    correlations: np.ndarray
+    dof: int
+    evaluations: int
+
+    def as_dict(self) -> dict[str, float]:
+        return dict(zip(self.names, self.values, strict=True))
+
+
+def log_fit(predict: Callable[[dict[str, float]], np.ndarray], measured: np.ndarray,
+            constants: list[Constant]) -> LogFit:  # fmt: skip
+    """Fit ``constants`` so that ``predict(values)`` (positive, one per measured row) matches ``measured``
+    (positive) in the log (see the module docstring)."""
+    measured = np.asarray(measured, float)
+    log_measured = np.log(measured)
+    evaluations = [0]
+
+    def values_of(x: np.ndarray) -> dict[str, float]:
+        return {c.name: c.from_coordinate(float(v)) for c, v in zip(constants, x, strict=True)}
+
+    def residuals(x: np.ndarray) -> np.ndarray:
+        evaluations[0] += 1
+        pred = np.asarray(predict(values_of(x)), float)
+        return np.log(np.maximum(pred, 1e-300)) - log_measured
+
+    x0 = np.array([c.to_coordinate(c.start) for c in constants])
+    low, high = (np.array(b) for b in zip(*(c.bounds() for c in constants), strict=True))
+    inside = 1e-9 * (1.0 + np.abs(np.where(np.isfinite(low), low, 0.0)))
+    x0 = np.clip(x0, np.where(np.isfinite(low), low + inside, low), np.where(np.isfinite(high), high - inside, high))
+    solution = least_squares(residuals, x0, bounds=(low, high), method="trf", xtol=1e-12,
+                             ftol=1e-12, gtol=1e-12, max_nfev=2000)  # fmt: skip
+    r = solution.fun
+    n, p = r.size, len(constants)
+    dof = n - p
+    jac = np.asarray(solution.jac, float)
+    u, sv, vt = np.linalg.svd(jac, full_matrices=False)
+    null = [vt[k] for k in range(len(sv)) if sv[k] <= SINGULAR * max(sv[0], 1e-300)]
+    null += [vt[k] for k in range(len(sv), p)] if len(sv) < p else []
+    determined = [all(abs(v[k]) <= LOADING for v in null) for k in range(p)]
+    statements = []
+    for v in null:
+        names = [constants[k].name for k in range(p) if abs(v[k]) > LOADING]
+        statements.append(f"the data cannot determine {' and '.join(names)} separately: the residuals do not change "
+                          f"along a combination of them (e.g. a speed exponent from a single speed)")  # fmt: skip
+    s2 = float(r @ r / dof) if dof > 0 else math.nan
+    if dof <= 0:
+        statements.append(f"{n} rows for {p} constants: no residual degree of freedom, no interval")
+    inv_sv = np.where(sv > SINGULAR * max(sv[0], 1e-300), 1.0 / np.maximum(sv, 1e-300), 0.0)
+    cov = (vt.T * inv_sv**2) @ vt * s2
+    intervals: list[tuple[float, float] | None] = []
+    quantile = float(student_t.ppf(0.975, dof)) if dof > 0 else math.nan
+    for k, c in enumerate(constants):
+        if not determined[k] or not math.isfinite(s2):
+            intervals.append(None)
+            continue
+        half = quantile * math.sqrt(max(cov[k, k], 0.0))
+        lo, hi = solution.x[k] - half, solution.x[k] + half
+        intervals.append((c.from_coordinate(lo), c.from_coordinate(hi)))
+    sd = np.sqrt(np.maximum(np.diag(cov), 0.0))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        corr = cov / np.outer(sd, sd)
+    corr[~np.isfinite(corr)] = math.nan
+    for k in range(p):
+        if not determined[k]:
+            corr[k, :] = corr[:, k] = math.nan
+    return LogFit(
+        names=tuple(c.name for c in constants),
+        values=tuple(c.from_coordinate(float(v)) for c, v in zip(constants, solution.x, strict=True)),
+        intervals=tuple(intervals),
+        determined=tuple(determined),
+        statements=tuple(statements),
+        residuals=r,
+        rms_log_error=float(np.sqrt(np.mean(r**2))) if n else math.nan,
+        correlations=corr,
+        dof=dof,
+        evaluations=evaluations[0],
+    )
