@@ -98,8 +98,7 @@ def _hertz_verlet_step(
     fn_raw = stiff * dc * root + damp * math.sqrt(root) * rate
     fn_new = fn_raw if fn_raw > 0.0 else 0.0
     a = math.sqrt(radius * dc)
-    area = math.pi * a * a
-    p = 1.5 * fn_new / area if area > 0.0 else 0.0
+    p = 1.5 * stiff * root / (math.pi * radius)  # Hertz p0 of the spring's force (see contact.laws.normal_law)
     k_t = factor * 8.0 * gstar * a
     force = -k_t * xi_trial
     limit = friction * fn_new
@@ -212,7 +211,7 @@ def _impact(scheme, model, factor, friction, dt, vn0, vt0, max_steps, prm, tab, 
         ftmax = max(ftmax, abs(ft))
         if every > 0 and (done or steps % every == 0):
             hist[0, row] = t
-            hist[1, row] = max(delta, 0.0) if not done else 0.0
+            hist[1, row] = max(delta, 0.0)
             hist[2, row] = fn
             hist[3, row] = ft
             hist[4, row] = xi if not done else 0.0

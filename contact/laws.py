@@ -212,8 +212,13 @@ def normal_law(model, delta, rate, dmax, prm, load, umax, ures, s_tab, f_tab, a_
     """Normal force (N, ≥ 0), contact radius a (m), peak pressure (Pa), error code.
 
     ``delta`` overlap (m), ``rate`` dδ/dt (m/s, used by the Hertz dashpot), ``dmax`` the largest overlap
-    reached so far including this one (m). Peak pressure: 3F/(2πa²) (Hertz, tabulated, Thornton unloading);
-    min(Hertz p₀, p_y) = p_y while Thornton loads plastically.
+    reached so far including this one (m). Peak pressure: 3F/(2πa²) (tabulated); for Thornton min(Hertz p₀, p_y):
+    p_y while it loads plastically, and after it the Hertz p₀ of the unloading curvature R_p bounded by p_y (at
+    the start of the unloading 3F_p/(2πa_p²) ≈ 1.5 p_y: Thornton's flat-topped loading distribution and his
+    Hertzian unloading one do not join, and the limiting pressure is the bound his model rests on); for Hertz that
+    of the spring's force alone,
+    p₀ = 3F_el/(2πa²) = (2E*/π)·√(δ/R): the dashpot's force has no pressure distribution of its own, and counted in
+    it would give 3F/(2πa²) → ∞ as a → 0 at first contact (the dashpot acts at once, the area grows from zero).
     """
     if delta <= 0.0:
         return 0.0, 0.0, 0.0, OK
@@ -223,7 +228,7 @@ def normal_law(model, delta, rate, dmax, prm, load, umax, ures, s_tab, f_tab, a_
         force = prm[P_HERTZ_K] * delta * root + prm[P_DAMP] * math.sqrt(root) * rate
         force = max(force, 0.0)
         a = math.sqrt(radius * delta)
-        return force, a, 1.5 * force / (math.pi * a * a), OK
+        return force, a, 1.5 * prm[P_HERTZ_K] * root / (math.pi * radius), OK
     if model == THORNTON:
         py, dy, fy, estar = prm[P_PY], prm[P_DY], prm[P_FY], prm[P_ESTAR]
         if dmax <= dy:
@@ -240,7 +245,7 @@ def normal_law(model, delta, rate, dmax, prm, load, umax, ures, s_tab, f_tab, a_
             return 0.0, 0.0, 0.0, OK
         a = math.sqrt(rp * d)
         force = 4.0 / 3.0 * estar * math.sqrt(rp) * d * math.sqrt(d)
-        return force, a, 1.5 * force / (math.pi * a * a), OK
+        return force, a, min(1.5 * force / (math.pi * a * a), py), OK
     force, a, err = _tabulated(delta, dmax, load, umax, ures, s_tab, f_tab, a_tab)
     if a > 0.0:
         return force, a, 1.5 * force / (math.pi * a * a), err

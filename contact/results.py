@@ -18,16 +18,19 @@ __all__ = ["History", "ImpactResult", "BatchResult"]
 @dataclass(frozen=True, eq=False)
 class History:
     """Time histories of one impact, sampled at every ``every``-th engine step from first contact (t = 0) to
-    separation (always the last sample, where overlap, forces, ξ, contact radius and pressure are 0, also for a
-    plastic contact that leaves a residual dent). Read-only numpy arrays:
+    separation (always the last sample, where forces, ξ, contact radius and pressure are 0 and the overlap is the
+    one at separation: the residual dent's depth for a plastic contact, 0 for an elastic one up to one step).
+    Read-only numpy arrays:
 
     ``t`` (s); ``overlap`` δ (m); ``normal_force`` F_n (N); ``tangential_force`` F_t (N, on the ball along the
     impact direction); ``tangential_displacement`` ξ (m, the H-DD spring); ``contact_radius`` a (m);
-    ``peak_pressure`` (Pa: 3F_n/(2πa²) for ``hertz`` and ``tabulated``, and for ``thornton`` while unloading;
-    p_y while ``thornton`` loads plastically); ``slip_velocity`` v_t − Rω (m/s, contact point relative to the
-    plate); ``sliding`` (bool, gross sliding); ``center_x`` ball centre position along the impact direction
-    measured from the first-contact point (m); ``contact_x`` contact-point position on the plate (m, = ``center_x``:
-    the contact point is under the centre); ``omega`` spin (rad/s, positive = rolling forward);
+    ``peak_pressure`` (Pa: 3F_n/(2πa²) for ``tabulated``; for ``thornton`` p_y while loading plastically and
+    the Hertz p₀ of the unloading bounded by p_y; for ``hertz`` the Hertz p₀ of the spring's force, the
+    dashpot's left out: :func:`contact.laws.normal_law`);
+    ``slip_velocity`` v_t − Rω (m/s, contact point relative to the plate); ``sliding`` (bool, gross sliding);
+    ``center_x`` ball centre position along the impact direction measured from the first-contact point (m);
+    ``contact_x`` contact-point position on the plate (m, = ``center_x``: the contact point is under the centre);
+    ``omega`` spin (rad/s, positive = rolling forward);
     ``normal_velocity`` dδ/dt (m/s, positive towards the plate); ``tangential_velocity`` v_t of the centre (m/s).
     """
 
@@ -96,7 +99,7 @@ class ImpactResult:
     (deg from the normal, may be < 0); ``spin`` ω' (rad/s, positive = rolling forward);
     ``rebound_normal_velocity`` (m/s, away from the plate, > 0), ``rebound_tangential_velocity`` (m/s);
     ``contact_time``, ``sliding_time`` (s); ``max_force``, ``max_tangential_force`` (N); ``max_overlap``,
-    ``max_contact_radius`` (m); ``max_peak_pressure`` (Pa). Energy balance (J):
+    ``max_contact_radius`` (m); ``max_peak_pressure`` (Pa, the largest ``History.peak_pressure``). Energy balance (J):
     ``energy_in − energy_out = normal_work + friction_work`` to integration accuracy, with ``normal_work``
     = ∫F_n dδ (dashpot or plastic loss) and ``friction_work`` = −∫F_t (v_t − Rω) dt (work taken from the
     ball by the tangential force). ``time_step`` (s), ``steps`` engine steps in contact, ``history``.

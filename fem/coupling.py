@@ -357,7 +357,8 @@ def pressure_table(cycle: PlateCycle, impact: ImpactResult) -> tuple[np.ndarray,
     un_d = np.maximum.accumulate(un_d)
     times[j_max + 1 :] = np.interp(fe_d[j_max + 1 :], un_d, un_t, left=np.inf)
     keep = np.isfinite(times) & (times <= t[-1])
-    keep &= np.concatenate([[True], np.diff(np.where(keep, times, -np.inf)) > 0])
+    previous = np.concatenate([[-np.inf], np.where(keep, times, -np.inf)[:-1]])
+    keep &= np.where(keep, times, np.inf) > previous  # a step is kept if later than the kept step before it
     rows = contact_pressure(cycle.pressure, cycle.surface_r, cycle.contact_radius)
     times, rows = times[keep], rows[keep]
     # close the table at separation with zero pressure, and open it at first contact

@@ -37,7 +37,8 @@ def test_calibrate_writes_outputs_and_calibrated_case(tmp_path, capsys):
     lo, hi = summary["constants"]["dnv_n"]["interval_95"]
     assert lo < summary["constants"]["dnv_n"]["value"] < hi
     assert summary["fitted_rows"] == 14 and summary["rows"] == 15
-    assert sorted(p.name for p in out.iterdir()) == ["calibrated.toml", "calibration.csv", "calibration.json",
+    assert sorted(p.name for p in out.iterdir()) == [".impactwear.json", "calibrated.toml", "calibration.csv",
+                                                      "calibration.json",
                                                       "calibration.png"]  # fmt: skip
     rows = (out / "calibration.csv").read_text().splitlines()
     assert len(rows) == 16 and rows[-1].split(",")[-1] == "0" and float(rows[-1].split(",")[4]) > 0

@@ -8,7 +8,7 @@ from wear.app.cli import main
 
 def test_indent_cli_writes_outputs(tmp_path, capsys):
     out = tmp_path / "ind"
-    code = main(["indent", "--yield-strength", "0", "--max-overlap", "1e-7", "--load-steps", "3",
+    code = main(["indent", "--yield-strength", "inf", "--max-overlap", "1e-7", "--load-steps", "3",
                  "--unload-steps", "2", "--out", str(out), "--json"])  # fmt: skip
     assert code == 0
     summary = json.loads(capsys.readouterr().out)

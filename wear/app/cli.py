@@ -8,6 +8,8 @@ line naming the parameter, with exit status 2 and no traceback.
 from __future__ import annotations
 
 import argparse
+import os
+import re
 import sys
 from importlib.metadata import PackageNotFoundError, version
 
@@ -38,9 +40,25 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+#: A negative number argparse would take for an option (it knows only -1 and -1.5, not -1e-6).
+_NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)$")
+
+
+def join_negative_values(argv: list[str]) -> list[str]:
+    """``--opt -1e-6`` as ``--opt=-1e-6``, so that a negative number in exponent notation reaches the option (and
+    its range check) instead of argparse's "expected one argument"."""
+    out: list[str] = []
+    for arg in argv:
+        if out and _NEGATIVE_NUMBER.match(arg) and out[-1].startswith("--") and "=" not in out[-1]:
+            out[-1] = f"{out[-1]}={arg}"
+        else:
+            out.append(arg)
+    return out
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_args(join_negative_values(sys.argv[1:] if argv is None else list(argv)))
     if getattr(args, "_module", None) is None:
         parser.print_help()
         return 2
@@ -53,6 +71,9 @@ def main(argv: list[str] | None = None) -> int:
         # A physical solve that did not converge is not a programming error: one line, exit 1.
         print(f"impactwear {args.command}: FE did not converge: {exc}", file=sys.stderr)
         return 1
+    except BrokenPipeError:  # the reader of stdout stopped (e.g. `| head`): not a failure of the command
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
     except KeyboardInterrupt:
         print(f"impactwear {args.command}: interrupted", file=sys.stderr)
         return 130

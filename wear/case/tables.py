@@ -30,6 +30,9 @@ NORMAL_MODELS = ("hertz", "thornton")
 TANGENTIAL_MODELS = ("hdd", "mindlin")
 SCHEMES = ("verlet", "paper")
 
+#: Particle mass concentration of a stream whose case gives neither concentration nor mass flux (kg/m³).
+DEFAULT_CONCENTRATION = 0.464
+
 _E = dict(low=1e5, high=1e13, allow_inf=True)
 _NU = dict(low=0.0, high=0.5, high_open=True)
 _DENSITY = dict(low=0.0, low_open=True, high=1e5)
@@ -197,10 +200,12 @@ class ErosionSpec(Table):
     response table's resolution, the seed and the outputs' sampling."""
 
     table: ClassVar[str] = "erosion"
-    concentration: float = key(float, 0.464, "particle mass concentration of the stream", "kg/m^3", low=0.0,
-                               low_open=True)  # fmt: skip
-    mass_flux: float | None = key(float, None, "mass flux through a plane normal to the stream", "kg/(m^2 s)",
-                                  low=0.0, low_open=True, optional=True, absent="from concentration")  # fmt: skip
+    concentration: float | None = key(float, None, "particle mass concentration of the stream (or give mass_flux)",
+                                      "kg/m^3", low=0.0, low_open=True, optional=True,
+                                      absent=f"{DEFAULT_CONCENTRATION:g} kg/m^3 unless mass_flux is given")  # fmt: skip
+    mass_flux: float | None = key(float, None, "mass flux through a plane normal to the stream (or give "
+                                  "concentration)", "kg/(m^2 s)", low=0.0, low_open=True, optional=True,
+                                  absent="from concentration")  # fmt: skip
     exposure_time: float = key(float, 3120.0, "exposure time", "s", low=0.0, low_open=True, high=1e10)
     azimuth: float = key(float, 0.0, "stream direction in the patch, from the grid x axis", "deg", low=-360.0,
                          high=360.0)  # fmt: skip
@@ -215,6 +220,17 @@ class ErosionSpec(Table):
     angle_step: float = key(float, 2.5, "response table: local angle step", "deg", low=0.1, high=15.0)
     table_speeds: int = key(int, 5, "response table: number of normal speeds", low=2, high=50)
     points_per_length: int = key(int, 12, "response table: footprint points per contact radius", low=4, high=64)
+
+    def check(self) -> None:
+        if self.concentration is not None and self.mass_flux is not None:
+            raise ValueError(f"erosion.concentration={self.concentration:g} and erosion.mass_flux={self.mass_flux:g} "
+                             "are both given: the stream's supply is one of them (kg/m^3 or kg/(m^2 s))")  # fmt: skip
+
+    def supply(self) -> dict[str, float]:
+        """The stream's supply: ``{"mass_flux": q}`` (kg m⁻² s⁻¹) or ``{"concentration": c}`` (kg/m³)."""
+        if self.mass_flux is not None:
+            return {"mass_flux": self.mass_flux}
+        return {"concentration": DEFAULT_CONCENTRATION if self.concentration is None else self.concentration}
 
 
 @dataclass(frozen=True)

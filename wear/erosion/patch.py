@@ -181,13 +181,22 @@ def erode(
             f"[{table.angle[0]:g}, {table.angle[-1]:g}] deg (build it with table_axes(speed, angle))"
         )
     _, _, l_nominal = table.interpolate(vn_nominal, stream.angle)
-    if patch_size is None:
+    derived = patch_size is None
+    if derived:
         patch_size = n * l_nominal / cells_per_radius
     patch_size = check_number("patch_size", patch_size, low=0.0, low_open=True, high=10.0, units="m")
     h = patch_size / n
     diameter = 2.0 * table.particle_radius
     u_ext = max(abs(table.u[0]), abs(table.u[-1])) + abs(table.v[-1])
     footprint = 2.0 * u_ext * float(table.length_scale.max())
+    if derived and (patch_size < diameter or footprint > 0.5 * patch_size):
+        needed = max(diameter, 2.0 * footprint)
+        raise ValueError(
+            f"grid={n} is out of range for this stream: the patch it gives ({patch_size:.6g} m = grid x contact "
+            f"radius / {cells_per_radius:g}) must be larger than the particle diameter ({diameter:.6g} m) and twice "
+            f"the largest footprint ({footprint:.6g} m): use grid >= {math.ceil(needed * cells_per_radius / l_nominal)}"
+            " or set patch_size"
+        )
     if patch_size < diameter or footprint > 0.5 * patch_size:
         raise ValueError(
             f"patch_size={patch_size:.6g} is out of range: the patch must be larger than the particle diameter "

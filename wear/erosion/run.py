@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import time
+import warnings
 from dataclasses import dataclass
 
 from contact import simulate_impact
@@ -20,11 +21,9 @@ from wear.erosion.response import ImpactResponse
 from wear.erosion.stream import Stream
 from wear.erosion.table import build_response_table, table_axes
 
-__all__ = ["ErosionRun", "erode_case", "erode_angles", "nominal_contact_radius", "STREAM_PRESSURES",
-           "MAX_STREAM_ANGLE", "CELLS_PER_RADIUS"]  # fmt: skip
+__all__ = ["ErosionRun", "erode_case", "erode_angles", "nominal_contact_radius", "MAX_STREAM_ANGLE",
+           "CELLS_PER_RADIUS"]  # fmt: skip
 
-#: Pressure sources a stream's response table can use (it is built from batched impacts, without the FE plate).
-STREAM_PRESSURES = ("hertz", "paper", "thornton")
 #: Largest stream angle from the normal (deg): beyond it the response table has no footprints.
 MAX_STREAM_ANGLE = 85.0
 #: Default grid spacing: the nominal contact radius / this (as :func:`wear.erosion.erode`).
@@ -80,16 +79,17 @@ def _stream_angle(case: Case, angle: float | None) -> float:
 
 
 def _response(case: Case) -> ImpactResponse:
-    if case.wear.pressure not in STREAM_PRESSURES:
-        raise ValueError(f"wear.pressure={case.wear.pressure!r} is not a valid choice for erosion: must be one of "
-                         f"{', '.join(map(repr, STREAM_PRESSURES))} (the stream's response table is built from "
-                         "batched impacts, without the FE plate)")  # fmt: skip
+    pressure = case.wear.pressure
+    if pressure == "fe":  # e.g. a run case given to erode: it holds everything the stream needs but this
+        pressure = "thornton" if case.impact.normal_model == "thornton" else "hertz"
+        warnings.warn(f"wear.pressure='fe' needs the FE plate, which the stream's batched impacts do not run: the "
+                      f"erosion uses {pressure!r}, the closed form of impact.normal_model", stacklevel=2)  # fmt: skip
     ball = case.ball.material()
     if math.isinf(ball.density):
         raise ValueError("ball.density=inf: the particle needs a finite density (kg/m^3)")
     imp, w = case.impact, case.wear
     return ImpactResponse(radius=case.ball.radius, ball=ball, plate=case.plate.material(), friction=imp.friction,
-                          law=w.wear_law(), pressure=w.pressure, speed_model=w.speed, restitution=imp.restitution,
+                          law=w.wear_law(), pressure=pressure, speed_model=w.speed, restitution=imp.restitution,
                           normal_model=imp.normal_model, tangential_model=imp.tangential_model,
                           points_across=w.points_across, wear_law=w.law,
                           constants={**w.values(), "hardness": case.plate.hardness})  # fmt: skip
@@ -97,8 +97,7 @@ def _response(case: Case) -> ImpactResponse:
 
 def _stream(case: Case, theta: float) -> Stream:
     ero = case.erosion
-    supply = {"mass_flux": ero.mass_flux} if ero.mass_flux is not None else {"concentration": ero.concentration}
-    return Stream(case.impact.speed, theta, ero.exposure_time, azimuth=ero.azimuth, **supply)
+    return Stream(case.impact.speed, theta, ero.exposure_time, azimuth=ero.azimuth, **ero.supply())
 
 
 def nominal_contact_radius(case: Case, angle: float | None = None) -> float:

@@ -11,8 +11,9 @@ from __future__ import annotations
 
 import argparse
 
-from wear.app.commands.common import add_case_options, case_from_args, print_default, print_json
+from wear.app.commands.common import add_case_options, add_out_option, case_from_args, print_default, print_json
 from wear.app.outputs.calibration import write_calibration
+from wear.app.outputs.folder import check_output_folder
 from wear.case import LAWS
 from wear.chain.calibrate import calibrate, read_data
 
@@ -27,7 +28,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--law", choices=tuple(LAWS), help="the wear law to fit [wear.law]")
     parser.add_argument("--free", metavar="K,alpha,...", help="the constants to fit [calibration.free]; default: the "
                         "law's scale constant")  # fmt: skip
-    parser.add_argument("--out", default=DEFAULT_OUT, metavar="DIR", help=f"output folder (default: {DEFAULT_OUT})")
+    add_out_option(parser, DEFAULT_OUT)
     parser.add_argument("--quiet", action="store_true", help="no table")
     parser.add_argument("--json", action="store_true", help="print calibration.json to stdout instead of a table")
 
@@ -46,17 +47,18 @@ def _table(summary: dict, out: str) -> str:
 
 
 def main(args: argparse.Namespace) -> int:
-    if args.print_default:
-        return print_default("calibrate")
-    if args.data is None:
-        raise ValueError("DATA.csv is missing: give the file of measured wear (see impactwear calibrate --help)")
-    options: dict[str, dict[str, object]] = {"calibration": {"data": args.data}}
+    options: dict[str, dict[str, object]] = {"calibration": {} if args.data is None else {"data": args.data}}
     if args.law is not None:
         options["wear"] = {"law": args.law}
     if args.free is not None:
         options["calibration"]["free"] = args.free
     case = case_from_args(args, "calibrate", options)
+    if args.print_default:
+        return print_default(args, "calibrate", case)
+    if args.data is None:
+        raise ValueError("DATA.csv is missing: give the file of measured wear (see impactwear calibrate --help)")
     data = read_data(case.calibration.data)  # bad data: one line naming the column and row, before any output
+    check_output_folder(args.out, "calibrate")
     result = calibrate(case, data, case.calibration.free_constants())
     summary = write_calibration(result, args.out)
     if args.json:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
 import warnings
 from collections.abc import Callable, Iterator, Sequence
@@ -15,8 +16,8 @@ from tqdm import tqdm
 from wear.app.outputs.writer import to_jsonable
 from wear.case import JOBS, Case, dump_case, load_case, override_tables
 
-__all__ = ["add_case_options", "case_from_args", "collect_notes", "print_default", "print_json", "print_notes",
-           "progress_bar", "show_progress"]  # fmt: skip
+__all__ = ["add_case_options", "add_out_option", "case_from_args", "case_json", "collect_notes", "print_default",
+           "print_json", "print_notes", "progress_bar", "show_progress"]  # fmt: skip
 
 
 def add_case_options(parser: argparse.ArgumentParser, job: str, *, flag: bool = False) -> None:
@@ -36,23 +37,60 @@ def add_case_options(parser: argparse.ArgumentParser, job: str, *, flag: bool = 
                         "and valid range) and exit")  # fmt: skip
 
 
+def add_out_option(parser: argparse.ArgumentParser, default: str) -> None:
+    """``--out DIR``: a command's output folder (:mod:`wear.app.outputs.folder`)."""
+    parser.add_argument("--out", default=default, metavar="DIR",
+                        help=f"output folder (default: {default}): a new or empty folder, or an earlier output folder "
+                        "of impactwear, whose files are replaced while every other file in it is left alone; a "
+                        "folder holding other files is refused before any work")  # fmt: skip
+
+
 def case_from_args(args: argparse.Namespace, job: str,
                    options: dict[str, dict[str, object]] | None = None) -> Case:  # fmt: skip
     """The checked case of a command: the case file (or ``job``'s default case), then the command's own ``options``
     (tables of values), then each ``--set`` — all laid on at once, so keys that depend on each other may be given
     by different options."""
     tables = {t: dict(v) for t, v in (options or {}).items()}
+    reads = JOBS[job].tables
     for table, values in override_tables(args.overrides).items():
+        if table not in reads:
+            key = next(iter(values))
+            raise ValueError(f"--set {table}.{key}: impactwear {job} does not read [{table}] (it reads "
+                             f"{', '.join(f'[{t}]' for t in reads)})")  # fmt: skip
         tables.setdefault(table, {}).update(values)
     return load_case(args.case, job, args.case_option).with_(**tables)
 
 
-def print_default(job: str) -> int:
-    """Print ``job``'s default case (the tables it reads) as commented TOML."""
-    print(f"# impactwear {job}: the default case ({JOBS[job].doc}).")
-    print("# Every key the command reads, with its meaning and valid range; SI units, angles in degrees from the plate")
-    print("# normal. Keys left out of a case file take these values.\n")
-    sys.stdout.write(dump_case(JOBS[job].default_case(), JOBS[job].tables))
+def case_json(case: Case, job: str) -> dict:
+    """The tables of ``case`` that ``job`` reads, JSON-safe: an infinite value (a rigid body's E, a yield strength
+    that is never reached) as the string "inf", as in TOML."""
+
+    def finite(value: object) -> object:
+        if isinstance(value, dict):
+            return {k: finite(v) for k, v in value.items()}
+        if isinstance(value, float) and math.isinf(value):
+            return "inf" if value > 0 else "-inf"
+        return value
+
+    return finite(case.to_dict(JOBS[job].tables))
+
+
+def print_default(args: argparse.Namespace, job: str, case: Case) -> int:
+    """``--print-default``: print ``case`` (the tables ``job`` reads) as commented TOML, or as JSON with ``--json``.
+    Without a case file or options ``case`` is the default case; with them, the case the command would run."""
+    tables = JOBS[job].tables
+    if getattr(args, "json", False):
+        print_json(case_json(case, job))
+        return 0
+    if case == JOBS[job].default_case():
+        print(f"# impactwear {job}: the default case ({JOBS[job].doc}).")
+        print("# Every key the command reads, with its meaning and valid range; SI units, angles in degrees from the")
+        print("# plate normal. Keys left out of a case file take these values.\n")
+    else:
+        print(f"# impactwear {job}: the case it would run (the case file and options laid on its default case).")
+        print("# Every key the command reads, with its meaning and valid range; SI units, angles in degrees from the")
+        print("# plate normal.\n")
+    sys.stdout.write(dump_case(case, tables))
     return 0
 
 
@@ -79,14 +117,18 @@ def progress_bar(total: int, desc: str, unit: str, quiet: bool) -> Iterator[Call
 
 @contextmanager
 def collect_notes() -> Iterator[list[str]]:
-    """Collect the library warnings raised inside as notes (each message once), instead of printing them."""
+    """Collect the library warnings raised inside as notes (each message once, in the list as soon as raised, so
+    that a summary written inside holds them), instead of printing them."""
     notes: list[str] = []
-    with warnings.catch_warnings(record=True) as caught:
+
+    def note(message: Warning | str, *_args: object, **_kwargs: object) -> None:
+        if str(message) not in notes:
+            notes.append(str(message))
+
+    with warnings.catch_warnings():
         warnings.simplefilter("always")
-        try:
-            yield notes
-        finally:
-            notes.extend(dict.fromkeys(str(w.message) for w in caught))
+        warnings.showwarning = note
+        yield notes
 
 
 def print_notes(command: str, notes: Sequence[str]) -> None:

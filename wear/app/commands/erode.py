@@ -12,8 +12,18 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from wear.app.commands.common import add_case_options, case_from_args, print_default, show_progress
+from wear.app.commands.common import (
+    add_case_options,
+    add_out_option,
+    case_from_args,
+    collect_notes,
+    print_default,
+    print_json,
+    print_notes,
+    show_progress,
+)
 from wear.app.outputs.erosion import write_erosion, write_erosion_angles
+from wear.app.outputs.folder import check_output_folder
 from wear.erosion.run import MAX_STREAM_ANGLE, erode_angles, erode_case
 
 HELP = "erode a plate patch by a stream of particles (surface feedback); mass loss and erosion rate vs time or angle"
@@ -21,10 +31,11 @@ HELP = "erode a plate patch by a stream of particles (surface feedback); mass lo
 
 def configure(parser: argparse.ArgumentParser) -> None:
     add_case_options(parser, "erode")
-    parser.add_argument("--out", default="erosion", metavar="DIR", help="output folder (default: ./erosion)")
+    add_out_option(parser, "erosion")
     parser.add_argument("--angles", metavar="A,B,...", help="run one erosion per stream angle (deg from the normal)")
     parser.add_argument("--seed", type=int, metavar="N", help="random seed [erosion.seed]")
     parser.add_argument("--quiet", action="store_true", help="no progress bar or summary lines")
+    parser.add_argument("--json", action="store_true", help="print summary.json to stdout instead of the lines")
 
 
 def parse_angles(text: str) -> list[float]:
@@ -43,16 +54,21 @@ def parse_angles(text: str) -> list[float]:
 
 
 def main(args: argparse.Namespace) -> int:
-    if args.print_default:
-        return print_default("erode")
     case = case_from_args(args, "erode", {} if args.seed is None else {"erosion": {"seed": args.seed}})
+    if args.print_default:
+        return print_default(args, "erode", case)
     angles = None if args.angles is None else parse_angles(args.angles)
+    check_output_folder(args.out, "erode")
     out = Path(args.out)
     progress = show_progress(args.quiet)
-    say = (lambda *a: None) if args.quiet else print
+    say = (lambda *a: None) if args.quiet or args.json else print
     if angles is None:
-        run = erode_case(case, progress=progress)
-        summary = write_erosion(run, out)
+        with collect_notes() as notes:
+            run = erode_case(case, progress=progress)
+            summary = write_erosion(run, out, notes=notes)
+        print_notes("erode", notes)
+        if args.json:
+            print_json(summary)
         r, result = summary["results"], run.result
         say(f"erode: {r['impacts']} impacts on a {result.patch_size * 1e3:.4g} mm patch ({result.x.size}^2 nodes), "
             f"{summary['seconds']['erosion']:.3g} s")  # fmt: skip
@@ -60,7 +76,11 @@ def main(args: argparse.Namespace) -> int:
         say(f"  mass loss {r['mass_loss_kg']:.6g} kg ({r['mass_loss_per_area_kg_m2']:.6g} kg/m^2), erosion rate "
             f"{r['erosion_rate_kg_per_kg']:.6g} kg/kg, max depth {r['max_depth_m'] * 1e6:.4g} um -> {out}")  # fmt: skip
         return 0
-    rows = write_erosion_angles(erode_angles(case, angles, progress=progress), out)
+    with collect_notes() as notes:
+        rows = write_erosion_angles(erode_angles(case, angles, progress=progress), out)
+    print_notes("erode", notes)
+    if args.json:
+        print_json([{"angle_deg": a, "erosion_rate": rate, "mass_loss_kg": mass} for a, rate, mass in rows])
     for a, rate, mass in rows:
         say(f"erode: angle {a:g} deg: erosion rate {rate:.6g} kg/kg, mass loss {mass:.6g} kg")
     best = max(rows, key=lambda r: r[1])

@@ -12,8 +12,8 @@ import argparse
 import math
 
 from contact import simulate_impact
-from wear.app.commands.common import add_case_options, case_from_args, print_default, print_json
-from wear.case import JOBS, Case
+from wear.app.commands.common import add_case_options, case_from_args, case_json, print_default, print_json
+from wear.case import Case
 
 HELP = "simulate one oblique ball-on-plate impact (H-DD model) and print rebound, forces and timings"
 
@@ -72,22 +72,13 @@ def build_case(args: argparse.Namespace) -> Case:
     return case_from_args(args, "impact", named)
 
 
-def _finite(value):
-    """JSON-safe copy: non-finite floats (a rigid plate's E = inf) become the string "inf" / None for NaN."""
-    if isinstance(value, dict):
-        return {k: _finite(v) for k, v in value.items()}
-    if isinstance(value, float) and not math.isfinite(value):
-        return None if math.isnan(value) else ("inf" if value > 0 else "-inf")
-    return value
-
-
 def main(args: argparse.Namespace) -> int:
-    if args.print_default:
-        return print_default("impact")
     case = build_case(args)
+    if args.print_default:
+        return print_default(args, "impact", case)
     result = simulate_impact(**case.impact_arguments(), history=False)
     if args.json:
-        print_json({"case": _finite(case.to_dict(JOBS["impact"].tables)), "result": result.to_dict()})
+        print_json({"case": case_json(case, "impact"), "result": result.to_dict()})
         return 0
     ball, plate, imp = case.ball, case.plate, case.impact
     plate_text = "rigid" if plate.rigid else f"{plate.name} (E {plate.E / 1e9:g} GPa, nu {plate.nu:g})"

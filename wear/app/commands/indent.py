@@ -14,7 +14,16 @@ import math
 from pathlib import Path
 
 from contact.checks import check_number
-from wear.app.commands.common import add_case_options, case_from_args, print_default, print_json
+from wear.app.commands.common import (
+    add_case_options,
+    add_out_option,
+    case_from_args,
+    collect_notes,
+    print_default,
+    print_json,
+    print_notes,
+)
+from wear.app.outputs.folder import check_output_folder
 from wear.app.outputs.indent import write_indent
 from wear.chain.indent import indent_case
 
@@ -27,7 +36,7 @@ _OPTIONS = {
     "radius": ("ball.radius", "ball radius R (m)"),
     "E": ("plate.E", "plate Young's modulus (Pa)"),
     "nu": ("plate.nu", "plate Poisson's ratio"),
-    "yield_strength": ("plate.yield_strength", "plate yield strength Y (Pa; 0 = elastic)"),
+    "yield_strength": ("plate.yield_strength", "plate yield strength Y (Pa; inf: never yields, as in case files)"),
     "load_steps": ("fem.load_steps", "loading increments"),
     "unload_steps": ("fem.unload_steps", "unloading increments"),
 }
@@ -36,40 +45,47 @@ _OPTIONS = {
 def configure(parser: argparse.ArgumentParser) -> None:
     add_case_options(parser, "indent", flag=True)
     group = parser.add_mutually_exclusive_group()
-    group.add_argument("--max-overlap", type=float, metavar="M", help="largest overlap δ_max (m)")
+    group.add_argument("--max-overlap", type=float, metavar="M",
+                       help="largest overlap δ_max (m); with neither this nor --max-force the path loads to "
+                       "w = δ/δ_c = 20 (plastic plate) or to a contact radius a = 0.05 R (elastic), then "
+                       "unloads")  # fmt: skip
     group.add_argument("--max-force", type=float, metavar="N", help="largest force (N): δ_max found by the FE")
     for name, (key, doc) in _OPTIONS.items():
         kind = int if name.endswith("steps") else float
         parser.add_argument(f"--{name.replace('_', '-')}", dest=name, type=kind, metavar="X", help=f"{doc} [{key}]")
     parser.add_argument("--hardening", type=float, default=0.0, help="linear isotropic hardening modulus H (Pa)")
     parser.add_argument("--mesh", default=None, help="plate mesh file (m; boundaries axis, surface, bottom)")
-    parser.add_argument("--out", default=DEFAULT_OUT, metavar="DIR", help=f"output folder (default {DEFAULT_OUT})")
+    add_out_option(parser, DEFAULT_OUT)
     parser.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
-    parser.add_argument("--json", action="store_true", help="print summary.json to stdout")
+    parser.add_argument("--quiet", action="store_true", help="no summary lines")
+    parser.add_argument("--json", action="store_true", help="print summary.json to stdout instead of the lines")
 
 
 def main(args: argparse.Namespace) -> int:
-    if args.print_default:
-        return print_default("indent")
     named: dict[str, dict[str, object]] = {}
     for name, (key, _doc) in _OPTIONS.items():
         value = getattr(args, name)
         if value is not None:
             table, _, k = key.partition(".")
-            named.setdefault(table, {})[k] = None if name == "yield_strength" and value == 0 else value
+            named.setdefault(table, {})[k] = value
     case = case_from_args(args, "indent", named)
+    if args.print_default:
+        return print_default(args, "indent", case)
+    check_output_folder(args.out, "indent")
     # named as the user gave them (indent_case checks its own arguments again, named as in Python)
     if args.max_overlap is not None:
         check_number("--max-overlap", args.max_overlap, low=0.0, low_open=True, high=case.ball.radius, units="m")
     if args.max_force is not None:
         check_number("--max-force", args.max_force, low=0.0, low_open=True, units="N")
-    run = indent_case(case, max_overlap=args.max_overlap, max_force=args.max_force, hardening=args.hardening,
-                      mesh=args.mesh)  # fmt: skip
-    out = Path(args.out)
-    summary = write_indent(run, out, figures=not args.no_figures)
+    with collect_notes() as notes:
+        run = indent_case(case, max_overlap=args.max_overlap, max_force=args.max_force, hardening=args.hardening,
+                          mesh=args.mesh)  # fmt: skip
+        out = Path(args.out)
+        summary = write_indent(run, out, figures=not args.no_figures, notes=notes)
+    print_notes("indent", summary["notes"])
     if args.json:
         print_json(summary)
-    else:
+    elif not args.quiet:
         fy = summary["fe_first_yield"]
         ex = summary["first_yield_exact_C"]
         print(f"max overlap {summary['max_overlap_m']:.4g} m, max force {summary['max_force_N']:.4g} N, "

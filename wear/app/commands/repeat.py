@@ -12,6 +12,7 @@ import argparse
 
 from wear.app.commands.common import (
     add_case_options,
+    add_out_option,
     case_from_args,
     collect_notes,
     print_default,
@@ -19,8 +20,8 @@ from wear.app.commands.common import (
     print_notes,
     progress_bar,
 )
+from wear.app.outputs.folder import output_folder
 from wear.app.outputs.repeat import RepeatWriter
-from wear.app.outputs.writer import atomic_output_dir
 from wear.chain.repeat import repeat
 
 HELP = "N impacts of the same ball at one site on the plate the previous ones left: dent, wear, shakedown"
@@ -42,7 +43,7 @@ def _integer(name: str, text: str) -> int:
 def configure(parser: argparse.ArgumentParser) -> None:
     add_case_options(parser, "repeat")
     parser.add_argument("--impacts", metavar="N", help="number of impacts (overrides repeat.impacts)")
-    parser.add_argument("--out", default=DEFAULT_OUT, metavar="DIR", help=f"output folder (default: {DEFAULT_OUT})")
+    add_out_option(parser, DEFAULT_OUT)
     parser.add_argument("--quiet", action="store_true", help="no progress bar and no table")
     parser.add_argument("--json", action="store_true", help="print summary.json to stdout instead of a table")
 
@@ -54,7 +55,8 @@ def _table(summary: dict, out: str) -> str:
     rows = [
         ("impacts (computed; of them elastic)",
          f"{summary['impacts']} ({summary['computed_impacts']}; {summary['elastic_computed_impacts']})", ""),
-        ("shakedown at impact", str(summary["shakedown_impact"]), ""),
+        ("shakedown", "none" if summary["shakedown_impact"] is None
+         else f"at impact {summary['shakedown_impact']}", ""),
         ("normal restitution first / last computed", f"{first['normal_restitution']:.4g} / "
                                                       f"{last['normal_restitution']:.4g}", ""),
         ("max pressure first / last computed", f"{first['max_pressure'] / 1e9:.4g} / "
@@ -73,15 +75,16 @@ def _table(summary: dict, out: str) -> str:
 
 
 def main(args: argparse.Namespace) -> int:
-    if args.print_default:
-        return print_default("repeat")
     options = {} if args.impacts is None else {"repeat": {"impacts": _integer("impacts", args.impacts)}}
     case = case_from_args(args, "repeat", options)  # bad input raises here, before any output
+    if args.print_default:
+        return print_default(args, "repeat", case)
     total = case.repeat.impacts
-    with atomic_output_dir(args.out) as out, progress_bar(total, "impactwear repeat", "impact", args.quiet) as bar:
+    bar = progress_bar(total, "impactwear repeat", "impact", args.quiet)
+    with output_folder(args.out, "repeat") as out, bar as update:
         writer = RepeatWriter(out, case.repeat.save_every)
         with collect_notes() as notes:
-            result = repeat(case, progress=lambda done, _total: bar(done), on_computed=writer.on_computed)
+            result = repeat(case, progress=lambda done, _total: update(done), on_computed=writer.on_computed)
         summary = writer.finish(result, notes)
     print_notes("repeat", summary["notes"])
     if args.json:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import sys
 
+from wear.app.outputs.folder import check_writable_folder
 from wear.app.reproduce.run import reproduce
 
 HELP = "recompute the paper's figures (PNG) from this toolkit and write reproduce.md"
@@ -23,6 +24,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def main(args: argparse.Namespace) -> int:
+    check_writable_folder(args.out)
+
     def progress(name: str) -> None:
         if not args.quiet:
             print(f"reproduce: {name} ...", file=sys.stderr, flush=True)

@@ -12,6 +12,7 @@ import argparse
 
 from wear.app.commands.common import (
     add_case_options,
+    add_out_option,
     case_from_args,
     collect_notes,
     print_default,
@@ -19,6 +20,7 @@ from wear.app.commands.common import (
     print_notes,
     progress_bar,
 )
+from wear.app.outputs.folder import check_output_folder
 from wear.app.outputs.run import write_run
 from wear.chain.single import STAGES, run
 
@@ -32,7 +34,7 @@ BAR_STAGES = (*STAGES, "meshes", "figures", "render")
 
 def configure(parser: argparse.ArgumentParser) -> None:
     add_case_options(parser, "run")
-    parser.add_argument("--out", default=DEFAULT_OUT, metavar="DIR", help=f"output folder (default: {DEFAULT_OUT})")
+    add_out_option(parser, DEFAULT_OUT)
     parser.add_argument("--quiet", action="store_true", help="no progress bar and no table")
     parser.add_argument("--json", action="store_true", help="print summary.json to stdout instead of a table")
 
@@ -70,9 +72,10 @@ def _table(summary: dict, out: str) -> str:
 
 
 def main(args: argparse.Namespace) -> int:
-    if args.print_default:
-        return print_default("run")
     case = case_from_args(args, "run")  # a malformed case raises ValueError here, before any output
+    if args.print_default:
+        return print_default(args, "run", case)
+    check_output_folder(args.out, "run")
     with progress_bar(len(BAR_STAGES), "impactwear run", "stage", args.quiet) as bar, collect_notes() as notes:
         started: list[str] = []
 
@@ -80,8 +83,8 @@ def main(args: argparse.Namespace) -> int:
             bar(len(started), stage)
             started.append(stage)
 
-        summary = write_run(run(case, progress=progress), args.out, progress=progress)
-    print_notes("run", notes + summary["notes"])
+        summary = write_run(run(case, progress=progress), args.out, progress=progress, notes=notes)
+    print_notes("run", summary["notes"])
     if args.json:
         print_json(summary)
     elif not args.quiet:

@@ -12,6 +12,7 @@ import shlex
 import sys
 from pathlib import Path
 
+from wear.app.outputs.folder import check_writable_folder
 from wear.app.validation.checks import GROUPS
 from wear.app.validation.runner import render_report, run_validation, write_report
 
@@ -37,8 +38,11 @@ def main(args: argparse.Namespace) -> int:
         if not args.quiet:
             print(f"validate: {name} ...", file=sys.stderr, flush=True)
 
-    result = run_validation(quick=args.quick, only=args.only, progress=progress)
     path = Path(args.report) if args.report else Path(args.out) / "validation.md"
+    if path.is_dir():
+        raise ValueError(f"--report={args.report!r} is a folder: give the report's file name (e.g. validation.md)")
+    check_writable_folder(path.parent, "--report" if args.report else "--out")
+    result = run_validation(quick=args.quick, only=args.only, progress=progress)
     command = "impactwear validate" + (" --quick" if args.quick else "")
     command += "".join(f" --only {shlex.quote(s)}" for s in args.only or ())
     write_report(path, render_report(result, command))

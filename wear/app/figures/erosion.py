@@ -16,7 +16,18 @@ import numpy as np
 
 from wear.app.figures.common import plt, save_figure
 
-__all__ = ["plot_time_series", "plot_surface", "plot_angles"]
+__all__ = ["plot_time_series", "plot_surface", "plot_angles", "HEADROOM", "headroom_top"]
+
+#: The top of a rate axis is this many times the largest value drawn (room for the legend above a flat line).
+HEADROOM = 1.15
+
+
+def headroom_top(values: np.ndarray, headroom: float = HEADROOM) -> float:
+    """Upper y limit ``headroom`` × the largest finite value of ``values`` (1 if there is none > 0)."""
+    finite = np.asarray(values, dtype=float)
+    finite = finite[np.isfinite(finite)]
+    top = float(finite.max()) if finite.size else 0.0
+    return headroom * top if top > 0.0 else 1.0
 
 
 def plot_time_series(
@@ -30,14 +41,18 @@ def plot_time_series(
     ax1.set_xlabel("exposure time (s)")
     ax1.set_ylabel("mass loss of the patch (kg)")
     ax1.grid(alpha=0.3)
-    rate = np.asarray(erosion_rate)
+    rate = np.asarray(erosion_rate, dtype=float)
     ax2.plot(t[1:], rate[1:], "-", label="cumulative")
+    shown = [rate[1:]]
     if interval_rate is not None:
-        ax2.plot(t[1:], np.asarray(interval_rate)[1:], ".", ms=3, label="between samples")
-        ax2.legend()
+        shown.append(np.asarray(interval_rate, dtype=float)[1:])
+        ax2.plot(t[1:], shown[-1], ".", ms=3, label="between samples")
     ax2.set_xlabel("exposure time (s)")
     ax2.set_ylabel("erosion rate (kg/kg of particles)")
-    ax2.set_ylim(bottom=0.0)
+    # a steady rate is a flat line at the maximum: without headroom it sits on the frame, under the legend
+    ax2.set_ylim(0.0, headroom_top(np.concatenate(shown)))
+    if interval_rate is not None:
+        ax2.legend(loc="best")
     ax2.grid(alpha=0.3)
     if title:
         fig.suptitle(title)

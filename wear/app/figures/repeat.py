@@ -12,10 +12,19 @@ import os
 from pathlib import Path
 
 import numpy as np
+from matplotlib.ticker import MaxNLocator
 
 from wear.app.figures.common import plt, save_figure
 
-__all__ = ["plot_repeat"]
+__all__ = ["plot_repeat", "shakedown_note"]
+
+
+def shakedown_note(shakedown_impact: int | None, tolerance: float | None = None) -> str:
+    """The title's remark on shakedown: where it happened, "no shakedown" where it was looked for (a
+    ``tolerance`` is given) and not found, else nothing."""
+    if shakedown_impact is not None:
+        return f"  (shakedown at impact {shakedown_impact}, dotted)"
+    return "  (no shakedown: every Δᾱ above the tolerance)" if tolerance else ""
 
 
 def plot_repeat(columns: dict, path: str | os.PathLike, title: str = "", shakedown_impact: int | None = None,
@@ -52,11 +61,14 @@ def plot_repeat(columns: dict, path: str | os.PathLike, title: str = "", shakedo
     for ax in axes.ravel():
         if n[-1] > 20:
             ax.set_xscale("log")
+        else:
+            # impacts are counted: a linear axis over a few of them would otherwise tick at 1.5, 2.5, …
+            ax.xaxis.set_major_locator(MaxNLocator(integer=True))
         ax.grid(alpha=0.3)
-        if shakedown_impact:
+        if shakedown_impact is not None:
             ax.axvline(shakedown_impact, color="0.5", lw=0.8, ls=":")
     for ax in (ax_e, ax_p):
         ax.set_xlabel("impact number")
-    fig.suptitle(title + ("" if not shakedown_impact else f"  (shakedown at impact {shakedown_impact}, dotted)"))
+    fig.suptitle(title + shakedown_note(shakedown_impact, tolerance))
     fig.tight_layout()
     return save_figure(fig, path)

@@ -11,7 +11,8 @@ import os
 import numpy as np
 
 from wear.app.figures.calibration import plot_calibration
-from wear.app.outputs.writer import atomic_output_dir, versions, write_json, write_rows, write_text
+from wear.app.outputs.folder import output_folder
+from wear.app.outputs.writer import versions, write_json, write_rows, write_text
 from wear.case import TABLES, dump_case
 from wear.chain.calibrate import CalibrationResult
 
@@ -25,7 +26,7 @@ def write_calibration(result: CalibrationResult, out: str | os.PathLike) -> dict
     """Write the output folder of ``result`` atomically; returns the summary."""
     d = result.data
     summary = {**result.summary(), "case": result.case.to_dict(CASE_TABLES), "versions": versions()}
-    with atomic_output_dir(out) as tmp:
+    with output_folder(out, "calibrate") as tmp:
         write_json(tmp / "calibration.json", summary)
         fitted = d.fitted & ~np.isin(np.arange(d.angle.size), result.left_out)
         header = ["row", "angle_deg", "speed_m_s", *d.keys, f"measured_{d.quantity}", f"predicted_{d.quantity}",

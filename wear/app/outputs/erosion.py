@@ -1,5 +1,5 @@
-"""The output folder of ``impactwear erode`` (:mod:`wear.erosion.run`), each file written atomically by the one
-writer (SI units; angles in degrees from the plate normal):
+"""The output folder of ``impactwear erode`` (:mod:`wear.erosion.run`), built aside and moved in whole
+(:func:`wear.app.outputs.folder.output_folder`; SI units; angles in degrees from the plate normal):
 
 - ``erosion.csv``: time_s, impacts, particle_mass_kg, mass_loss_kg, mass_loss_per_area_kg_m2, erosion_rate
   (kg/kg, cumulative), interval_erosion_rate (kg/kg since the previous row), max_depth_m, rms_slope;
@@ -16,12 +16,14 @@ Over several stream angles: one such folder per angle (``angle_<deg>/``, without
 from __future__ import annotations
 
 import os
+from collections.abc import Sequence
 from pathlib import Path
 
 import meshio
 import numpy as np
 
 from wear.app.figures import erosion as fig
+from wear.app.outputs.folder import output_folder
 from wear.app.outputs.writer import write_json, write_mesh, write_pvd, write_rows
 from wear.erosion import ErosionRun
 
@@ -49,11 +51,15 @@ def surface_grid_mesh(x: np.ndarray, y: np.ndarray, surface: np.ndarray, wear: n
     return meshio.Mesh(points, [("quad", quads)], point_data=data)
 
 
-def write_erosion(run: ErosionRun, out: str | os.PathLike, series: bool = True) -> dict:
-    """Write one erosion into the folder ``out`` (created); with ``series`` also the frames, the .pvd and the
-    figures. Returns the summary."""
-    out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
+def write_erosion(run: ErosionRun, out: str | os.PathLike, notes: Sequence[str] = ()) -> dict:
+    """Write one erosion, with its series and figures, as the output folder ``out``; returns the summary (with
+    ``notes``: what the run said, e.g. its warnings)."""
+    with output_folder(out, "erode") as tmp:
+        return _write_files(run, tmp, series=True, notes=notes)
+
+
+def _write_files(run: ErosionRun, out: Path, series: bool, notes: Sequence[str] = ()) -> dict:
+    """The files of one erosion in the folder ``out``; with ``series`` also the frames, the .pvd and the figures."""
     r = run.result
     area = r.patch_size**2
     write_rows(out / "erosion.csv", EROSION_COLUMNS,
@@ -74,7 +80,7 @@ def write_erosion(run: ErosionRun, out: str | os.PathLike, series: bool = True) 
         fig.plot_time_series(r.time, r.mass_loss_kg, r.erosion_rate, out / "erosion.png", title,
                              interval_rate=r.interval_erosion_rate)  # fmt: skip
         fig.plot_surface(r.x, r.y, r.surface, out / "surface.png", r.stream.azimuth, title)
-    summary = run.summary()
+    summary = {**run.summary(), "notes": list(dict.fromkeys(notes))}
     write_json(out / "summary.json", summary)
     return summary
 
@@ -82,15 +88,20 @@ def write_erosion(run: ErosionRun, out: str | os.PathLike, series: bool = True) 
 def write_erosion_angles(runs: list[ErosionRun], out: str | os.PathLike) -> list[tuple[float, float, float]]:
     """Write one erosion per stream angle into ``out/angle_<deg>/`` and ``erosion_vs_angle.csv`` and ``.png``;
     returns the rows (angle deg, erosion rate kg/kg, mass loss kg)."""
-    out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
     rows = []
-    for run in runs:
-        a = run.result.stream.angle
-        write_erosion(run, out / f"angle_{a:g}", series=False)
-        rows.append((a, run.result.final_erosion_rate, float(run.result.mass_loss_kg[-1])))
-    write_rows(out / "erosion_vs_angle.csv", ["angle_deg", "erosion_rate", "mass_loss_kg"], rows)
-    case = runs[0].case
-    fig.plot_angles([r[0] for r in rows], [r[1] for r in rows], [r[2] for r in rows], out / "erosion_vs_angle.png",
-                    f"{case.impact.speed:g} m/s, {case.erosion.exposure_time:g} s")  # fmt: skip
+    with output_folder(out, "erode") as tmp:
+        for run in runs:
+            a = run.result.stream.angle
+            (tmp / f"angle_{a:g}").mkdir()
+            _write_files(run, tmp / f"angle_{a:g}", series=False)
+            rows.append((a, run.result.final_erosion_rate, float(run.result.mass_loss_kg[-1])))
+        write_rows(tmp / "erosion_vs_angle.csv", ["angle_deg", "erosion_rate", "mass_loss_kg"], rows)
+        case = runs[0].case
+        fig.plot_angles(
+            [r[0] for r in rows],
+            [r[1] for r in rows],
+            [r[2] for r in rows],
+            tmp / "erosion_vs_angle.png",
+            f"{case.impact.speed:g} m/s, {case.erosion.exposure_time:g} s",
+        )
     return rows

@@ -1,23 +1,29 @@
 """The output folder of ``impactwear indent`` (:func:`wear.chain.indent.indent_case`): ``force_overlap.csv``,
-``pressure.csv`` (p(r) per step), ``residual_depth.csv``, ``plate.vtu``, the figures and ``summary.json``, each
-written atomically by the one writer. SI units in every column name."""
+``pressure.csv`` (p(r) per step), ``residual_depth.csv``, ``plate.vtu``, the figures and ``summary.json``, built
+aside and moved in whole (:func:`wear.app.outputs.folder.output_folder`). SI units in every column name."""
 
 from __future__ import annotations
 
 import os
+from collections.abc import Sequence
 from pathlib import Path
 
 from wear.app.figures.indent import write_figures
+from wear.app.outputs.folder import output_folder
 from wear.app.outputs.writer import write_json, write_mesh, write_rows
 from wear.chain.indent import IndentRun
 
 __all__ = ["write_indent"]
 
 
-def write_indent(run: IndentRun, out: str | os.PathLike, figures: bool = True) -> dict:
-    """Write the outputs of ``run`` into the folder ``out`` (created); returns the summary."""
-    out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
+def write_indent(run: IndentRun, out: str | os.PathLike, figures: bool = True, notes: Sequence[str] = ()) -> dict:
+    """Write the outputs of ``run`` as the output folder ``out``; returns the summary (with ``notes``: what the run
+    said, e.g. its warnings)."""
+    with output_folder(out, "indent") as tmp:
+        return _write_files(run, tmp, figures, notes)
+
+
+def _write_files(run: IndentRun, out: Path, figures: bool, notes: Sequence[str]) -> dict:
     res = run.result
     steps = range(res.overlap.size)
     write_rows(out / "force_overlap.csv",
@@ -32,6 +38,6 @@ def write_indent(run: IndentRun, out: str | os.PathLike, figures: bool = True) -
     write_mesh(out / "plate.vtu", res.to_meshio())
     if figures:
         write_figures(res, out)
-    summary = run.summary()
+    summary = {**run.summary(), "notes": list(dict.fromkeys(notes))}
     write_json(out / "summary.json", summary)
     return summary

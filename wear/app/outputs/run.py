@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import os
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from pathlib import Path
 
 import meshio
@@ -17,14 +17,23 @@ import numpy as np
 
 from contact import History
 from wear.app.figures.run import write_run_figures
+from wear.app.outputs.folder import output_folder
 from wear.app.outputs.render import render_surface, rendering_available
-from wear.app.outputs.writer import atomic_output_dir, versions, write_csv, write_json, write_mesh, write_npz
+from wear.app.outputs.writer import versions, write_csv, write_json, write_mesh, write_npz
 from wear.chain.single import RunResult
 from wear.integrate import axisymmetric_wear_depth
 from wear.pressure import sliding_speed
 from wear.surface import deform_plate_mesh, plate_block_mesh, surface_mesh
 
-__all__ = ["write_run", "history_columns", "HISTORY_COLUMNS"]
+__all__ = ["write_run", "history_columns", "HISTORY_COLUMNS", "PRESSURE_ABOUT"]
+
+#: What pressure.npz holds (stored in it as ``about``).
+PRESSURE_ABOUT = (
+    "p(r, t): pressure_Pa[i, k] (Pa) at time_s[i] (s) and radius r_m[i, k] (m) from the contact centre, which is at "
+    "contact_x_m[i] (m) along the impact direction; the pressure is 0 beyond extent_m[i] (m); s[k] is the sample "
+    "coordinate (r = extent * sqrt(1 - s^2)); source names the pressure model. With the FE plate also fe_time_s, "
+    "fe_surface_r_m and fe_pressure_Pa[i, j]: the FE plate's contact pressure at its surface nodes."
+)
 
 #: history.csv columns: :class:`contact.History` field → column name with units.
 HISTORY_COLUMNS = {
@@ -50,20 +59,24 @@ def history_columns(history: History) -> dict[str, np.ndarray]:
     return {label: np.asarray(getattr(history, attr), dtype=float) for attr, label in HISTORY_COLUMNS.items()}
 
 
-def write_run(result: RunResult, out: str | os.PathLike, progress: Callable[[str], None] | None = None) -> dict:
+def write_run(result: RunResult, out: str | os.PathLike, progress: Callable[[str], None] | None = None,
+              notes: Sequence[str] = ()) -> dict:  # fmt: skip
     """Write the whole output folder of ``result`` atomically; returns the summary. ``progress(stage)`` is called
-    at "meshes", "figures", "render"."""
+    at "meshes", "figures", "render"; ``notes`` (what the run said, e.g. its warnings) go into the summary with the
+    writer's own."""
     notify = progress or (lambda stage: None)
     case = result.case
     times = dict(result.stage_times)
-    notes: list[str] = []
-    with atomic_output_dir(out) as tmp:
+    notes = list(notes)
+    with output_folder(out, "run") as tmp:
         notify("meshes")
         t0 = time.perf_counter()
         write_csv(tmp / "history.csv", history_columns(result.impact.history))
         ph = result.pressure
+        radius = ph.extent[:, None] * np.sqrt(np.clip(1.0 - ph.s[None, :] ** 2, 0.0, None))
         arrays = {"time_s": ph.time, "contact_x_m": ph.contact_x, "extent_m": ph.extent, "pressure_Pa": ph.pressure,
-                  "s": ph.s, "source": np.array(ph.source)}  # fmt: skip
+                  "r_m": radius, "s": ph.s, "source": np.array(ph.source),
+                  "about": np.array(PRESSURE_ABOUT)}  # fmt: skip
         if result.coupling is not None:
             ft, fr, fp = result.coupling.pressure_table
             arrays.update(fe_time_s=ft, fe_surface_r_m=fr, fe_pressure_Pa=fp)
@@ -100,28 +113,33 @@ def write_run(result: RunResult, out: str | os.PathLike, progress: Callable[[str
         summary = result.summary()
         summary["stage_times_s"] = times
         summary["versions"] = versions()
-        summary["notes"] = notes
+        summary["notes"] = list(dict.fromkeys(notes))
         summary["files"] = [*sorted(p.name for p in Path(tmp).iterdir()), "summary.json"]
         write_json(tmp / "summary.json", summary)
     return summary
 
 
 def _plate_fe(result: RunResult) -> meshio.Mesh:
-    """The FE plate after the impact (points (r, z, 0) m, point data ``u`` m, ``pressure`` Pa, cell data
-    ``von_mises`` Pa, ``equivalent_plastic_strain``); for a normal impact its surface nodes are also moved down by
-    the axisymmetric wear depth h(r) (point data ``wear_depth``, m)."""
+    """The FE plate after the impact: points (r, z, 0) m, point data ``u`` (m) and ``max_pressure`` (Pa: the largest
+    contact pressure each surface node carried during the impact — after the rebound the pressure itself is 0), cell
+    data ``von_mises`` (Pa) and ``equivalent_plastic_strain``. For a normal impact the surface nodes are also moved
+    down by the axisymmetric wear depth h(r) (point data ``wear_depth``, m); an oblique impact's wear is not
+    axisymmetric and is in ``surface.vtu`` only."""
     mesh = result.fe.to_meshio()
     pts = np.asarray(mesh.points, dtype=float)
     u = np.asarray(mesh.point_data["u"], dtype=float)
     undeformed_z = pts[:, 1] - u[:, 1]
+    undeformed_r = pts[:, 0] - u[:, 0]
     on_surface = np.abs(undeformed_z) <= 1e-9 * float(np.ptp(pts[:, 0]))
-    wear = np.zeros(pts.shape[0])
+    point_data = {k: v for k, v in mesh.point_data.items() if k != "pressure"}
+    fe = result.fe
+    order = np.argsort(fe.surface_r)
+    peak = np.interp(undeformed_r, fe.surface_r[order], np.max(fe.pressure, axis=0)[order], right=0.0)
+    point_data["max_pressure"] = np.where(on_surface, peak, 0.0)
     if result.case.impact.angle == 0.0:
-        undeformed_r = pts[:, 0] - u[:, 0]
         h = axisymmetric_wear_depth(result.pressure, sliding_speed(result.impact, result.case.wear.speed),
                                     result.case.wear.wear_law(), undeformed_r)  # fmt: skip
         wear = np.where(on_surface & (undeformed_r >= 0), h, 0.0)
-    pts[:, 1] -= wear
-    point_data = dict(mesh.point_data)
-    point_data["wear_depth"] = wear
+        pts[:, 1] -= wear
+        point_data["wear_depth"] = wear
     return meshio.Mesh(pts, mesh.cells, point_data=point_data, cell_data=dict(mesh.cell_data))

@@ -1,9 +1,10 @@
-"""The one writer of every output file and folder: each file is written to a temporary file in its folder and
-renamed into place, each output folder is built as a hidden temporary folder and renamed into place at the end.
+"""The one writer of every output file: each file is written to a temporary file in its folder and renamed into
+place (output folders: :mod:`wear.app.outputs.folder`).
 
-An interrupted or failed write leaves either the previous complete file or folder or nothing — never a
-complete-looking partial one. Temporary names carry the writing process's id (``.<name>.<pid>.<random>.tmp<suffix>``,
-``.<name>.partial-<pid>-<random>``), so that :func:`remove_stale_temps` can delete those a killed process left.
+An interrupted or failed write leaves either the previous complete file or nothing — never a complete-looking partial
+one. Temporary names carry the writing process's id (``.<name>.<pid>.<random>.tmp<suffix>``, and for folders
+``.<name>.partial-<pid>-<random>``), so that :func:`remove_stale_temps` can delete those a killed process left. Files
+get the permissions of the user's umask (:func:`permissions`), as ``open`` would give them.
 """
 
 from __future__ import annotations
@@ -16,8 +17,7 @@ import platform
 import re
 import shutil
 import tempfile
-from collections.abc import Callable, Iterable, Iterator, Mapping
-from contextlib import contextmanager
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import asdict, is_dataclass
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
@@ -26,36 +26,23 @@ from typing import IO, Any
 import meshio
 import numpy as np
 
-__all__ = ["atomic_output_dir", "atomic_write", "to_jsonable", "versions", "write_csv", "write_json",
-           "write_mesh", "write_npz", "write_pvd", "write_rows", "write_text", "remove_stale_temps"]  # fmt: skip
+__all__ = ["atomic_write", "is_temporary", "permissions", "remove_stale_temps", "to_jsonable", "versions",
+           "write_csv", "write_json", "write_mesh", "write_npz", "write_pvd", "write_rows", "write_text"]  # fmt: skip
 
 
-@contextmanager
-def atomic_output_dir(target: str | os.PathLike, *, overwrite: bool = True) -> Iterator[Path]:
-    """Yield a temporary folder; on success it replaces ``target``, on any error it is removed.
+def _umask() -> int:
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
 
-    With ``overwrite=False`` an existing ``target`` is an error (checked before anything is written). The swap
-    keeps the old folder until the new one is in place: rename old → trash, rename new → target, delete trash.
-    """
-    target = Path(target).resolve()
-    if target.exists() and not target.is_dir():
-        raise ValueError(f"out={str(target)!r} exists and is not a folder: give a folder path")
-    if target.exists() and not overwrite:
-        raise ValueError(f"out={str(target)!r} already exists: choose another folder or allow overwriting")
-    target.parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{target.name}.partial-{os.getpid()}-", dir=target.parent))
-    try:
-        yield tmp
-    except BaseException:
-        shutil.rmtree(tmp, ignore_errors=True)
-        raise
-    trash = None
-    if target.exists():
-        trash = Path(tempfile.mkdtemp(prefix=f".{target.name}.old-", dir=target.parent))
-        os.replace(target, trash / "old")
-    os.replace(tmp, target)
-    if trash is not None:
-        shutil.rmtree(trash, ignore_errors=True)
+
+# read once, at import: os.umask can only be read by setting it, which is not safe once threads run
+_UMASK = _umask()
+
+
+def permissions() -> tuple[int, int]:
+    """(file mode, folder mode) the user's umask gives new files and folders (e.g. 0o644, 0o755 for umask 022)."""
+    return 0o666 & ~_UMASK, 0o777 & ~_UMASK
 
 
 def atomic_write(path: str | os.PathLike, dump: Callable[[IO], Any] | Callable[[str], Any], *, mode: str = "text",
@@ -81,7 +68,7 @@ def atomic_write(path: str | os.PathLike, dump: Callable[[IO], Any] | Callable[[
                 if fsync:
                     f.flush()
                     os.fsync(f.fileno())
-        os.chmod(tmp, 0o644)
+        os.chmod(tmp, permissions()[0])
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
@@ -179,13 +166,19 @@ def versions() -> dict[str, str]:
 _TEMP = re.compile(r"^\.(?P<name>.+)\.(?:(?P<pid>\d+)\.[A-Za-z0-9_]+\.tmp(?:\.\w+)?|partial-(?P<dir_pid>\d+)-\w+)$")
 
 
-def remove_stale_temps(folder: str | os.PathLike) -> list[Path]:
+def is_temporary(name: str) -> bool:
+    """Whether ``name`` is a temporary file or folder name of this writer."""
+    return _TEMP.match(name) is not None
+
+
+def remove_stale_temps(folder: str | os.PathLike, name: str | None = None) -> list[Path]:
     """Delete the temporary files and folders in ``folder`` that this writer's processes left when killed (their
-    process no longer runs); returns what was deleted. Another running process's temporaries are kept."""
+    process no longer runs), only those of the entry ``name`` if given; returns what was deleted. Another running
+    process's temporaries are kept."""
     removed = []
     for p in Path(folder).glob(".*"):
         m = _TEMP.match(p.name)
-        if m is None:
+        if m is None or (name is not None and m["name"] != name):
             continue
         pid = int(m["pid"] or m["dir_pid"])
         try:

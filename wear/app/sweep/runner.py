@@ -41,6 +41,7 @@ from pathlib import Path
 from tqdm import tqdm
 
 from wear.app.figures.sweep import plot_sweep
+from wear.app.outputs.folder import claim_output_folder
 from wear.app.outputs.writer import remove_stale_temps, write_text
 from wear.app.sweep.spec import SweepCase, SweepSpec, flatten
 from wear.app.sweep.stages import STAGES, execute_case
@@ -49,6 +50,9 @@ from wear.case import TABLES
 __all__ = ["SweepOutcome", "SweepAborted", "run_sweep", "results_table", "MAX_ATTEMPTS"]
 
 #: A case is recorded as failed after the worker running it died this many times.
+#: What a sweep writes in its folder (the rest of the folder is left alone).
+ENTRIES = ("sweep.toml", "cases", "results.csv", "sweep_1d.png", "sweep_2d.png")
+
 MAX_ATTEMPTS = 3
 
 #: Environment variables set to the thread count (1) of every worker, before numpy and numba load.
@@ -319,12 +323,9 @@ def run_sweep(
     for name, value in (("workers", workers), ("dask_local", dask_local)):
         if value is not None and (isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= 4096):
             raise ValueError(f"{name}={value!r} is out of range: must be an integer in [1, 4096] processes")
-    out = Path(out)
-    if out.exists() and not out.is_dir():
-        raise ValueError(f"out={str(out)!r} exists and is not a folder: give a folder path")
-    (out / "cases").mkdir(parents=True, exist_ok=True)
+    out = claim_output_folder(out, "sweep", ENTRIES)
+    (out / "cases").mkdir(exist_ok=True)
     remove_stale_temps(out / "cases")
-    remove_stale_temps(out)
     if spec.source:
         write_text(out / "sweep.toml", spec.source, fsync=True)
 

@@ -1,0 +1,262 @@
+"""Figures a paper can use: a plastic zone drawn as a field with its boundary, a 3-D view whose relief is visible,
+a legend that covers no data, sweep panels without round-off or offset labels, integer impact numbers.
+
+Each figure function is called directly on small synthetic data (matplotlib Agg); the figure is taken before it
+is saved (``save_figure`` replaced) so its artists can be inspected.
+"""
+
+import math
+from types import SimpleNamespace
+
+import meshio
+import numpy as np
+import pytest
+from matplotlib.contour import ContourSet
+from matplotlib.ticker import MaxNLocator
+
+import wear.app.figures.erosion as erosion_figures
+import wear.app.figures.repeat as repeat_figures
+import wear.app.figures.sweep as sweep_figures
+from wear.app.figures.common import plt
+from wear.app.figures.field import barycentric, child_of, project_to_nodes, split_in_four
+from wear.app.figures.indent import plastic_zone_figure
+from wear.app.outputs.render import default_exaggeration, exaggeration_for, round_ticks
+
+
+@pytest.fixture
+def captured(monkeypatch):
+    """The figures the plotting functions would save (keyed by file name), instead of saving them."""
+    figures = {}
+
+    def keep(fig, path, *args, **kwargs):
+        figures[str(path).rsplit("/", 1)[-1]] = fig
+        return path
+
+    for module in (erosion_figures, repeat_figures, sweep_figures):
+        monkeypatch.setattr(module, "save_figure", keep)
+    yield figures
+    for fig in figures.values():
+        plt.close(fig)
+
+
+# ------------------------------------------------------------------ plastic zone
+
+
+def _grid_mesh(size: float, cells: int):
+    """Right triangles on [0, size] × [−size, 0] (m): points (n, 2), triangles (m, 3)."""
+    x = np.linspace(0.0, size, cells + 1)
+    r, z = np.meshgrid(x, -x[::-1], indexing="ij")
+    points = np.column_stack([r.ravel(), z.ravel()])
+    idx = np.arange(points.shape[0]).reshape(cells + 1, cells + 1)
+    a, b, c, d = idx[:-1, :-1].ravel(), idx[1:, :-1].ravel(), idx[1:, 1:].ravel(), idx[:-1, 1:].ravel()
+    return points, np.vstack([np.column_stack([a, b, c]), np.column_stack([a, c, d])])
+
+
+def _quadrature_points(points, triangles):
+    """Three interior points per triangle (the degree-2 Gauss rule's barycentric positions)."""
+    lam = np.array([[2 / 3, 1 / 6, 1 / 6], [1 / 6, 2 / 3, 1 / 6], [1 / 6, 1 / 6, 2 / 3]])
+    xy = np.einsum("qi,eid->eqd", lam, points[triangles])
+    return xy[..., 0], xy[..., 1]
+
+
+def test_split_in_four_and_child_coordinates_reproduce_the_points():
+    """Children tile the parent (areas ¼ each, one shared midpoint per edge), and a point's child coordinates
+    rebuild the point from the child's vertices (the map used to place quadrature values on the fine mesh)."""
+    points, triangles = _grid_mesh(1.0, 3)
+    fine, children = split_in_four(points, triangles)
+    edges = {tuple(sorted(e)) for t in triangles for e in ((t[0], t[1]), (t[1], t[2]), (t[0], t[2]))}
+    assert fine.shape[0] == points.shape[0] + len(edges)
+
+    def area(p, t):
+        d1, d2 = p[t[:, 1]] - p[t[:, 0]], p[t[:, 2]] - p[t[:, 0]]
+        return 0.5 * np.abs(d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0])
+
+    np.testing.assert_allclose(area(fine, children), np.repeat(area(points, triangles) / 4, 4))
+    rng = np.random.default_rng(1)
+    owner = rng.integers(0, triangles.shape[0], 200)
+    w = rng.dirichlet([1.0, 1.0, 1.0], 200)
+    xy = np.einsum("ki,kid->kd", w, points[triangles[owner]])
+    lam = barycentric(points, triangles, owner, xy)
+    np.testing.assert_allclose(lam, w, atol=1e-12)
+    child, local = child_of(lam)
+    assert local.min() > -1e-12 and np.allclose(local.sum(axis=1), 1.0)
+    rebuilt = np.einsum("ki,kid->kd", local, fine[children[4 * owner + child]])
+    np.testing.assert_allclose(rebuilt, xy, atol=1e-12)
+    # a constant is projected exactly; the projection stays within the values' range
+    values = rng.uniform(0.0, 1.0, 200)
+    nodal = project_to_nodes(fine.shape[0], children, 4 * owner + child, local, values)
+    assert nodal.min() >= 0.0 and nodal.max() <= 1.0
+    ones = project_to_nodes(fine.shape[0], children, 4 * owner + child, local, np.ones(200))
+    assert set(np.unique(ones)) <= {0.0, 1.0}
+
+
+def test_plastic_zone_is_a_filled_field_with_the_boundary_as_a_line():
+    """A plastic zone that is a disc of radius 40 µm round (0, −50 µm) (ᾱ decreasing to 0 at its rim, exactly 0
+    outside) gives filled contours, a colour bar in %, µm axes at equal aspect, and a boundary line whose points
+    all lie within one element (10 µm) of the 40 µm circle."""
+    a = 50e-6
+    points, triangles = _grid_mesh(2.5 * a, 12)
+    qp_r, qp_z = _quadrature_points(points, triangles)
+    dist = np.hypot(qp_r, qp_z + a)
+    alpha = np.where(dist < 40e-6, 0.004 * (1.0 - dist / 40e-6), 0.0)
+    disc = SimpleNamespace(mesh=SimpleNamespace(p=points.T, t=triangles.T), qp_r=qp_r, qp_z=qp_z)
+    res = SimpleNamespace(
+        _run=SimpleNamespace(solver=SimpleNamespace(disc=disc), final=SimpleNamespace(alpha=alpha)),
+        contact_radius=np.array([0.0, a, 0.8 * a]),
+    )
+    fig = plastic_zone_figure(res)
+    try:
+        ax, cax = fig.axes
+        sets = [c for c in ax.collections if isinstance(c, ContourSet)]
+        filled = [c for c in sets if c.filled]
+        lines = [c for c in sets if not c.filled]
+        assert len(filled) == 1 and len(lines) == 1
+        assert filled[0].levels[0] == 0.0 and filled[0].levels[-1] >= 0.4  # ᾱ max 0.4 %
+        boundary = np.vstack([p.vertices for p in lines[0].get_paths() if len(p.vertices)])
+        radius_um = np.hypot(boundary[:, 0], boundary[:, 1] + 50.0)
+        assert np.all(np.abs(radius_um - 40.0) < 10.0), (radius_um.min(), radius_um.max())
+        assert "µm" in ax.get_xlabel() and "µm" in ax.get_ylabel()
+        assert ax.get_aspect() == 1.0
+        assert "%" in cax.get_ylabel() and "plastic strain" in cax.get_ylabel()
+        assert ax.get_xlim() == pytest.approx((0.0, 125.0)) and ax.get_ylim() == pytest.approx((-125.0, 0.0))
+    finally:
+        plt.close(fig)
+
+
+# ------------------------------------------------------------------ 3-D surface exaggeration
+
+
+@pytest.mark.parametrize(
+    "relief, span",
+    [(3.75e-6, 0.4e-3), (3.1e-6, 0.4e-3), (0.2e-6, 1e-3), (50e-9, 20e-6), (1.2e-6, 5e-3), (7e-6, 0.3e-3)],
+)
+def test_exaggeration_draws_the_relief_at_10_to_25_percent_of_the_span(relief, span):
+    """The factor is on the 1-2-5 series and puts the drawn relief between 10 % and 25 % of the span: enough to
+    see the dent, never a spike (checked on the ratio itself, not on the rule)."""
+    factor = exaggeration_for(relief, span)
+    mantissa = factor / 10 ** math.floor(math.log10(factor) + 1e-12)
+    assert min(abs(mantissa - m) for m in (1.0, 2.0, 5.0)) < 1e-9
+    assert 0.10 < factor * relief / span <= 0.25
+
+
+def test_exaggeration_of_the_user_case_and_of_a_mesh():
+    """3.75 µm of depth over 0.4 mm: ×20 (relief 18.75 % of the span; ×10 drew it at 9 %, which looked flat).
+    A mesh's relief is peak-to-valley (0.25 µm pile-up counts) and its span the larger in-plane extent."""
+    assert exaggeration_for(3.75e-6, 0.4e-3) == 20.0
+    assert 20.0 * 3.75e-6 / 0.4e-3 == pytest.approx(0.1875)
+    assert exaggeration_for(1e-3, 1e-3) == 1.0  # deep relief is drawn at true scale, not shrunk
+    assert exaggeration_for(0.0, 1e-3) == 1.0
+    x = np.linspace(-0.2e-3, 0.2e-3, 5)
+    gx, gy = np.meshgrid(x, 0.5 * x, indexing="ij")
+    z = np.where(np.hypot(gx, gy) < 1e-4, -3.75e-6, 0.25e-6)
+    mesh = meshio.Mesh(np.column_stack([gx.ravel(), gy.ravel(), z.ravel()]), [("vertex", np.arange(25)[:, None])])
+    factor = default_exaggeration(mesh)
+    assert factor == exaggeration_for(4.0e-6, 0.4e-3) == 20.0
+
+
+def test_colour_bar_ticks_are_round():
+    """Labels at round values inside the data range (VTK alone labelled 3.75, 2.75, 1.76, 0.764, −0.232)."""
+    np.testing.assert_allclose(round_ticks(-0.232, 3.75), [0.0, 1.0, 2.0, 3.0])
+    ticks = round_ticks(0.0123, 0.0871)
+    assert ticks[0] >= 0.0123 and ticks[-1] <= 0.0871 and 3 <= len(ticks) <= 6
+    assert all(len(f"{t:.3g}".lstrip("-").replace("0.", "")) <= 3 for t in ticks)
+    np.testing.assert_allclose(round_ticks(0.1, 0.9), [0.2, 0.4, 0.6, 0.8])
+    assert round_ticks(-1.0, 1.0)[2] == 0.0  # exactly 0, not 1e-17 (which "%.3g" would print as such)
+
+
+# ------------------------------------------------------------------ erosion
+
+
+def test_erosion_rate_has_headroom_and_the_legend_covers_no_data(captured, tmp_path):
+    """A steady rate (a flat line at the maximum) no longer sits on the frame: the y axis ends ≥ 1.1 × the
+    largest value drawn, and the legend's box holds none of the drawn points."""
+    t = np.linspace(0.0, 3000.0, 80)
+    rate = np.full(80, 1.5e-7)
+    interval = rate * (1.0 + 0.01 * np.sin(t))
+    erosion_figures.plot_time_series(t, rate * t, rate, tmp_path / "erosion.png", "3.9 m/s", interval_rate=interval)
+    fig = captured["erosion.png"]
+    ax = fig.axes[1]
+    assert ax.get_ylim()[1] >= 1.1 * interval[1:].max()
+    fig.canvas.draw()
+    box = ax.get_legend().get_window_extent()
+    for line in ax.get_lines():
+        xy = ax.transData.transform(np.column_stack(line.get_data()))
+        inside = (xy[:, 0] > box.x0) & (xy[:, 0] < box.x1) & (xy[:, 1] > box.y0) & (xy[:, 1] < box.y1)
+        assert not inside.any(), line.get_label()
+
+
+# ------------------------------------------------------------------ sweep
+
+
+def _sweep_rows():
+    angles = [5.0, 25.0, 45.0, 65.0, 85.0]
+    rows = []
+    for k, angle in enumerate(angles):
+        rows.append(
+            {
+                "status": "ok",
+                "impact.angle": angle,
+                "normal_work": (-1) ** k * 1e-14 * (1 + k),  # zero to round-off beside energies of mJ
+                "energy_out": 1.9e-3 - 1e-5 * k,
+                "energy_in": 1.99e-3,  # constant
+                "incidence": angle,  # the swept input over again
+                "result.impact.angle": angle,
+                "contact_time": 1.28e-5 + 1e-7 * k * k,
+            }
+        )
+    return {"impact.angle": angles}, rows
+
+
+def test_sweep_panels_skip_round_off_constants_and_inputs():
+    axes, rows = _sweep_rows()
+    units = {"normal_work": "J", "energy_out": "J", "energy_in": "J", "contact_time": "s", "incidence": "deg"}
+    results = ["normal_work", "energy_out", "energy_in", "incidence", "result.impact.angle", "contact_time"]
+    assert sweep_figures.panel_results(axes, rows, results, units) == ["energy_out", "contact_time"]
+
+
+def test_sweep_figure_puts_the_scale_in_the_title_not_an_offset(captured, tmp_path):
+    """No "1e−5" offset text above a panel (it ran into the title): the SI prefix is in the title instead."""
+    axes, rows = _sweep_rows()
+    units = {"normal_work": "J", "energy_out": "J", "contact_time": "s", "impact.angle": "deg"}
+    sweep_figures.plot_sweep(axes, rows, ["normal_work", "energy_out", "contact_time"], tmp_path, units=units)
+    fig = captured["sweep_1d.png"]
+    fig.canvas.draw()
+    shown = [ax for ax in fig.axes if ax.get_visible()]
+    assert [ax.get_title() for ax in shown] == ["energy_out [mJ]", "contact_time [µs]"]
+    for ax in shown:
+        assert ax.yaxis.get_offset_text().get_text() == ""
+        assert 0.1 <= max(abs(v) for v in ax.get_lines()[0].get_ydata()) < 1000.0
+    assert sweep_figures.scaled_unit([2e-6, 5e-6], "kg/kg") == (1e-6, "×1e-06 kg/kg")
+    assert sweep_figures.scaled_unit([3.2e9], "Pa") == (1e9, "GPa")
+    assert sweep_figures.scaled_unit([0.5, 3.0], "m/s") == (1.0, "m/s")
+
+
+# ------------------------------------------------------------------ repeat
+
+
+def test_repeat_axis_counts_whole_impacts_and_says_no_shakedown(captured, tmp_path):
+    n = np.arange(1, 6)
+    columns = {
+        "impact_last": n,
+        "computed": np.ones(5),
+        "dent_depth_m": 1e-6 * np.sqrt(n),
+        "surface_depth_m": 1.1e-6 * np.sqrt(n),
+        "total_wear_max_depth_m": 1e-7 * n,
+        "total_wear_volume_m3": 3e-15 * n,
+        "normal_restitution": 0.8 + 0.04 * n,
+        "max_pressure_Pa": 2e9 + 1e7 * n,
+        "plastic_strain_increment": 1e-2 / n,
+    }
+    repeat_figures.plot_repeat(columns, tmp_path / "repeat.png", title="5 impacts", tolerance=7.7e-6)
+    fig = captured["repeat.png"]
+    fig.canvas.draw()
+    for ax in fig.axes[:4]:
+        locator = ax.xaxis.get_major_locator()
+        assert isinstance(locator, MaxNLocator)
+        lo, hi = ax.get_xlim()
+        ticks = [t for t in ax.get_xticks() if lo <= t <= hi]
+        assert ticks and all(t == round(t) for t in ticks), ticks
+    title = fig._suptitle.get_text()
+    assert "no shakedown" in title and "None" not in title
+    assert "shakedown at impact 3" in repeat_figures.shakedown_note(3, 7.7e-6)
+    assert repeat_figures.shakedown_note(None) == ""
