@@ -152,10 +152,10 @@ def _regime(impact: ImpactResult, info: dict, fe: PlateCycle | IndentationResult
 def estimate_arguments(case: Case, **overrides) -> dict:
     """:func:`contact.simulate_impact`'s arguments for the case's impact on its own normal model
     (``impact.normal_model``; Thornton's law is Hertz's when nothing yields), ``overrides`` replacing some."""
-    args = case.impact_arguments()
-    if args["normal_model"] == "thornton" and not args["plate"].yield_strength and not args["ball"].yield_strength:
+    args = case.impact_arguments(**overrides)  # checks the time step for the histories, if asked for
+    thornton = args["normal_model"] == "thornton" and "normal_model" not in overrides
+    if thornton and not args["plate"].yield_strength and not args["ball"].yield_strength:
         args["normal_model"] = "hertz"  # nothing yields: Thornton's law is Hertz
-    args.update(overrides)
     return args
 
 

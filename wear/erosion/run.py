@@ -16,10 +16,10 @@ from dataclasses import dataclass
 
 from contact import simulate_impact
 from wear.case import JOBS, Case
-from wear.erosion.patch import ErosionResult, erode
+from wear.erosion.patch import ErosionResult, check_patch_memory, erode
 from wear.erosion.response import ImpactResponse
 from wear.erosion.stream import Stream
-from wear.erosion.table import build_response_table, table_axes
+from wear.erosion.table import MAX_TABLE_ENTRIES, build_response_table, table_axes
 
 __all__ = ["ErosionRun", "erode_case", "erode_angles", "nominal_contact_radius", "MAX_STREAM_ANGLE",
            "CELLS_PER_RADIUS"]  # fmt: skip
@@ -78,6 +78,32 @@ def _stream_angle(case: Case, angle: float | None) -> float:
     return theta
 
 
+def _axes(case: Case, theta: float):
+    """The response table's axes (normal speeds m/s, local angles deg) of the case's stream at ``theta`` (deg), refused
+    in one line naming the case keys if the table would exceed :data:`wear.erosion.table.MAX_TABLE_ENTRIES`."""
+    ero = case.erosion
+    speeds, angles = table_axes(case.impact.speed, theta, angle_margin=ero.angle_margin, angle_step=ero.angle_step,
+                                speeds=ero.table_speeds)  # fmt: skip
+    entries = speeds.size * angles.size
+    if entries > MAX_TABLE_ENTRIES:
+        raise ValueError(
+            f"erosion.angle_step={ero.angle_step:g} over erosion.angle_margin={ero.angle_margin:g} deg with "
+            f"erosion.table_speeds={ero.table_speeds} gives {angles.size} x {speeds.size} = {entries} "
+            f"response-table impacts (~53 ms and 0.27 MB each): at most {MAX_TABLE_ENTRIES}; give a larger "
+            "erosion.angle_step, a smaller erosion.angle_margin or fewer erosion.table_speeds"
+        )
+    return speeds, angles
+
+
+def _check_budget(case: Case, angles: list[float]) -> None:
+    """Refuse, before any impact is run, a case whose patch arrays or response tables are too large (one line naming
+    the case keys)."""
+    ero = case.erosion
+    check_patch_memory(ero.grid, ero.frames, len(angles), grid_name="erosion.grid", frames_name="erosion.frames")
+    for theta in angles:
+        _axes(case, theta)
+
+
 def _response(case: Case) -> ImpactResponse:
     pressure = case.wear.pressure
     if pressure == "fe":  # e.g. a run case given to erode: it holds everything the stream needs but this
@@ -113,10 +139,10 @@ def erode_case(case: Case, *, angle: float | None = None, patch_size: float | No
     law), then the patch eroded by the stream (:func:`wear.erosion.erode`). ``angle`` (deg) and ``patch_size`` (m)
     override ``impact.angle`` and ``erosion.patch_size``; ``progress``: a progress bar on stderr."""
     theta = _stream_angle(case, angle)
+    _check_budget(case, [theta])
     response, stream = _response(case), _stream(case, theta)
     ero = case.erosion
-    speeds, angles = table_axes(case.impact.speed, theta, angle_margin=ero.angle_margin, angle_step=ero.angle_step,
-                                speeds=ero.table_speeds)  # fmt: skip
+    speeds, angles = _axes(case, theta)
     t0 = time.perf_counter()
     table = build_response_table(
         response,
@@ -138,6 +164,7 @@ def erode_angles(case: Case, angles: list[float], progress: bool = False) -> lis
     grid resolving the smallest nominal contact (the most oblique stream)."""
     for a in angles:
         _stream_angle(case, a)
+    _check_budget(case, angles)
     patch = case.erosion.patch_size
     if patch is None:
         patch = case.erosion.grid * min(nominal_contact_radius(case, a) for a in angles) / CELLS_PER_RADIUS

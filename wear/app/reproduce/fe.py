@@ -120,8 +120,9 @@ def fig_yield_onset(out: Path, quick: bool) -> FigureReport:
         f"The printed Eq. 18 has 1.65 where the text has 1.6, and C depends on ν (exact C = {c02:.3f}, {c03:.4f}, "
         f"{c04:.3f} at ν = 0.2, 0.3, 0.4; Green's fit within 0.1%). Since F ∝ C³, a constant 1.6 puts F_y "
         f"{(1.6 / c03) ** 3 - 1:+.1%} off at ν = 0.3, {(1.6 / c02) ** 3 - 1:+.0%} at ν = 0.2 and "
-        f"{(1.6 / c04) ** 3 - 1:+.0%} at ν = 0.4. The FE locates first yield between increments on the axis "
-        "below the surface (Hertz self-similarity of the elastic step)."
+        f"{(1.6 / c04) ** 3 - 1:+.0%} at ν = 0.4. The FE locates first yield inside the increment in which it "
+        "occurs, on the axis below the surface (Hertz self-similarity of an elastic state, re-solved on the same "
+        "mesh until within 1% in force)."
     )
     return rep
 

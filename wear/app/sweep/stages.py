@@ -91,7 +91,7 @@ def indent_stage(case: dict) -> dict:
     most plastic one reached), ``newton_iterations`` (total).
     """
     c = stage_case(case, "run")
-    impact = simulate_impact(**c.impact_arguments(), history=True)
+    impact = simulate_impact(**c.impact_arguments(history=True))
     res = one_way(c, impact)  # the ball comes with the impact
     fy = res.first_yield
     return {

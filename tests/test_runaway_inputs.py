@@ -1,0 +1,163 @@
+"""Inputs that would run for hours or fill the memory are refused up front, in one line naming the key.
+
+The time step against the Hertz contact time of the case (contact.impact.check_time_step: at most 2e7 steps per
+contact, 2e6 with time histories), the erosion patch's memory ((runs + 1) x frames + 6 grid² float64 arrays, at
+most 2 GB; grid at most 2048 in a case) and the response table's size (at most 2000 impacts). Each refusal must
+come before any heavy work: the tests time it.
+"""
+
+import time
+import tracemalloc
+
+import pytest
+
+from contact import Material, effective_modulus, simulate_impact, simulate_impacts, theory
+from contact.impact import MAX_HISTORY_STEPS, MAX_STEPS, check_time_step
+from wear import WearLaw
+from wear.app.cli import main
+from wear.case import Case, default_case
+from wear.erosion import ImpactResponse, Stream, build_response_table, erode, erode_angles, erode_case, table_axes
+from wear.erosion.patch import MAX_PATCH_MEMORY, check_patch_memory, patch_memory
+from wear.erosion.table import MAX_TABLE_ENTRIES
+
+ALUMINA = Material(E=380e9, nu=0.23, density=4000.0)
+GLASS = Material(E=70e9, nu=0.25, density=2500.0)
+QUICK = 1.0  # s: a refusal must come before any impact, FE solve or patch array
+
+
+def _contact_time(speed: float = 3.9) -> float:
+    """Hertz contact time (s) of the impact command's default, alumina R 2.5 mm on glass, at a normal ``speed``."""
+    mass = theory.sphere_mass(2.5e-3, 4000.0)
+    return theory.hertz_impact(mass, 2.5e-3, effective_modulus(ALUMINA, GLASS), speed).contact_time
+
+
+def _refused(call, match: str) -> str:
+    start = time.perf_counter()
+    with pytest.raises(ValueError, match=match) as info:
+        call()
+    assert time.perf_counter() - start < QUICK
+    message = str(info.value)
+    assert "\n" not in message
+    return message
+
+
+# ---------------------------------------------------------------- the time step
+
+
+def test_library_refuses_a_time_step_of_too_many_steps_before_running():
+    msg = _refused(lambda: simulate_impact(2.5e-3, ALUMINA, GLASS, 3.9, 30.0, 0.1, time_step=1e-15, history=False),
+                   r"^time_step=1e-15 s gives ~1\.\de10 steps over the Hertz contact time")  # fmt: skip
+    assert "at most 2e7" in msg and "give time_step >= " in msg
+
+
+def test_history_bound_is_tighter_and_scales_with_history_every():
+    tc = _contact_time(3.9)
+    dt = tc / (3 * MAX_HISTORY_STEPS)  # 6e6 steps: fine without histories, too many kept steps with them
+    _refused(lambda: simulate_impact(2.5e-3, ALUMINA, GLASS, 3.9, 0.0, 0.1, time_step=dt),
+             r"^time_step=.* at most 2e6 with time histories")  # fmt: skip
+    assert check_time_step(dt, tc) == dt
+    assert check_time_step(dt, tc, histories=True, history_every=4) == dt
+    with pytest.raises(ValueError, match=r"^time_step=.*at most 2e7"):
+        check_time_step(tc / (2 * MAX_STEPS), tc, histories=True, history_every=1000)
+
+
+def test_bound_uses_the_longest_contact_of_a_batch():
+    # the slowest impact of the batch has the longest contact: the bound is checked on it
+    tc_slow = _contact_time(0.01)
+    dt = 0.5 * tc_slow / MAX_STEPS * 1.5  # fine for 3.9 m/s, 1.33x too many steps at 0.01 m/s
+    _refused(lambda: simulate_impacts(2.5e-3, ALUMINA, GLASS, [3.9, 0.01], 0.0, 0.1, time_step=dt),
+             r"^time_step=.*steps over the Hertz contact time")  # fmt: skip
+
+
+def test_time_steps_the_toolkit_uses_pass():
+    tc = _contact_time(3.9)
+    r = simulate_impact(2.5e-3, ALUMINA, GLASS, 3.9, 0.0, 0.1, time_step=tc / 51200)  # the validation's finest
+    assert r.steps == pytest.approx(51200, rel=1e-3)
+    assert check_time_step(tc / MAX_STEPS * 1.001, tc) > 0.0  # just inside
+
+
+def test_case_names_impact_time_step():
+    msg = _refused(lambda: Case().with_(impact={"time_step": 1e-20}), r"^impact\.time_step=1e-20 s gives ~")
+    assert "at most 2e7" in msg and "give impact.time_step >= " in msg
+    _refused(lambda: Case().with_(impact={"time_step": 1e-3}), r"^impact\.time_step=0\.001 is out of range")
+    # the default (None: t_c/2000) and a fine time step pass; the histories' bound is asked for by the chains
+    case = Case().with_(impact={"time_step": 1e-12})
+    assert case.impact_arguments(history=False)["time_step"] == 1e-12
+    _refused(lambda: case.impact_arguments(history=True), r"^impact\.time_step=1e-12 s .* with time histories")
+
+
+@pytest.mark.parametrize(
+    "argv, key",
+    [
+        (["impact", "--time-step", "1e-15"], "impact.time_step=1e-15"),
+        (["impact", "--set", "impact.time_step=1e-20"], "impact.time_step=1e-20"),
+        (["run", "--set", "impact.time_step=1e-20"], "impact.time_step=1e-20"),
+        (["run", "--set", "impact.time_step=1e-12"], "impact.time_step=1e-12"),  # passes 2e7, not 2e6 with histories
+        (["erode", "--set", "erosion.grid=8192"], "erosion.grid=8192"),
+        (["erode", "--set", "erosion.grid=2048", "--set", "erosion.frames=100"], "erosion.grid=2048"),
+        (["erode", "--set", "erosion.angle_step=0.1", "--set", "erosion.angle_margin=45"], "erosion.angle_step=0.1"),
+    ],
+)
+def test_cli_one_line_exit_2_quickly(argv, key, tmp_path, capsys):
+    if argv[0] in ("run", "erode"):
+        argv = [*argv, "--out", str(tmp_path / "out")]
+    start = time.perf_counter()
+    assert main(argv) == 2
+    assert time.perf_counter() - start < 5.0  # the runs would take minutes to hours
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and key in err, err
+    assert err.startswith(f"impactwear {argv[0]}: error: ")
+
+
+# ---------------------------------------------------------------- the erosion patch and table
+
+
+def test_schema_grid_range_and_print_default():
+    keys = Case().erosion.keys()
+    assert keys["grid"].high == 2048
+    assert default_case("erode").with_(erosion={"grid": 2048}).erosion.grid == 2048
+    _refused(lambda: default_case("erode").with_(erosion={"grid": 8192}),
+             r"^erosion\.grid=8192 is out of range: .* in \[16, 2048\]")  # fmt: skip
+
+
+def test_patch_memory_refused_naming_grid_and_frames():
+    case = default_case("erode").with_(erosion={"grid": 2048, "frames": 100})
+    msg = _refused(lambda: erode_case(case), r"^erosion\.grid=2048 with erosion\.frames=100 needs ~6\.91 GB")
+    assert "at most 2 GB" in msg and "erosion.frames <= 26" in msg
+    # several stream angles keep every run's frames: 4 angles x 10 frames on 2048² is 1.9 GB, 8 angles too much
+    _refused(lambda: erode_angles(default_case("erode").with_(erosion={"grid": 2048}), [10.0 * k for k in range(8)]),
+             r"^erosion\.grid=2048 with erosion\.frames=10 and 8 stream angles")  # fmt: skip
+    assert patch_memory(2048, 10, 4) < MAX_PATCH_MEMORY < patch_memory(2048, 10, 8)
+    check_patch_memory(512, 10)  # the default: 55 MB
+
+
+def test_response_table_size_refused_before_any_impact():
+    case = default_case("erode").with_(erosion={"angle_step": 0.1, "angle_margin": 45.0, "table_speeds": 50})
+    msg = _refused(lambda: erode_case(case), r"^erosion\.angle_step=0\.1 over erosion\.angle_margin=45 deg")
+    assert f"at most {MAX_TABLE_ENTRIES}" in msg
+
+    def never(*_):
+        raise AssertionError("no impact may run")
+
+    vn, angles = table_axes(20.0, 45.0, angle_margin=45.0, angle_step=0.5, speeds=30)
+    _refused(lambda: build_response_table(never, vn, angles, particle_radius=1e-4, particle_mass=1e-8,
+                                          plate_density=7850.0), r"^normal_speeds, angles: 30 x 171")  # fmt: skip
+
+
+def test_patch_memory_estimate_bounds_the_measured_peak():
+    """The estimate is conservative: tracemalloc's peak of a small erosion (256², 10 frames) is below it."""
+    sand = Material(E=94e9, nu=0.17, density=2650.0)
+    steel = Material(E=200e9, nu=0.3, density=7850.0, yield_strength=350e6)
+    response = ImpactResponse(100e-6, sand, steel, 0.3, WearLaw(K=1e-11, alpha=1.0, beta=0.3), pressure="hertz",
+                              points_across=40)  # fmt: skip
+    vn, angles = table_axes(20.0, 45.0, angle_margin=5.0, angle_step=5.0, speeds=2)
+    table = build_response_table(response, vn, angles, points_per_length=6)
+    stream = Stream(20.0, 45.0, 0.5, concentration=0.464)
+    erode(table, stream, grid=64, seed=1, frames=1, samples=2)  # compile or load the kernel first
+    tracemalloc.start()
+    result = erode(table, stream, grid=256, seed=1, frames=10, samples=5)
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    assert result.n_impacts > 0
+    assert 0.5 * patch_memory(256, 10) < peak < patch_memory(256, 10)
+    _refused(lambda: erode(table, stream, grid=4096, frames=10), r"^grid=4096 with frames=10 needs ~3\.49 GB")
