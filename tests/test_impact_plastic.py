@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from contact import Material, TabulatedLaw, effective_modulus, simulate_impact, simulate_impacts, theory, yield_velocity
+from wear.app.validation.contact import thornton_table
 
 RIGID = Material.rigid()
 BALL = Material(E=70e9, nu=0.3, density=2700.0, yield_strength=100e6)
@@ -40,37 +41,13 @@ def test_thornton_limiting_pressure_and_energy():
     assert r.energy_in - r.energy_out == pytest.approx(r.normal_work, rel=1e-4)
 
 
-def _thornton_table(e_star, p_y, radius, dmax_table, n_curves=30, n_points=200):
-    """Thornton (1997) loading and Hertz-with-R_p unloading curves, written out as an FE-like table."""
-    dy = (math.pi * p_y / (2 * e_star)) ** 2 * radius
-    k = 4 / 3 * e_star * math.sqrt(radius)
-    fy = k * dy**1.5
-
-    def load(d):
-        return np.where(d <= dy, k * d**1.5, fy + math.pi * p_y * radius * (d - dy))
-
-    lo = np.linspace(0.0, dmax_table, 2000)
-    um = np.geomspace(dmax_table / 200, dmax_table, n_curves)
-    uo, uf, ua = [], [], []
-    for ds in um:
-        fp = float(load(ds))
-        ap2 = (2 * fp + fy) / (2 * math.pi * p_y) if ds > dy else radius * ds
-        rp = 4 * e_star * ap2**1.5 / (3 * fp)
-        dp = max(ds - ap2 / rp, 0.0)
-        d = np.linspace(ds, dp, n_points)
-        uo.append(d)
-        uf.append(4 / 3 * e_star * math.sqrt(rp) * np.maximum(d - dp, 0) ** 1.5)
-        ua.append(np.sqrt(rp * np.maximum(d - dp, 0)))
-    return TabulatedLaw(lo, load(lo), np.sqrt(radius * lo), um, np.array(uo), np.array(uf), np.array(ua))
-
-
 def test_tabulated_thornton_table_reproduces_thornton_restitution():
     # A table built from Thornton's curves must give Thornton's closed-form e (0.5%: interpolation between
     # unloading curves in s = (delta - delta_p)/(delta* - delta_p)).
     e_star = effective_modulus(BALL, RIGID)
     p_y = theory.default_limiting_pressure(BALL, RIGID)
     vy = yield_velocity(R, BALL, RIGID)
-    law = _thornton_table(e_star, p_y, R, dmax_table=3e-6)
+    law = thornton_table(e_star, p_y, R, dmax_table=3e-6)
     b = simulate_impacts(
         R, BALL, RIGID, np.array([2.0, 5.0, 10.0]) * vy, 0.0, 0.0, normal_model="tabulated", force_law=law
     )
@@ -140,6 +117,6 @@ def test_tabulated_beyond_table_is_an_error():
     from contact.impact import ForceLawRangeError
 
     e_star = effective_modulus(BALL, RIGID)
-    law = _thornton_table(e_star, theory.default_limiting_pressure(BALL, RIGID), R, dmax_table=3e-7)
+    law = thornton_table(e_star, theory.default_limiting_pressure(BALL, RIGID), R, dmax_table=3e-7)
     with pytest.raises(ForceLawRangeError, match="force_law: .*beyond the loading curve"):
         simulate_impact(R, BALL, RIGID, 5.0, 0.0, 0.0, normal_model="tabulated", force_law=law)

@@ -245,8 +245,11 @@ def closed_forms(quick: bool) -> list[Check]:
     return out
 
 
-def _thornton_table(e_star, p_y, radius, dmax_table, n_curves=30, n_points=200):
-    """Thornton (1997) loading (F = F_y + πp_yR(δ − δ_y) past δ_y) and Hertz-with-R_p unloading, as a table."""
+def thornton_table(
+    e_star: float, p_y: float, radius: float, dmax_table: float, n_curves: int = 30, n_points: int = 200
+) -> TabulatedLaw:
+    """Thornton (1997) loading (F = F_y + πp_yR(δ − δ_y) past δ_y) and Hertz-with-R_p unloading, written out as an
+    FE-like table up to ``dmax_table`` (m), for E* ``e_star`` and limiting pressure ``p_y`` (Pa), radius (m)."""
 
     dy = (math.pi * p_y / (2 * e_star)) ** 2 * radius
     k = 4 / 3 * e_star * math.sqrt(radius)
@@ -296,7 +299,7 @@ def tabulated_law(quick: bool) -> list[Check]:
     ]
     ball = Material(E=70e9, nu=0.3, density=2700.0, yield_strength=100e6)
     e_star = effective_modulus(ball, RIGID)
-    law = _thornton_table(e_star, theory.default_limiting_pressure(ball, RIGID), radius, dmax_table=3e-6)
+    law = thornton_table(e_star, theory.default_limiting_pressure(ball, RIGID), radius, dmax_table=3e-6)
     vy = yield_velocity(radius, ball, RIGID)
     b = simulate_impacts(radius, ball, RIGID, 5.0 * vy, 0.0, 0.0, normal_model="tabulated", force_law=law)
     out.append(
