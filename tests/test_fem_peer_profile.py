@@ -7,8 +7,8 @@ Fourier-accelerated volume-integral solver of elastic–perfectly-plastic contac
 
 The reference's own uncertainty (``tests/data/tamaas_sphere_profiles.csv`` header): 1.6% / 0.9% of p_max from its
 grid, 0.2% / 3.3% from its periodic cell, 3% / 4% from its 6 load steps (at 13.4 / 61.4). The profile bound at
-w ≈ 6 is therefore 5% RMS of p_max inside 0.9 a (the FE's own error below 3% plus that), and a plate without
-plasticity (Hertz: 805 MPa against 475 MPa at the centre) or yielding at √3 Y misses it by > 50%.
+w ≈ 6 is therefore 5% RMS of p_max inside 0.9 a (the issue's 3% target plus the reference's step error), and a
+plate without plasticity (Hertz: 805 MPa against 475 MPa at the centre) or yielding at √3 Y misses it by > 50%.
 
 Known limit (docs/fem.md, "the pressure profile once the surface yields"): at w ≈ 20 the FE profile lies 9% of
 p_max below the reference at the centre, on this mesh and on the default one alike — the test of the 3% target is
