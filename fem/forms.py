@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
-from skfem import Basis, ElementTriP2, FacetBasis, MeshTri
+from skfem import Basis, ElementTriP2, MeshTri
 
 __all__ = ["Discretisation", "discretise", "elastic_tangent"]
 
@@ -41,7 +41,8 @@ class Discretisation:
     CSR pattern (``indptr``, ``indices``) with ``entry_index`` mapping element entries to it,
     ``axis_dofs``/``bottom_dofs`` (constrained), ``surface_nodes`` (scalar node ids sorted by r),
     ``surface_r``/``surface_z`` (m) their reference coordinates (z = 0 on a flat plate, below 0 where the surface
-    was worn), ``surface_mass`` (2πr-weighted P2 mass matrix on the surface nodes, m²),
+    was worn), ``surface_hats`` (surface vertices × surface nodes) the values of each surface vertex's piecewise-
+    linear hat function at the surface nodes, ``surface_hat_area`` ∫ hat 2πr ds per surface vertex (m²),
     ``node_r``/``node_z`` (m) of every scalar node.
     """
 
@@ -61,7 +62,8 @@ class Discretisation:
     surface_nodes: np.ndarray
     surface_r: np.ndarray
     surface_z: np.ndarray
-    surface_mass: sp.csr_matrix
+    surface_hats: sp.csr_matrix
+    surface_hat_area: np.ndarray
     node_r: np.ndarray
     node_z: np.ndarray
     surface_layer: np.ndarray  # (elements, qp) bool: top-row quadrature points (depth < 0.2 h) at z = 0
@@ -78,6 +80,34 @@ def elastic_tangent(E: float, nu: float) -> np.ndarray:
     one = np.array([1.0, 1.0, 1.0, 0.0])
     p_vol = np.outer(one, one) / 3.0
     return 3.0 * bulk * p_vol + 2.0 * shear * (np.eye(4) - p_vol)
+
+
+def _surface_hats(mesh: MeshTri, surface_nodes: np.ndarray, node_r: np.ndarray) -> tuple[sp.csr_matrix, np.ndarray]:
+    """The piecewise-linear hat functions of the surface vertices: their values at the surface nodes (a vertex's own
+    node 1, the mid-side nodes of its two surface facets ½, exact on the straight facets), and their integrals
+    ∫ hat 2πr ds (m², Simpson's rule on each facet, exact for the quadratic integrand)."""
+    nvert = mesh.p.shape[1]
+    is_vertex = surface_nodes < nvert
+    vertex_rows = np.full(nvert, -1, dtype=np.int64)
+    vertex_rows[surface_nodes[is_vertex]] = np.arange(int(is_vertex.sum()))
+    entries = []  # (vertex row, surface node, hat value)
+    area = np.zeros(int(is_vertex.sum()))
+    for i, node in enumerate(surface_nodes):
+        if is_vertex[i]:
+            entries.append((vertex_rows[node], i, 1.0))
+            continue
+        # a P2 facet node: scikit-fem numbers them after the vertices, in facet order
+        ends = mesh.facets[:, node - nvert]
+        length = float(np.hypot(*(mesh.p[:, ends[1]] - mesh.p[:, ends[0]])))
+        for end in ends:
+            entries.append((vertex_rows[end], i, 0.5))
+            # Simpson on the facet of hat · 2πr: hat is 1 at its vertex, ½ at the mid-node, 0 at the other end
+            area[vertex_rows[end]] += 2.0 * np.pi * length / 6.0 * (mesh.p[0, end] + 2.0 * node_r[node])
+    rows, cols, values = np.array(entries).T
+    hats = sp.csr_matrix(
+        (values, (rows.astype(np.int64), cols.astype(np.int64))), shape=(area.size, surface_nodes.size)
+    )
+    return hats, area
 
 
 def discretise(mesh: MeshTri, intorder: int = 4) -> Discretisation:
@@ -124,21 +154,7 @@ def discretise(mesh: MeshTri, intorder: int = 4) -> Discretisation:
     node_r, node_z = basis.doflocs
     surf = surf[np.argsort(node_r[surf])]
 
-    fb = FacetBasis(mesh, ElementTriP2(), facets=surface_facets, intorder=6)
-    phis = [np.asarray(fb.basis[i][0]) for i in range(len(fb.basis))]
-    rf = np.asarray(fb.global_coordinates())[0]
-    w = 2.0 * np.pi * rf * fb.dx
-    fdofs = fb.element_dofs  # (6, facets): only 3 non-zero on the facet
-    ent_r, ent_c, ent_v = [], [], []
-    for i in range(len(phis)):
-        for j in range(len(phis)):
-            ent_r.append(fdofs[i])
-            ent_c.append(fdofs[j])
-            ent_v.append(np.sum(phis[i] * phis[j] * w, axis=1))
-    mass = sp.coo_matrix(
-        (np.concatenate(ent_v), (np.concatenate(ent_r), np.concatenate(ent_c))), shape=(basis.N, basis.N)
-    ).tocsr()
-    surface_mass = mass[surf][:, surf].tocsr()
+    surface_hats, surface_hat_area = _surface_hats(mesh, surf, node_r)
 
     # the top row of quadrature points: depth below 0.2 × the element size, in elements touching the surface
     # (found by the boundary's vertices, not by z = 0: a worn surface has moved its nodes)
@@ -168,7 +184,8 @@ def discretise(mesh: MeshTri, intorder: int = 4) -> Discretisation:
         surface_nodes=surf,
         surface_r=node_r[surf],
         surface_z=node_z[surf],
-        surface_mass=surface_mass,
+        surface_hats=surface_hats,
+        surface_hat_area=surface_hat_area,
         node_r=node_r,
         node_z=node_z,
         surface_layer=surface_layer,

@@ -23,7 +23,7 @@ from fem.plasticity import J2Material, von_mises
 from fem.reload import SurfaceCompliance, candidate_nodes
 from fem.result import FirstYieldPoint, IndentationResult
 from fem.solver import PlateSolver, PlateState
-from fem.sphere_contact import contact_radius
+from fem.sphere_contact import contact_radius, pressure_from_reactions
 
 __all__ = ["indent", "indent_impact", "plate_mesh", "estimate_contact_radius"]
 
@@ -140,7 +140,7 @@ class _Run:
         reactions[~state.active] = 0.0  # off the contact set only the (converged) residual remains
         gap = s.obstacle(state.overlap) - state.u[s.surface_uz]
         a = contact_radius(d.surface_r, state.active, gap)
-        pressure = s.mass_lu.solve(reactions)
+        pressure = pressure_from_reactions(d.surface_hats, d.surface_hat_area, reactions, d.surface_r, a)
         force = float(reactions.sum())
         plastic = state.alpha > 0.0
         if not plastic.any():

@@ -42,7 +42,7 @@ from fem.forms import strain
 from fem.plasticity import radial_return
 from fem.result import IndentationResult
 from fem.solver import PlateState
-from fem.sphere_contact import contact_radius
+from fem.sphere_contact import contact_radius, pressure_from_reactions
 
 __all__ = ["ElasticReload", "SurfaceCompliance", "candidate_nodes", "elastic_reload"]
 
@@ -157,7 +157,8 @@ def elastic_reload(plate, overlaps, check_yield: bool = True) -> ElasticReload:
     for new, reactions, gap, _, _ in steps:
         force.append(float(reactions.sum()))
         radius.append(contact_radius(disc.surface_r, new.active, gap) if new.active.any() else 0.0)
-        pressure.append(solver.mass_lu.solve(reactions))
+        pressure.append(pressure_from_reactions(disc.surface_hats, disc.surface_hat_area, reactions, disc.surface_r,
+                                                radius[-1]))  # fmt: skip
     increments = np.array([s[3] for s in steps])
     force, radius = np.array(force), np.array(radius)
     area = np.pi * radius**2

@@ -48,11 +48,12 @@ class IndentationResult:
     """Indentation of the plate by a sphere along an overlap path (arrays: one entry per step).
 
     ``overlap`` δ (m), ``force`` F (N), ``contact_radius`` a (m), ``max_pressure`` (Pa),
-    ``mean_pressure`` F/(πa²) (Pa), ``surface_r`` (m), ``pressure`` (steps, surface nodes) (Pa),
-    ``first_yield`` (:class:`FirstYieldPoint` or None), ``residual_depth`` (m, surface u_z after
-    the last step, positive = into the plate), ``max_equivalent_plastic_strain`` (per step),
-    ``regime`` (per step), ``newton_iterations`` (per step), ``time`` (s, per step, only from
-    :func:`fem.indent_impact`), ``radius`` R (m), ``effective_modulus`` E* (Pa).
+    ``mean_pressure`` F/(πa²) (Pa), ``surface_r`` (m), ``pressure`` (steps, surface nodes) (Pa, linear between
+    the surface vertices: :func:`fem.sphere_contact.pressure_from_reactions`), ``first_yield``
+    (:class:`FirstYieldPoint` or None), ``residual_depth`` (m, surface u_z after the last step, positive = into
+    the plate), ``max_equivalent_plastic_strain`` (per step), ``regime`` (per step), ``newton_iterations`` (per
+    step), ``time`` (s, per step, only from :func:`fem.indent_impact`), ``radius`` R (m), ``effective_modulus``
+    E* (Pa).
     """
 
     overlap: np.ndarray

@@ -120,7 +120,6 @@ class PlateSolver:
         self.elastic_element_matrices = element_matrices(d, material.elastic_tangent)
         self.fixed_dofs = np.unique(np.concatenate([d.axis_dofs, d.bottom_dofs]))
         self.surface_uz = 2 * d.surface_nodes + 1
-        self.mass_lu = spla.splu(d.surface_mass.tocsc())
         self.stats = SolverStats()
         self._elastic_K = None
         self._lu = None
