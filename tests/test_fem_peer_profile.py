@@ -9,10 +9,10 @@ R 10 mm on steel (E 210 GPa, ν 0.3, Y 210 MPa), F/F_c = 13.4 and 61.4 (w = δ/�
 The reference's own uncertainty (``tests/data/tamaas_sphere_profiles.csv`` header): 1.6% / 0.9% of p_max from its
 grid, 0.1% / 0.6% from its periodic cell, 1.0% / 1.4% from its load steps (at 13.4 / 61.4). Both codes are
 path-dependent under a growing plastic contact (6 peer steps instead of 24 move its profile by 3.5% / 7%), so the
-FE is loaded in about as many increments as the peer up to w ≈ 6 (14 against 12) and in 32 to w = 20.5. The bound on the profile is
-the 3% RMS of p_max inside 0.9 a the FE is asked for; a plate without plasticity (Hertz: 805 MPa against 456 MPa at
-the centre at 13.4) or yielding at √3 Y misses it by > 50%, and the pressure read off the quadratic nodes
-(p = M⁻¹P, the node-to-node mode) fails it at w ≈ 20 (6.3%; 1.6% at w ≈ 6).
+FE is loaded in about as many increments as the peer up to w ≈ 6 (14 against 12) and in 32 to w = 20.5. The
+bound on the profile is the 3% RMS of p_max inside 0.9 a the FE is asked for; a plate without plasticity (Hertz:
+805 MPa against 456 MPa at the centre at 13.4) or yielding at √3 Y misses it by > 50%, and the pressure read off
+the quadratic nodes (p = M⁻¹P, the node-to-node mode) fails it at w ≈ 20 (6.3%; 1.6% at w ≈ 6).
 
 Mesh: the default one (32 P2 elements over the largest contact radius).
 """
