@@ -42,7 +42,8 @@ class Discretisation:
     ``axis_dofs``/``bottom_dofs`` (constrained), ``surface_nodes`` (scalar node ids sorted by r),
     ``surface_r``/``surface_z`` (m) their reference coordinates (z = 0 on a flat plate, below 0 where the surface
     was worn), ``surface_hats`` (surface vertices × surface nodes) the values of each surface vertex's piecewise-
-    linear hat function at the surface nodes, ``surface_hat_area`` ∫ hat 2πr ds per surface vertex (m²),
+    linear hat function at the surface nodes, ``surface_hat_mass`` the hats' 2πr-weighted mass matrix (m², banded:
+    rows super-, main and sub-diagonal, as :func:`scipy.linalg.solve_banded` takes it),
     ``node_r``/``node_z`` (m) of every scalar node.
     """
 
@@ -63,7 +64,7 @@ class Discretisation:
     surface_r: np.ndarray
     surface_z: np.ndarray
     surface_hats: sp.csr_matrix
-    surface_hat_area: np.ndarray
+    surface_hat_mass: np.ndarray
     node_r: np.ndarray
     node_z: np.ndarray
     surface_layer: np.ndarray  # (elements, qp) bool: top-row quadrature points (depth < 0.2 h) at z = 0
@@ -82,16 +83,18 @@ def elastic_tangent(E: float, nu: float) -> np.ndarray:
     return 3.0 * bulk * p_vol + 2.0 * shear * (np.eye(4) - p_vol)
 
 
-def _surface_hats(mesh: MeshTri, surface_nodes: np.ndarray, node_r: np.ndarray) -> tuple[sp.csr_matrix, np.ndarray]:
+def _surface_hats(mesh: MeshTri, surface_nodes: np.ndarray) -> tuple[sp.csr_matrix, np.ndarray]:
     """The piecewise-linear hat functions of the surface vertices: their values at the surface nodes (a vertex's own
-    node 1, the mid-side nodes of its two surface facets ½, exact on the straight facets), and their integrals
-    ∫ hat 2πr ds (m², Simpson's rule on each facet, exact for the quadratic integrand)."""
+    node 1, the mid-side nodes of its two surface facets ½, exact on the straight facets), and their mass matrix
+    ∫ ψ_i ψ_j 2πr ds (m², exact: on a facet of length L from r_0 to r_1, L/12 · 2π (3r_0 + r_1, r_0 + r_1;
+    r_0 + r_1, r_0 + 3r_1)), banded. The vertices are numbered by radius, so a facet joins neighbours."""
     nvert = mesh.p.shape[1]
     is_vertex = surface_nodes < nvert
     vertex_rows = np.full(nvert, -1, dtype=np.int64)
     vertex_rows[surface_nodes[is_vertex]] = np.arange(int(is_vertex.sum()))
     entries = []  # (vertex row, surface node, hat value)
-    area = np.zeros(int(is_vertex.sum()))
+    nv = int(is_vertex.sum())
+    mass = np.zeros((3, nv))  # banded: mass[1 + i - j, j] = M[i, j]
     for i, node in enumerate(surface_nodes):
         if is_vertex[i]:
             entries.append((vertex_rows[node], i, 1.0))
@@ -99,15 +102,17 @@ def _surface_hats(mesh: MeshTri, surface_nodes: np.ndarray, node_r: np.ndarray) 
         # a P2 facet node: scikit-fem numbers them after the vertices, in facet order
         ends = mesh.facets[:, node - nvert]
         length = float(np.hypot(*(mesh.p[:, ends[1]] - mesh.p[:, ends[0]])))
-        for end in ends:
-            entries.append((vertex_rows[end], i, 0.5))
-            # Simpson on the facet of hat · 2πr: hat is 1 at its vertex, ½ at the mid-node, 0 at the other end
-            area[vertex_rows[end]] += 2.0 * np.pi * length / 6.0 * (mesh.p[0, end] + 2.0 * node_r[node])
+        (j0, r0), (j1, r1) = sorted((vertex_rows[e], mesh.p[0, e]) for e in ends)
+        assert j1 == j0 + 1, "surface facet between vertices that are not neighbours in r"
+        scale = 2.0 * np.pi * length / 12.0
+        mass[1, j0] += scale * (3.0 * r0 + r1)
+        mass[1, j1] += scale * (r0 + 3.0 * r1)
+        mass[0, j1] += scale * (r0 + r1)
+        mass[2, j0] += scale * (r0 + r1)
+        entries += [(j0, i, 0.5), (j1, i, 0.5)]
     rows, cols, values = np.array(entries).T
-    hats = sp.csr_matrix(
-        (values, (rows.astype(np.int64), cols.astype(np.int64))), shape=(area.size, surface_nodes.size)
-    )
-    return hats, area
+    hats = sp.csr_matrix((values, (rows.astype(np.int64), cols.astype(np.int64))), shape=(nv, surface_nodes.size))
+    return hats, mass
 
 
 def discretise(mesh: MeshTri, intorder: int = 4) -> Discretisation:
@@ -154,7 +159,7 @@ def discretise(mesh: MeshTri, intorder: int = 4) -> Discretisation:
     node_r, node_z = basis.doflocs
     surf = surf[np.argsort(node_r[surf])]
 
-    surface_hats, surface_hat_area = _surface_hats(mesh, surf, node_r)
+    surface_hats, surface_hat_mass = _surface_hats(mesh, surf)
 
     # the top row of quadrature points: depth below 0.2 × the element size, in elements touching the surface
     # (found by the boundary's vertices, not by z = 0: a worn surface has moved its nodes)
@@ -185,7 +190,7 @@ def discretise(mesh: MeshTri, intorder: int = 4) -> Discretisation:
         surface_r=node_r[surf],
         surface_z=node_z[surf],
         surface_hats=surface_hats,
-        surface_hat_area=surface_hat_area,
+        surface_hat_mass=surface_hat_mass,
         node_r=node_r,
         node_z=node_z,
         surface_layer=surface_layer,

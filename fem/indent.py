@@ -140,7 +140,7 @@ class _Run:
         reactions[~state.active] = 0.0  # off the contact set only the (converged) residual remains
         gap = s.obstacle(state.overlap) - state.u[s.surface_uz]
         a = contact_radius(d.surface_r, state.active, gap)
-        pressure = pressure_from_reactions(d.surface_hats, d.surface_hat_area, reactions, d.surface_r, a)
+        pressure = pressure_from_reactions(d.surface_hats, d.surface_hat_mass, reactions, d.surface_r, a)
         force = float(reactions.sum())
         plastic = state.alpha > 0.0
         if not plastic.any():

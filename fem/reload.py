@@ -157,7 +157,7 @@ def elastic_reload(plate, overlaps, check_yield: bool = True) -> ElasticReload:
     for new, reactions, gap, _, _ in steps:
         force.append(float(reactions.sum()))
         radius.append(contact_radius(disc.surface_r, new.active, gap) if new.active.any() else 0.0)
-        pressure.append(pressure_from_reactions(disc.surface_hats, disc.surface_hat_area, reactions, disc.surface_r,
+        pressure.append(pressure_from_reactions(disc.surface_hats, disc.surface_hat_mass, reactions, disc.surface_r,
                                                 radius[-1]))  # fmt: skip
     increments = np.array([s[3] for s in steps])
     force, radius = np.array(force), np.array(radius)

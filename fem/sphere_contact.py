@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 import scipy.sparse as sp
+from scipy.linalg import solve_banded
 
 __all__ = ["sphere_surface", "contact_radius", "pressure_from_reactions"]
 
@@ -48,28 +49,27 @@ def contact_radius(surface_r: np.ndarray, active: np.ndarray, gap: np.ndarray) -
 
 
 def pressure_from_reactions(
-    hats: sp.csr_matrix, hat_area: np.ndarray, reactions: np.ndarray, surface_r: np.ndarray, radius: float
+    hats: sp.csr_matrix, hat_mass: np.ndarray, reactions: np.ndarray, surface_r: np.ndarray, radius: float
 ) -> np.ndarray:
     r"""The contact pressure (Pa) at the surface nodes, a field linear between the surface vertices, from the
     contact reactions P_i (N) of the quadratic surface nodes.
 
     The reactions are the pressure's moments against the quadratic shape functions, P_i = ∫ p φ_i 2πr ds; a
-    vertex's piecewise-linear hat ψ_j = Σ_i ψ_j(x_i) φ_i is one of their combinations, so its moment is
-    exact, and the pressure at vertex j is the pressure averaged over the hat (``hats`` ψ_j(x_i), ``hat_area``
-    ∫ ψ_j 2πr ds, m²):
+    vertex's piecewise-linear hat ψ_j = Σ_i ψ_j(x_i) φ_i is one of their combinations, so its moment is exact,
+    and the pressure is the L2 projection of the contact traction on the hats (``hats`` ψ_j(x_i), ``hat_mass``
+    M_jk = ∫ ψ_j ψ_k 2πr ds in m², banded):
 
-    .. math:: p_j = \frac{\sum_i \psi_j(x_i) P_i}{\int \psi_j \, 2\pi r \, ds}.
+    .. math:: \sum_k M_{jk} p_k = \sum_i \psi_j(x_i) P_i .
 
     Node-by-node contact on quadratic elements is an equal-order pairing of displacement and pressure that is
     not inf-sup stable (Hild & Laborde 2002; Wohlmuth 2011, Acta Numerica 20:569, §3): the reactions carry an
     alternation between corner and mid-side nodes that the quadratic field p = M⁻¹P magnifies; a vertex hat's
     moment cancels it (½ + ½ of the mid-side nodes against the corner), which is the linear multiplier space
-    the mortar methods use for quadratic displacements. An average over a hat is non-negative wherever the
-    reactions are, and its error for a smooth pressure is O(h² p''). Outside the contact radius ``radius`` (m;
-    ``surface_r`` the nodes' radii, m) the pressure is zero: the hat of the first vertex beyond the edge overlaps
-    the contact and would otherwise carry pressure one element into the open gap.
+    the mortar methods use for quadratic displacements. Outside the contact radius ``radius`` (m; ``surface_r``
+    the nodes' radii, m) the pressure is zero: the projection of the edge's √(a − r) fall rings slightly below
+    zero over the next element.
     """
-    at_vertices = (hats @ reactions) / hat_area
+    at_vertices = solve_banded((1, 1), hat_mass, hats @ reactions)
     pressure = hats.T @ at_vertices
     pressure[surface_r > radius] = 0.0
     return pressure
