@@ -90,10 +90,10 @@ def _surface_hats(mesh: MeshTri, surface_nodes: np.ndarray) -> tuple[sp.csr_matr
     r_0 + r_1, r_0 + 3r_1)), banded. The vertices are numbered by radius, so a facet joins neighbours."""
     nvert = mesh.p.shape[1]
     is_vertex = surface_nodes < nvert
-    vertex_rows = np.full(nvert, -1, dtype=np.int64)
-    vertex_rows[surface_nodes[is_vertex]] = np.arange(int(is_vertex.sum()))
-    entries = []  # (vertex row, surface node, hat value)
     nv = int(is_vertex.sum())
+    vertex_rows = np.full(nvert, -1, dtype=np.int64)
+    vertex_rows[surface_nodes[is_vertex]] = np.arange(nv)
+    entries = []  # (vertex row, surface node, hat value)
     mass = np.zeros((3, nv))  # banded: mass[1 + i - j, j] = M[i, j]
     for i, node in enumerate(surface_nodes):
         if is_vertex[i]:
@@ -103,7 +103,9 @@ def _surface_hats(mesh: MeshTri, surface_nodes: np.ndarray) -> tuple[sp.csr_matr
         ends = mesh.facets[:, node - nvert]
         length = float(np.hypot(*(mesh.p[:, ends[1]] - mesh.p[:, ends[0]])))
         (j0, r0), (j1, r1) = sorted((vertex_rows[e], mesh.p[0, e]) for e in ends)
-        assert j1 == j0 + 1, "surface facet between vertices that are not neighbours in r"
+        if j1 != j0 + 1:
+            raise ValueError(f"mesh surface: facet {node - nvert} joins vertices that are not neighbours in r (the "
+                             "surface must be a graph z(r), each facet between consecutive vertices)")  # fmt: skip
         scale = 2.0 * np.pi * length / 12.0
         mass[1, j0] += scale * (3.0 * r0 + r1)
         mass[1, j1] += scale * (r0 + 3.0 * r1)

@@ -61,8 +61,7 @@ def test_hertz_pressure_profile_within_1_percent_rms_inside_the_contact(hertz_ru
     # Johnson (1985) Eq. 4.21 / errata Eq. 16 over r < 0.95 a, where the field is smooth (the edge's square-root
     # singularity of dp/dr is left out): 0.2-0.7% of p0 on this mesh (32 P2 elements across the largest contact
     # radius, the default density); a corner/mid-side alternation of ±1.5% of p0 alone fails it, and the
-    # reactions divided by the lumped (row-sum) surface mass instead of solved with the consistent one are off
-    # by orders of magnitude
+    # quadratic nodes' reactions divided by the row sums of their P2 surface mass are off by orders of magnitude
     for k, d in enumerate(hertz_run.overlap):
         a = math.sqrt(R * d)
         p0 = 2.0 * E_STAR * a / (math.pi * R)
