@@ -4,6 +4,10 @@ Entry points: :func:`indent` (overlap path → :class:`IndentationResult`), :fun
 (along an impact's overlap history), :class:`Plate` (a plate that keeps its state between indentations),
 :func:`elastic_reload` (its elastic response, condensed onto the surface), :func:`couple` (an impact on the plate's
 own force law, :mod:`fem.coupling`), :func:`plate_mesh` and :mod:`fem.mesh` (meshes).
+
+The 3-D plate (half block about the plane of incidence, quadratic tetrahedra, Coulomb friction): :func:`indent_solid`
+(:mod:`fem.solid`, :mod:`fem.solid_solver`, :mod:`fem.forms3d`, :mod:`fem.mesh3d`, sparse solves in
+:mod:`fem.linear`).
 """
 
 from fem.coupling import CoupledImpact, CouplingSettings, PlateCycle, contact_pressure, couple, couple_elastic
@@ -12,6 +16,7 @@ from fem.mesh import generate_mesh, load_mesh
 from fem.plate import Plate, surface_profile
 from fem.reload import ElasticReload, elastic_reload
 from fem.result import REGIMES, FirstYieldPoint, IndentationResult, worst_regime
+from fem.solid import SolidIndentation, indent_solid
 from fem.solver import ConvergenceError
 
 __all__ = [
@@ -27,11 +32,13 @@ __all__ = [
     "FirstYieldPoint",
     "IndentationResult",
     "Plate",
+    "SolidIndentation",
     "elastic_reload",
     "estimate_contact_radius",
     "generate_mesh",
     "indent",
     "indent_impact",
+    "indent_solid",
     "load_mesh",
     "plate_mesh",
     "surface_profile",

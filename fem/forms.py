@@ -27,7 +27,7 @@ import numpy as np
 import scipy.sparse as sp
 from skfem import Basis, ElementTriP2, MeshTri
 
-__all__ = ["Discretisation", "discretise", "elastic_tangent"]
+__all__ = ["Discretisation", "csr_pattern", "discretise", "elastic_tangent"]
 
 SQRT2 = math.sqrt(2.0)
 
@@ -117,6 +117,19 @@ def _surface_hats(mesh: MeshTri, surface_nodes: np.ndarray) -> tuple[sp.csr_matr
     return hats, mass
 
 
+def csr_pattern(element_dofs: np.ndarray, ndofs: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The fixed CSR pattern (``indptr``, ``indices``) of the global matrix of elements with DOFs ``element_dofs``
+    (elements, n), and ``entry_index`` mapping each element entry (elements · n · n, row-major) to it."""
+    n = element_dofs.shape[1]
+    rows = np.repeat(element_dofs[:, :, None], n, axis=2).ravel()
+    cols = np.repeat(element_dofs[:, None, :], n, axis=1).ravel()
+    unique, entry_index = np.unique(rows * ndofs + cols, return_inverse=True)
+    indices = (unique % ndofs).astype(np.int32)
+    indptr = np.zeros(ndofs + 1, dtype=np.int64)
+    np.add.at(indptr, unique // ndofs + 1, 1)
+    return np.cumsum(indptr), indices, entry_index
+
+
 def discretise(mesh: MeshTri, intorder: int = 4) -> Discretisation:
     """Precompute the P2 axisymmetric operators of ``mesh`` (r, z in m; named boundaries required)."""
     basis = Basis(mesh, ElementTriP2(), intorder=intorder)
@@ -144,15 +157,7 @@ def discretise(mesh: MeshTri, intorder: int = 4) -> Discretisation:
     element_dofs[:, 1::2] = 2 * scalar_dofs + 1
     ndofs = 2 * basis.N
 
-    rows = np.repeat(element_dofs[:, :, None], 2 * nloc, axis=2).ravel()
-    cols = np.repeat(element_dofs[:, None, :], 2 * nloc, axis=1).ravel()
-    keys = rows * ndofs + cols
-    unique, entry_index = np.unique(keys, return_inverse=True)
-    urows = unique // ndofs
-    indices = (unique % ndofs).astype(np.int32)
-    indptr = np.zeros(ndofs + 1, dtype=np.int64)
-    np.add.at(indptr, urows + 1, 1)
-    indptr = np.cumsum(indptr)
+    indptr, indices, entry_index = csr_pattern(element_dofs, ndofs)
 
     axis_nodes = basis.get_dofs(mesh.boundaries["axis"]).flatten()
     bottom_nodes = basis.get_dofs(mesh.boundaries["bottom"]).flatten()
@@ -200,22 +205,24 @@ def discretise(mesh: MeshTri, intorder: int = 4) -> Discretisation:
 
 
 def strain(disc: Discretisation, u: np.ndarray) -> np.ndarray:
-    """Mandel strain (elements, qp, 4) of the displacement ``u`` (m)."""
+    """Mandel strain (elements, qp, c) of the displacement ``u`` (m); c = 4 here, 6 for :mod:`fem.forms3d`, whose
+    discretisation carries the same operators (``B``, ``weight``, ``element_dofs``, the CSR pattern)."""
     ue = u[disc.element_dofs]  # (el, 12)
     return np.einsum("eqij,ej->eqi", disc.B, ue, optimize=True)
 
 
 def internal_force(disc: Discretisation, stress: np.ndarray) -> np.ndarray:
-    """f_int (N) of the Mandel ``stress`` (elements, qp, 4) in Pa."""
+    """f_int (N) of the Mandel ``stress`` (elements, qp, c) in Pa."""
     fe = np.einsum("eqij,eqi,eq->ej", disc.B, stress, disc.weight, optimize=True)
     return np.bincount(disc.element_dofs.ravel(), weights=fe.ravel(), minlength=disc.ndofs)
 
 
 def element_matrices(disc: Discretisation, tangent: np.ndarray, elements: np.ndarray | None = None) -> np.ndarray:
-    """Element stiffness matrices (n, 12, 12) in N/m for the 4 × 4 ``tangent`` per (element, qp).
+    """Element stiffness matrices (n, k, k) in N/m (k element DOFs: 12 here) for the c × c ``tangent`` per
+    (element, qp).
 
-    ``tangent`` is (n, qp, 4, 4) for the n elements selected by ``elements`` (all if None), or
-    (4, 4) for a uniform elastic tangent.
+    ``tangent`` is (n, qp, c, c) for the n elements selected by ``elements`` (all if None), or
+    (c, c) for a uniform elastic tangent.
     """
     B = disc.B if elements is None else disc.B[elements]
     w = disc.weight if elements is None else disc.weight[elements]
@@ -225,6 +232,6 @@ def element_matrices(disc: Discretisation, tangent: np.ndarray, elements: np.nda
 
 
 def assemble(disc: Discretisation, element_data: np.ndarray) -> sp.csr_matrix:
-    """Sum element matrices (elements, 12, 12) into the fixed CSR pattern."""
+    """Sum element matrices (elements, k, k) into the fixed CSR pattern."""
     data = np.bincount(disc.entry_index, weights=element_data.ravel(), minlength=disc.indices.size)
     return disc.matrix(data)

@@ -1,6 +1,8 @@
 r"""Small-strain J2 (von Mises) plasticity with linear isotropic hardening: radial return.
 
-Vectorised over quadrature points, Mandel notation (see :mod:`fem.forms`). With the trial
+Vectorised over quadrature points, Mandel notation: 4 components (r, z, θ, √2 rz) on the axisymmetric plate
+(:mod:`fem.forms`) or 6 (x, y, z, √2 yz, √2 xz, √2 xy) on the 3-D plate (:mod:`fem.forms3d`); the first three are
+the normal components in both. With the trial
 deviatoric stress s_tr = 2G dev(ε − ε_p,n), q_tr = √(3/2)‖s_tr‖ and the yield function
 f = q_tr − (Y + H ᾱ_n):
 
@@ -27,9 +29,19 @@ import numpy as np
 
 __all__ = ["J2Material", "StressUpdate", "plastic_work", "radial_return", "von_mises"]
 
-_ONE = np.array([1.0, 1.0, 1.0, 0.0])
-_P_VOL = np.outer(_ONE, _ONE) / 3.0
-_P_DEV = np.eye(4) - _P_VOL
+
+def _identity(components: int) -> np.ndarray:
+    """The unit tensor in Mandel notation with ``components`` (4 or 6) entries."""
+    one = np.zeros(components)
+    one[:3] = 1.0
+    return one
+
+
+def _projectors(components: int) -> tuple[np.ndarray, np.ndarray]:
+    """Volumetric and deviatoric projectors (components × components)."""
+    one = _identity(components)
+    p_vol = np.outer(one, one) / 3.0
+    return p_vol, np.eye(components) - p_vol
 
 
 @dataclass(frozen=True)
@@ -52,12 +64,18 @@ class J2Material:
 
     @property
     def elastic_tangent(self) -> np.ndarray:
-        return 3.0 * self.bulk * _P_VOL + 2.0 * self.shear * _P_DEV
+        """The axisymmetric 4 × 4 Mandel elastic tangent (Pa)."""
+        return self.elastic_tangent_of(4)
+
+    def elastic_tangent_of(self, components: int) -> np.ndarray:
+        """The Mandel elastic tangent (Pa) with ``components`` (4: axisymmetric, 6: 3-D) entries."""
+        p_vol, p_dev = _projectors(components)
+        return 3.0 * self.bulk * p_vol + 2.0 * self.shear * p_dev
 
 
 @dataclass(frozen=True, eq=False)
 class StressUpdate:
-    """Result of :func:`radial_return`: ``stress`` (…, 4) Pa, ``plastic_strain`` (…, 4),
+    """Result of :func:`radial_return`: ``stress`` (…, c) Pa, ``plastic_strain`` (…, c) (c = 4 or 6 Mandel components),
     ``alpha`` (…) equivalent plastic strain, ``yielding`` (…) bool mask of points on the yield
     surface in this increment, ``trial_ratio`` (…) q_tr / (Y + Hᾱ_n), ``tangent`` (n_yielding, 4, 4)
     consistent tangent at the yielding points only (Pa)."""
@@ -71,27 +89,30 @@ class StressUpdate:
 
 
 def von_mises(stress: np.ndarray) -> np.ndarray:
-    """Von Mises equivalent stress (Pa) of Mandel stresses (…, 4)."""
-    s = stress - (stress[..., :3].sum(axis=-1) / 3.0)[..., None] * _ONE
+    """Von Mises equivalent stress (Pa) of Mandel stresses (…, 4) or (…, 6)."""
+    s = stress - (stress[..., :3].sum(axis=-1) / 3.0)[..., None] * _identity(stress.shape[-1])
     return np.sqrt(1.5 * np.einsum("...i,...i->...", s, s))
 
 
 def radial_return(
     material: J2Material, total_strain: np.ndarray, plastic_strain: np.ndarray, alpha: np.ndarray
 ) -> StressUpdate:
-    """Return-map the total Mandel strain (…, 4) from the converged state (ε_p,n, ᾱ_n)."""
+    """Return-map the total Mandel strain (…, 4) or (…, 6) from the converged state (ε_p,n, ᾱ_n)."""
     G = material.shear
+    components = total_strain.shape[-1]
+    one = _identity(components)
     elastic_strain = total_strain - plastic_strain
     trace = elastic_strain[..., :3].sum(axis=-1)
-    dev = elastic_strain - (trace / 3.0)[..., None] * _ONE
+    dev = elastic_strain - (trace / 3.0)[..., None] * one
     s_trial = 2.0 * G * dev
-    pressure_part = (material.bulk * trace)[..., None] * _ONE
+    pressure_part = (material.bulk * trace)[..., None] * one
     norm = np.sqrt(np.einsum("...i,...i->...", s_trial, s_trial))
     q_trial = np.sqrt(1.5) * norm
     if material.yield_strength is None:
         stress = s_trial + pressure_part
         empty = np.zeros(alpha.shape, dtype=bool)
-        return StressUpdate(stress, plastic_strain, alpha, empty, np.zeros_like(alpha), np.zeros((0, 4, 4)))
+        no_tangent = np.zeros((0, components, components))
+        return StressUpdate(stress, plastic_strain, alpha, empty, np.zeros_like(alpha), no_tangent)
     H = material.hardening
     flow_stress = material.yield_strength + H * alpha
     ratio = q_trial / flow_stress
@@ -100,7 +121,7 @@ def radial_return(
     new_plastic = plastic_strain.copy()
     new_alpha = alpha.copy()
     if not yielding.any():
-        return StressUpdate(stress, new_plastic, new_alpha, yielding, ratio, np.zeros((0, 4, 4)))
+        return StressUpdate(stress, new_plastic, new_alpha, yielding, ratio, np.zeros((0, components, components)))
     qy = q_trial[yielding]
     ny = s_trial[yielding] / norm[yielding][:, None]
     d_alpha = (qy - flow_stress[yielding]) / (3.0 * G + H)
@@ -109,9 +130,10 @@ def radial_return(
     new_plastic[yielding] += np.sqrt(1.5) * d_alpha[:, None] * ny
     new_alpha[yielding] += d_alpha
     theta_bar = 3.0 * G / (3.0 * G + H) - (1.0 - theta)
+    p_vol, p_dev = _projectors(components)
     tangent = (
-        3.0 * material.bulk * _P_VOL[None]
-        + 2.0 * G * theta[:, None, None] * _P_DEV[None]
+        3.0 * material.bulk * p_vol[None]
+        + 2.0 * G * theta[:, None, None] * p_dev[None]
         - 2.0 * G * theta_bar[:, None, None] * ny[:, :, None] * ny[:, None, :]
     )
     return StressUpdate(stress, new_plastic, new_alpha, yielding, ratio, tangent)

@@ -1,0 +1,163 @@
+r"""The 3-D plate's public entry point: :func:`indent_solid` (SI units).
+
+A rigid sphere is pressed into the 3-D half plate (:mod:`fem.mesh3d`, :mod:`fem.solid_solver`) along a path of
+overlaps δ, contact-centre positions c (x, m, in the plane of incidence) and slides ξ (the x displacement of the
+ball's surface in contact relative to the plate far away, m), with Coulomb friction μ. An elastic ball is
+represented, as on the axisymmetric plate (:mod:`fem.indent`), by a rigid sphere and a plate of the same effective
+modulus E*: exact for the normal Hertz contact; for the tangential compliance the ball's own (2 − ν_b)/G_b is then
+missing (Johnson Eq. 7.42), as is the ball's share of the normal–tangential coupling.
+
+Forces are those on the whole plate (twice the half model's).
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from contact.checks import check_array, check_number
+from contact.materials import Material
+from fem.indent import _plate_model, check_small_strain, estimate_contact_radius
+from fem.mesh3d import generate_block, scale_block
+from fem.plasticity import J2Material
+from fem.solid_solver import SolidSolver, SolidState, SolidStats
+
+__all__ = ["SolidIndentation", "indent_solid", "MAX_FRICTION"]
+
+#: Largest friction coefficient accepted (dry metal pairs reach ~1; beyond, Coulomb's law is not what is meant).
+MAX_FRICTION = 1.0
+
+# scikit-fem logs a line per array it copies; a user's terminal should not see them
+logging.getLogger("skfem").setLevel(logging.WARNING)
+
+
+@dataclass(frozen=True, eq=False)
+class SolidIndentation:
+    """The 3-D plate along a path (arrays: one entry per step).
+
+    ``overlap`` δ, ``centre`` c, ``slide`` ξ (m); ``normal_force`` P and ``tangential_force`` Q (x) on the whole
+    plate (N); ``contact_radius`` √(A/π) and ``stick_radius`` √(A_stick/π) of the contact and stick areas (m;
+    areas summed over the surface vertices' hats, so the edge falls midway between a vertex in and one out);
+    ``max_pressure`` (Pa); ``max_equivalent_plastic_strain``; ``newton_iterations``; ``surface_vertices`` (n, 3)
+    reference coordinates of the surface vertices (m); ``pressure`` (steps, n) and ``shear`` (steps, n, 2) the
+    contact tractions on the plate at those vertices (Pa, linear between them); ``residual_depth`` (n) the
+    surface vertices' u_z after the last step, positive into the plate (m); ``stats`` the solver's work.
+    """
+
+    overlap: np.ndarray
+    centre: np.ndarray
+    slide: np.ndarray
+    normal_force: np.ndarray
+    tangential_force: np.ndarray
+    contact_radius: np.ndarray
+    stick_radius: np.ndarray
+    max_pressure: np.ndarray
+    max_equivalent_plastic_strain: np.ndarray
+    newton_iterations: np.ndarray
+    surface_vertices: np.ndarray
+    pressure: np.ndarray
+    shear: np.ndarray
+    residual_depth: np.ndarray
+    stats: SolidStats
+    final: SolidState = field(repr=False)
+    solver: SolidSolver = field(repr=False)
+
+
+def _per_step(name: str, values, steps: int, low: float | None, high: float | None, units: str) -> np.ndarray:
+    if values is None:
+        return np.zeros(steps)
+    if np.ndim(values) == 0:
+        return np.full(steps, check_number(name, values, low=low, high=high, units=units))
+    array = check_array(name, values, low=low, high=high, units=units)
+    if array.size != steps:
+        raise ValueError(f"{name}: {array.size} entries, but the overlap path has {steps} (one per step)")
+    return array
+
+
+def indent_solid(
+    radius: float,
+    plate: Material,
+    overlaps,
+    centres=None,
+    slides=None,
+    friction=0.0,
+    ball: Material | None = None,
+    hardening: float = 0.0,
+    contact_elements: int = 4,
+    box_depth: float = 1.0,
+    rtol: float = 1e-6,
+) -> SolidIndentation:
+    r"""Press and drag a sphere of ``radius`` (m) over the 3-D ``plate`` along a path.
+
+    ``overlaps`` δ (m, one entry per increment), ``centres`` c (m, the sphere axis' x; default 0), ``slides`` ξ
+    (m; default 0), ``friction`` μ (one value, or one per step: 0 while the normal load is applied and μ after
+    is the Cattaneo–Mindlin protocol). ``ball`` None = rigid. ``hardening`` H (Pa). The mesh
+    (:func:`fem.mesh3d.generate_block`) has ``contact_elements`` elements across the path's largest expected
+    contact radius (Hertz, or Kogut & Etsion once yielded) over a box ``box_depth`` of it deep, around the centres'
+    track.
+    """
+    radius = check_number("radius", radius, low=1e-6, high=10.0, units="m", what="ball radius")
+    path = check_array("overlaps", overlaps, low=0.0, units="m", what="overlap")
+    if path.max() <= 0.0:
+        raise ValueError("overlaps are all 0: the path must press the ball into the plate (m)")
+    steps = path.size
+    centre = _per_step("centres", centres, steps, -radius, radius, "m")
+    slide = _per_step("slides", slides, steps, -radius, radius, "m")
+    mu = _per_step("friction", friction, steps, 0.0, MAX_FRICTION, "")
+    hardening = check_number("hardening", hardening, low=0.0, high=1e12, units="Pa", what="hardening modulus")
+    material, e_star = _plate_model(plate, ball, hardening)
+    max_overlap = float(path.max())
+    check_small_strain(radius, e_star, plate, max_overlap)
+    a_max = estimate_contact_radius(radius, e_star, plate, max_overlap)
+    track = (float(centre.min()) / a_max, float(centre.max()) / a_max)
+    mesh = scale_block(generate_block(contact_elements, track=track, depth=box_depth), a_max)
+    force_scale = 4.0 / 3.0 * e_star * math.sqrt(radius) * max_overlap**1.5
+    solver = SolidSolver(mesh, J2Material(material.E, material.nu, material.yield_strength, material.hardening),
+                         radius, float(mu.max()), force_scale, max_overlap, rtol=rtol)  # fmt: skip
+    d = solver.disc
+    vertex_rows = solver.node_vertices[solver.is_vertex, 0]
+    state, previous = solver.initial_state(), None
+    records: dict[str, list] = {k: [] for k in ("P", "Q", "a", "c", "pmax", "eps", "it", "p", "tau")}
+    for k in range(steps):
+        new = solver.advance(state, previous, (float(path[k]), float(centre[k]), float(slide[k])), float(mu[k]))
+        previous, state = state, new
+        normal, shear = solver.surface_forces(state)
+        pressure = solver.vertex_field(normal)
+        traction = solver.vertex_field(shear)
+        in_contact = np.zeros(pressure.size, bool)
+        in_contact[vertex_rows] = state.contact[solver.is_vertex]
+        sticking = np.zeros(pressure.size, bool)
+        sticking[vertex_rows] = state.stick[solver.is_vertex]
+        records["P"].append(2.0 * float(normal[state.contact].sum()))
+        records["Q"].append(2.0 * float(shear[:, 0].sum()))
+        records["a"].append(math.sqrt(2.0 * float(d.surface_area[in_contact].sum()) / math.pi))
+        records["c"].append(math.sqrt(2.0 * float(d.surface_area[sticking].sum()) / math.pi))
+        records["pmax"].append(float(np.max(pressure * in_contact, initial=0.0)))
+        records["eps"].append(float(np.max(state.alpha, initial=0.0)))
+        records["it"].append(state.iterations)
+        records["p"].append(np.where(in_contact, pressure, 0.0))
+        records["tau"].append(np.where(in_contact[:, None], traction, 0.0))
+    vertices = d.nodes[:, d.surface_vertex_nodes].T
+    uz = state.u[3 * d.surface_vertex_nodes + 2]
+    return SolidIndentation(
+        overlap=path,
+        centre=centre,
+        slide=slide,
+        normal_force=np.array(records["P"]),
+        tangential_force=np.array(records["Q"]),
+        contact_radius=np.array(records["a"]),
+        stick_radius=np.array(records["c"]),
+        max_pressure=np.array(records["pmax"]),
+        max_equivalent_plastic_strain=np.array(records["eps"]),
+        newton_iterations=np.array(records["it"]),
+        surface_vertices=vertices,
+        pressure=np.array(records["p"]),
+        shear=np.array(records["tau"]),
+        residual_depth=-uz,
+        stats=solver.stats,
+        final=state,
+        solver=solver,
+    )

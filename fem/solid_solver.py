@@ -1,0 +1,423 @@
+r"""Newton solver of the 3-D plate pressed and dragged by a rigid sphere, with Coulomb friction.
+
+Each increment prescribes the sphere's overlap δ, the x of its axis c (the contact centre's path) and the slide ξ:
+the x displacement of the ball's surface in contact, relative to the plate far away (ξ̇ is the contact point's slip
+velocity of the impact model). The plate's surface nodes obey
+
+* **contact** (node by node): u_z,i ≤ z_s(ρ_i) − z_i with ρ_i = √((x_i − c)² + y_i²) and z_s the sphere's surface
+  (:func:`fem.sphere_contact.sphere_surface`); a node in contact has u_z prescribed there;
+* **stick**: a node that sticks moves with the ball, u_t,i = u_t,i(start) + (Δξ, 0);
+* **slip**: elsewhere in contact the traction is τ = μ p ŝ, with ŝ the direction of the ball's slip over the
+  node in the increment, Δξ e_x − Δu_t,i.
+
+The pressure p and the shear τ are the fields linear between the surface vertices (the hat moments of the nodal
+forces, as on the axisymmetric plate, :mod:`fem.forms3d`); the Coulomb cone |τ| ≤ μ p is checked on them, vertex by
+vertex, and a mid-edge node sticks when both its vertices do. Nodes that penetrate join the contact, nodes where the
+pressure is negative leave it; stick vertices outside the cone slip, slip vertices whose slip reverses stick. The
+slip traction is evaluated at the current iterate (a fixed point inside Newton: the normal–tangential coupling of
+the plate is weak, (1 − 2ν)/2(1 − ν) of Johnson's §7.1, so it converges in a few iterations).
+
+Plasticity is the same J2 radial return as the axisymmetric plate (:mod:`fem.plasticity`, 6 Mandel components).
+Linear solves: the constrained rows become s·I and the system is solved by CG preconditioned with the PARDISO
+factor of an earlier such matrix (:mod:`fem.linear`), refactorised when CG needs more than ``cg_max_iterations``:
+a modified-Newton iteration that keeps one factorisation over most of an increment.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+from skfem import MeshTet
+
+from fem.forms import assemble, element_matrices, internal_force, strain
+from fem.forms3d import discretise_solid
+from fem.linear import Factorisation, SingularMatrixError, factorise
+from fem.plasticity import J2Material, radial_return
+from fem.solver import ConvergenceError
+from fem.sphere_contact import sphere_surface
+
+__all__ = ["SolidState", "SolidSolver", "SolidStats"]
+
+
+@dataclass(frozen=True, eq=False)
+class SolidState:
+    """Converged state: ``overlap`` δ (m), ``centre`` c (m), ``slide`` ξ (m), ``u`` nodal displacements (m,
+    interleaved x, y, z), ``plastic_strain`` (elements, qp, 6) Mandel, ``alpha`` (elements, qp) equivalent plastic
+    strain, ``contact`` and ``stick`` bool masks of the surface nodes, ``direction`` (surface vertices, 2) the unit
+    slip directions of the slipping vertices, ``iterations`` Newton iterations spent."""
+
+    overlap: float
+    centre: float
+    slide: float
+    u: np.ndarray
+    plastic_strain: np.ndarray
+    alpha: np.ndarray
+    contact: np.ndarray
+    stick: np.ndarray
+    direction: np.ndarray
+    iterations: int = 0
+
+
+@dataclass
+class SolidStats:
+    """Work counters (for the benchmark): factorisations, linear solves (factor applications), Newton iterations,
+    set updates, cut increments, and seconds spent factorising."""
+
+    factorisations: int = 0
+    solves: int = 0
+    iterations: int = 0
+    set_updates: int = 0
+    cuts: int = 0
+    elastic_retries: int = 0
+    increments: int = 0
+    factor_time: float = 0.0
+    history: list = field(default_factory=list)
+
+
+class _NotConverged(Exception):
+    pass
+
+
+class SolidSolver:
+    """3-D half plate on ``mesh`` (m) of ``material`` pressed by a rigid sphere of ``radius`` (m) with friction
+    coefficient ``friction``. ``force_scale`` (N) and ``gap_scale`` (m) set the tolerances (1e-12 and 1e-7 of
+    them)."""
+
+    def __init__(
+        self,
+        mesh: MeshTet,
+        material: J2Material,
+        radius: float,
+        friction: float,
+        force_scale: float,
+        gap_scale: float,
+        rtol: float = 1e-6,
+        max_iterations: int = 30,
+        max_cuts: int = 5,
+    ) -> None:
+        self.disc = d = discretise_solid(mesh)
+        self.material = material
+        self.radius = radius
+        self.friction = friction
+        self.rtol = rtol
+        self.atol = 1e-12 * force_scale
+        self.gap_tol = 1e-7 * gap_scale
+        self.max_iterations = max_iterations
+        self.max_cuts = max_cuts
+        self.max_set_updates = 40
+        self.cg_max_iterations = 15
+        self.cone_tolerance = 0.05
+        self.stats = SolidStats()
+        self.tangent_elastic = material.elastic_tangent_of(6)
+        self.elastic_element_matrices = element_matrices(d, self.tangent_elastic)
+        self.uz = d.surface_dofs(2)
+        self.ut = np.stack([d.surface_dofs(0), d.surface_dofs(1)], axis=1)
+        nvert = mesh.p.shape[1]
+        # the two end vertices (rows of the hats) of every surface node: a vertex twice
+        rows = d.surface_hats.tocsc()
+        self.node_vertices = np.array(
+            [rows.indices[rows.indptr[i] : rows.indptr[i + 1]][[0, -1]] for i in range(d.surface_nodes.size)]
+        )
+        self.is_vertex = d.surface_nodes < nvert
+        self.on_symmetry = np.abs(d.surface_xy[:, 1]) <= 1e-9 * float(np.ptp(d.nodes[0]))
+        self.mass_lu = spla.splu(d.surface_hat_mass.tocsc())
+        self._factor: Factorisation | None = None
+        self._factor_key = b""
+        nel, nq = d.weight.shape
+        self._zero_plastic = np.zeros((nel, nq, 6))
+        self._zero_alpha = np.zeros((nel, nq))
+
+    # -- the contact geometry and the surface fields
+    def initial_state(self) -> SolidState:
+        """The undeformed, unloaded plate."""
+        n = self.disc.surface_nodes.size
+        return SolidState(
+            0.0, 0.0, 0.0, np.zeros(self.disc.ndofs), self._zero_plastic, self._zero_alpha,
+            np.zeros(n, bool), np.zeros(n, bool), np.tile([1.0, 0.0], (self.disc.surface_vertex_nodes.size, 1)),
+        )  # fmt: skip
+
+    def obstacle(self, overlap: float, centre: float) -> np.ndarray:
+        """Largest u_z (m) of each surface node with the sphere at ``overlap`` and axis x = ``centre`` (m)."""
+        xy = self.disc.surface_xy
+        rho = np.hypot(xy[:, 0] - centre, xy[:, 1])
+        return sphere_surface(rho, overlap, self.radius) - self.disc.nodes[2, self.disc.surface_nodes]
+
+    def vertex_field(self, nodal: np.ndarray) -> np.ndarray:
+        """The linear field (per surface vertex) whose hat moments are those of the nodal forces ``nodal``
+        (surface nodes, ...) in N: a traction in Pa."""
+        return self.mass_lu.solve(np.asarray(self.disc.surface_hats @ nodal, dtype=float))
+
+    def surface_forces(self, state: SolidState) -> tuple[np.ndarray, np.ndarray]:
+        """The ball's forces on the surface nodes (N): normal (positive pressing) and tangential (x, y)."""
+        f = internal_force(self.disc, self.stress_update(state).stress)
+        return -f[self.uz], self._ball_shear(f)
+
+    def _ball_shear(self, f: np.ndarray) -> np.ndarray:
+        """Tangential nodal forces (surface nodes, 2) of the ball from the internal force ``f`` (N): on the
+        symmetry plane the y force is the mirror half's reaction, not the ball's."""
+        shear = f[self.ut]
+        shear[self.on_symmetry, 1] = 0.0
+        return shear
+
+    def stress_update(self, state: SolidState, reference: SolidState | None = None):
+        """Stress update of ``state.u`` from ``reference`` (default: the state itself, i.e. its stresses)."""
+        ref = state if reference is None else reference
+        return radial_return(self.material, strain(self.disc, state.u), ref.plastic_strain, ref.alpha)
+
+    # -- one increment
+    def _slip_traction(self, normal: np.ndarray, direction: np.ndarray, slip_vertices: np.ndarray, mu: float):
+        """Consistent nodal loads (surface nodes, 2) of τ = μ p ŝ over the slipping vertices."""
+        p = self.vertex_field(normal)
+        tau = (mu * np.maximum(p, 0.0) * slip_vertices)[:, None] * direction
+        return self.disc.surface_loads @ tau
+
+    def _equilibrate(
+        self, start: SolidState, target: tuple[float, float, float], u, contact, stick, direction, mu, elastic=False
+    ):
+        """Newton at fixed contact and stick sets and slip directions ``direction`` (surface vertices, 2). Returns
+        (u, stress update, f_int, iterations). ``elastic``: iterate with the elastic stiffness (initial-stiffness
+        method: linear convergence, but robust where the consistent tangent of a perfectly plastic point that
+        flips between reverse yield and elastic unloading misleads Newton or is not positive definite), up to
+        4 × the iterations."""
+        d = self.disc
+        overlap, centre, slide = target
+        obstacle = self.obstacle(overlap, centre)
+        stick_x = start.u[self.ut[:, 0]] + (slide - start.slide)
+        stick_y = start.u[self.ut[:, 1]]
+        constrained = np.concatenate([d.fixed_dofs, self.uz[contact], self.ut[stick, 0], self.ut[stick, 1]])
+        values = np.concatenate([np.zeros(d.fixed_dofs.size), obstacle[contact], stick_x[stick], stick_y[stick]])
+        constrained, first = np.unique(constrained, return_index=True)
+        values = values[first]
+        free = np.ones(d.ndofs, bool)
+        free[constrained] = False
+        slip_vertices = self._slip_vertices(contact, stick) if mu > 0.0 else None
+        history: list = []
+        for it in range(self.max_iterations * (4 if elastic else 1)):
+            upd = radial_return(self.material, strain(d, u), start.plastic_strain, start.alpha)
+            f = internal_force(d, upd.stress)
+            f_ext = np.zeros(d.ndofs)
+            if slip_vertices is not None and slip_vertices.any():
+                loads = self._slip_traction(-f[self.uz], direction, slip_vertices, mu)
+                f_ext[self.ut[:, 0]] = loads[:, 0]
+                f_ext[self.ut[:, 1]] = loads[:, 1]
+            residual_vector = f_ext - f
+            residual = np.linalg.norm(residual_vector[free])
+            scale = max(np.linalg.norm(f[self.uz[contact]]), self.atol / self.rtol)
+            du_c = values - u[constrained]
+            if np.max(np.abs(du_c), initial=0.0) <= self.gap_tol and residual <= self.rtol * scale:
+                return u, upd, f, it
+            if it > 0 and residual > 1e6 * scale:
+                break
+            K = self._tangent(upd, elastic)
+            rhs = residual_vector
+            step = np.zeros(d.ndofs)
+            step[constrained] = du_c
+            rhs = rhs - K @ step
+            keep = free.astype(float)
+            diag = float(np.mean(K.diagonal()[free]))
+            rhs[constrained] = diag * du_c
+            K_mod = (sp.diags(keep) @ K @ sp.diags(keep) + sp.diags(diag * (1.0 - keep))).tocsr()
+            tolerance = 1e-3 * self.rtol * scale / max(np.linalg.norm(rhs), 1e-300)
+            key = constrained.tobytes() + (b"elastic" if elastic else b"")
+            try:
+                du = self._solve(K_mod, rhs, tolerance, key)
+            except SingularMatrixError:
+                break
+            self.stats.iterations += 1
+            if elastic and not du_c.any():
+                u = self._accelerate(history, u, du)
+            else:
+                history.clear()
+                u = u + du
+        raise _NotConverged(residual)
+
+    def _accelerate(self, history: list, u: np.ndarray, du: np.ndarray, depth: int = 6) -> np.ndarray:
+        r"""Anderson acceleration (type II, Walker & Ni 2011) of the initial-stiffness iteration u ← u + K_e⁻¹ r(u):
+        with the last ``depth`` iterates' differences ΔU, ΔG of u and of the steps du,
+
+        .. math:: \gamma = \arg\min \lVert du - \Delta G\,\gamma \rVert,\qquad
+                  u \leftarrow u + du - (\Delta U + \Delta G)\,\gamma .
+
+        The plain iteration converges linearly, at the rate of the plastic zone's softening (tens of iterations
+        when a dent unloads with reverse yield); the mixing recovers a Krylov-like rate from the same solves."""
+        history.append((u, du))
+        del history[: -(depth + 1)]
+        if len(history) < 2:
+            return u + du
+        dU = np.stack([b[0] - a[0] for a, b in zip(history[:-1], history[1:], strict=True)], axis=1)
+        dG = np.stack([b[1] - a[1] for a, b in zip(history[:-1], history[1:], strict=True)], axis=1)
+        gamma = np.linalg.lstsq(dG, du, rcond=None)[0]
+        return u + du - (dU + dG) @ gamma
+
+    def _slip_vertices(self, contact: np.ndarray, stick: np.ndarray) -> np.ndarray:
+        """Surface vertices in contact that do not stick."""
+        vertex_rows = self.node_vertices[self.is_vertex, 0]
+        slip = np.zeros(self.disc.surface_vertex_nodes.size, bool)
+        slip[vertex_rows] = (contact & ~stick)[self.is_vertex]
+        return slip
+
+    def _tangent(self, upd, elastic: bool = False) -> sp.csr_matrix:
+        d = self.disc
+        ke = self.elastic_element_matrices
+        if upd.yielding.any() and not elastic:
+            ke = ke.copy()
+            elements = np.flatnonzero(upd.yielding.any(axis=1))
+            D = np.broadcast_to(self.tangent_elastic, (elements.size, d.weight.shape[1], 6, 6)).copy()
+            D[upd.yielding[elements]] = upd.tangent
+            ke[elements] = element_matrices(d, D, elements)
+        return assemble(d, ke)
+
+    def _solve(self, K_mod: sp.csr_matrix, rhs: np.ndarray, tolerance: float, key: bytes) -> np.ndarray:
+        """K_mod x = rhs by CG preconditioned with the kept factor; refactorised when CG is slow or when the
+        constrained DOFs (``key``) changed: a new contact or stick node changes K_mod by a rank of a few dozen,
+        which CG on the old factor resolves only in as many iterations."""
+        if self._factor is not None and key == self._factor_key:
+            count = [0]
+
+            def apply(v):
+                count[0] += 1
+                return self._factor.solve(v)
+
+            M = spla.LinearOperator(K_mod.shape, matvec=apply, dtype=float)
+            x, info = spla.cg(K_mod, rhs, x0=self._factor.solve(rhs), rtol=max(tolerance, 1e-12),
+                              maxiter=self.cg_max_iterations, M=M)  # fmt: skip
+            self.stats.solves += count[0] + 1
+            if info == 0:
+                return x
+        t0 = time.perf_counter()
+        if self._factor is not None:
+            self._factor.free()
+        self._factor = factorise(K_mod)
+        self._factor_key = key
+        self.stats.factorisations += 1
+        self.stats.solves += 1
+        self.stats.factor_time += time.perf_counter() - t0
+        return self._factor.solve(rhs)
+
+    def _newton(self, start: SolidState, target, u0, contact, stick, direction, mu) -> SolidState:
+        """Equilibrium at ``target`` = (δ, c, ξ), correcting the contact and stick sets until neither is violated."""
+        overlap, centre, slide = target
+        obstacle = self.obstacle(overlap, centre)
+        u = u0.copy()
+        seen: set[bytes] = set()
+        spent = 0
+        released = np.zeros_like(stick)  # nodes that left the stick set in this increment do not return to it
+        # an unloading increment is mostly elastic: the elastic stiffness (one factor for the whole increment)
+        # converges in a few iterations where the consistent tangent of the points that flip between reverse yield
+        # and elastic unloading takes tens, each with a new factor
+        unloading = overlap < start.overlap and bool(np.any(start.alpha))
+        for _ in range(self.max_set_updates):
+            try:
+                u, upd, f, it = self._equilibrate(start, target, u, contact, stick, direction, mu, unloading)
+            except _NotConverged:
+                u, upd, f, it = self._equilibrate(start, target, start.u, contact, stick, direction, mu, not unloading)
+                self.stats.elastic_retries += 1
+            spent += it
+            normal = -f[self.uz]
+            p_vertex = self.vertex_field(normal)
+            p_node = self.disc.surface_hats.T @ p_vertex
+            p_scale = max(float(np.max(np.abs(p_vertex), initial=0.0)), 1e-300)
+            gap = obstacle - u[self.uz]
+            pulling = contact & (p_node < -10.0 * self.rtol * p_scale)
+            penetrating = ~contact & (gap < -self.gap_tol)
+            new_contact = (contact & ~pulling) | penetrating
+            new_stick, new_direction = stick & new_contact, direction
+            if mu > 0.0:
+                new_stick, new_direction = self._update_stick(start, target, u, f, stick, direction, new_contact,
+                                                              p_vertex, mu, released)  # fmt: skip
+                released |= stick & ~new_stick
+            key = new_contact.tobytes() + new_stick.tobytes()
+            if np.array_equal(new_contact, contact) and np.array_equal(new_stick, stick):
+                self.stats.history.append(spent)
+                return SolidState(
+                    overlap, centre, slide, u, upd.plastic_strain, upd.alpha, contact, stick, direction, spent
+                )
+            self.stats.set_updates += 1
+            seen.add(contact.tobytes() + stick.tobytes())
+            if key in seen:
+                # a cycle: correct the contact only (penetration first), keep the stick set
+                new_stick = stick & new_contact
+                if (new_contact.tobytes() + new_stick.tobytes()) in seen:
+                    raise _NotConverged(float("nan"))
+            contact, stick, direction = new_contact, new_stick, new_direction
+        raise _NotConverged(float("nan"))
+
+    def _update_stick(self, start, target, u, f, stick, direction, new_contact, p_vertex, mu, released):
+        """The stick set and slip directions after one equilibrium: stick vertices outside the cone slip (along
+        their traction), slip vertices whose slip reverses stick (unless they were ``released`` from the stick set
+        in this increment: within one increment the set only shrinks after that, which ends the cycles a coarse
+        stick boundary can set off), the others slip along their slip."""
+        slide = target[2]
+        vertex_rows = self.node_vertices[self.is_vertex, 0]
+        tau = self.vertex_field(self._ball_shear(f))
+        sticks = np.zeros(p_vertex.size, bool)
+        sticks[vertex_rows] = stick[self.is_vertex]
+        in_contact = np.zeros(p_vertex.size, bool)
+        in_contact[vertex_rows] = new_contact[self.is_vertex]
+        magnitude = np.linalg.norm(tau, axis=1)
+        cone = mu * np.maximum(p_vertex, 0.0)
+        # the projected traction overshoots the cone by a few per cent at a discrete stick edge (where the
+        # continuum's |τ|/μp → 1 like 1 − √(c − r)); releasing on that overshoot sets off a cascade to gross slip
+        floor = 1e-3 * max(float(cone.max(initial=0.0)), 1e-300)
+        leave = sticks & (magnitude > (1.0 + self.cone_tolerance) * cone + floor)
+        nodal_slip = np.stack([slide - start.slide - (u[self.ut[:, 0]] - start.u[self.ut[:, 0]]),
+                               -(u[self.ut[:, 1]] - start.u[self.ut[:, 1]])], axis=1)  # fmt: skip
+        # the slip as a linear field (its L2 projection on the hats): the quadratic field's vertex values carry the
+        # same corner/mid-edge alternation as its reactions
+        slip = self.mass_lu.solve(np.asarray(self.disc.surface_loads.T @ nodal_slip))
+        length = np.linalg.norm(slip, axis=1)
+        along = np.einsum("ij,ij->i", slip, direction)
+        reach = max(float(length.max(initial=0.0)), 1e-300)
+        was_released = np.zeros(p_vertex.size, bool)
+        was_released[vertex_rows] = released[self.is_vertex]
+        reverse = in_contact & ~sticks & ~was_released & (along < -1e-2 * reach)
+        new_direction = direction.copy()
+        moving = ~sticks & ~reverse & (length > 1e-6 * reach)
+        new_direction[moving] = slip[moving] / length[moving, None]
+        new_direction[leave] = tau[leave] / magnitude[leave, None]
+        vertex_sticks = in_contact & ((sticks & ~leave) | reverse)
+        ends = self.node_vertices
+        return new_contact & vertex_sticks[ends[:, 0]] & vertex_sticks[ends[:, 1]], new_direction
+
+    def _guess(self, state: SolidState, previous: SolidState | None, target, mu: float):
+        overlap, centre, slide = target
+        obstacle = self.obstacle(overlap, centre)
+        u0 = state.u
+        if previous is not None and overlap > state.overlap > previous.overlap:
+            factor = min((overlap - state.overlap) / (state.overlap - previous.overlap), 4.0)
+            u0 = state.u + factor * (state.u - previous.u)
+        contact = state.contact | (obstacle - u0[self.uz] <= self.gap_tol)
+        if state.overlap == 0.0 and not state.contact.any():
+            rho = np.hypot(self.disc.surface_xy[:, 0] - centre, self.disc.surface_xy[:, 1])
+            contact = rho < np.sqrt(self.radius * max(overlap, 0.0))
+        # a node that comes into contact sticks first; after a frictionless history every node in contact does
+        stuck = state.stick if state.stick.any() else state.contact
+        stick = (stuck | ~state.contact) & contact if mu > 0.0 else np.zeros_like(contact)
+        return u0, contact, stick, state.direction
+
+    def advance(
+        self, state: SolidState, previous: SolidState | None, target: tuple[float, float, float],
+        friction: float | None = None, depth: int = 0,
+    ) -> SolidState:  # fmt: skip
+        """Converged state at ``target`` = (overlap δ, centre c, slide ξ) in m from ``state``, with friction
+        coefficient ``friction`` (default the solver's); cuts the increment in halves if needed."""
+        mu = self.friction if friction is None else friction
+        u0, contact, stick, direction = self._guess(state, previous, target, mu)
+        try:
+            new = self._newton(state, target, u0, contact, stick, direction, mu)
+            self.stats.increments += 1
+            return new
+        except _NotConverged as exc:
+            if depth >= self.max_cuts:
+                raise ConvergenceError(
+                    f"3-D plate: Newton did not converge at overlap={target[0]:.6g} m, centre={target[1]:.6g} m, "
+                    f"slide={target[2]:.6g} m (cut {depth} times): residual {float(exc.args[0]):.3e} N"
+                ) from None
+        self.stats.cuts += 1
+        middle = tuple(0.5 * (a + b) for a, b in zip((state.overlap, state.centre, state.slide), target, strict=True))
+        half = self.advance(state, previous, middle, friction, depth + 1)
+        return self.advance(half, state, target, friction, depth + 1)

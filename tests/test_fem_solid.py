@@ -1,0 +1,109 @@
+"""The 3-D plate (fem.solid, fem.solid_solver) against independent references: Hertz, the axisymmetric FE plate,
+and Hamilton's (1983) closed-form stresses under a sliding sphere.
+
+The meshes are the default 3-D block (4 elements across the largest contact radius, quadratic nodes at a/8).
+"""
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import fem
+from contact.materials import Material
+from contact.theory import first_yield
+from fem.mesh3d import generate_block, scale_block
+from fem.plasticity import J2Material, von_mises
+from fem.solid import indent_solid
+from fem.solid_solver import SolidSolver
+
+R, E, NU, Y = 0.01, 210e9, 0.3, 210e6
+E_STAR = E / (1.0 - NU**2)
+DATA = Path(__file__).parent / "data"
+
+
+def hertz_force(overlap):
+    return 4.0 / 3.0 * E_STAR * math.sqrt(R) * overlap**1.5
+
+
+def test_normal_contact_matches_hertz():
+    """Hertz (Johnson 1985, Eqs. 4.22-4.23): P = 4/3 E* R^1/2 δ^3/2 within 2%, a = √(Rδ) within 3%."""
+    plate = Material(E=E, nu=NU, density=7800.0)
+    delta = (1e-4) ** 2 / R
+    result = indent_solid(R, plate, [0.5 * delta, delta])
+    force_error = result.normal_force / hertz_force(result.overlap) - 1.0
+    radius_error = result.contact_radius / np.sqrt(R * result.overlap) - 1.0
+    assert np.all(np.abs(force_error) < 0.02), force_error
+    assert abs(radius_error[-1]) < 0.03, radius_error
+    assert np.all(result.tangential_force == pytest.approx(0.0, abs=1e-9 * result.normal_force.max()))
+
+
+@pytest.mark.slow
+def test_plastic_normal_contact_matches_axisymmetric_plate():
+    """A normal press to w = δ/δ_c = 6 and back: the 3-D plate's peak force within 3% and residual dent within 5%
+    of the axisymmetric FE plate (itself validated against Kogut & Etsion 2002 and Mesarovic & Johnson 2000)."""
+    plate = Material(E=E, nu=NU, density=7800.0, yield_strength=Y)
+    critical = first_yield(R, E_STAR, Y, NU).overlap
+    peak = 6.0 * critical
+    path = np.r_[np.linspace(0.0, peak, 7)[1:], [0.6 * peak, 0.3 * peak, 0.0]]
+    solid = indent_solid(R, plate, path)
+    axisymmetric = fem.indent(R, plate, path)
+    top = int(np.argmax(path))
+    assert solid.normal_force[top] / axisymmetric.force[top] - 1.0 == pytest.approx(0.0, abs=0.03)
+    centre = int(np.argmin(np.linalg.norm(solid.surface_vertices[:, :2], axis=1)))
+    dent = solid.residual_depth[centre]
+    assert dent / float(np.max(axisymmetric.residual_depth)) - 1.0 == pytest.approx(0.0, abs=0.05)
+
+
+def _hamilton():
+    lines = [line for line in (DATA / "hamilton_first_yield.csv").read_text().splitlines() if not line.startswith("#")]
+    names = lines[0].split(",")
+    rows = [dict(zip(names, map(float, line.split(",")), strict=True)) for line in lines[1:]]
+    return {row["mu"]: row for row in rows}
+
+
+@pytest.mark.slow
+def test_first_yield_under_a_sliding_sphere_matches_hamilton():
+    """Elastic plate, Hertz load applied without friction, then slid to gross sliding (Q = μP): the largest von
+    Mises stress gives the critical p0/Y of first yield, against Hamilton's (1983) closed-form stresses
+    (tests/data/hamilton_first_yield.csv, ν = 0.3): within 3%, below the surface at z ≈ 0.48a for μ = 0 and 0.2.
+    For μ = 0.5 yield starts at the surface on the trailing half (Hamilton: at the trailing edge x = −a)."""
+    reference = _hamilton()
+    a_max = 1e-4
+    delta = a_max**2 / R
+    mesh = scale_block(generate_block(4), a_max)
+    solver = SolidSolver(mesh, J2Material(E, NU), R, 0.5, hertz_force(delta), delta)
+    loaded = solver.advance(solver.initial_state(), None, (delta, 0.0, 0.0), friction=0.0)
+    shear_modulus = E / (2.0 * (1.0 + NU))
+    for mu in (0.0, 0.2, 0.5):
+        normal, _ = solver.surface_forces(loaded)
+        P = 2.0 * normal.sum()
+        a = (3.0 * P * R / (4.0 * E_STAR)) ** (1.0 / 3.0)
+        p0 = 3.0 * P / (2.0 * math.pi * a**2)
+        # twice the Cattaneo-Mindlin slide of gross sliding, 3μP(2 − ν)/(16 G a)
+        slide = 2.0 * 3.0 * mu * P * (2.0 - NU) / (16.0 * shear_modulus * a)
+        state = solver.advance(loaded, None, (delta, 0.0, slide), friction=mu)
+        normal, shear = solver.surface_forces(state)
+        if mu > 0.0:
+            assert not state.stick.any()
+            assert 2.0 * shear[:, 0].sum() / (mu * 2.0 * normal.sum()) == pytest.approx(1.0, abs=0.01)
+        stress = von_mises(solver.stress_update(state).stress)
+        worst = np.unravel_index(np.argmax(stress), stress.shape)
+        x, _, z = solver.disc.qp[:, worst[0], worst[1]] / a
+        ratio = p0 / stress.max()
+        row = reference[mu]
+        if mu < 0.3:
+            assert ratio / row["p0_over_Y"] - 1.0 == pytest.approx(0.0, abs=0.03), (mu, ratio)
+            assert -z == pytest.approx(row["z_over_a"], abs=0.06), (mu, z)
+        else:
+            assert row["z_over_a"] == 0.0
+            assert -z < 0.1 and x < 0.0, (mu, x, z)
+
+
+def test_bad_friction_and_path_lengths_name_the_parameter():
+    plate = Material(E=E, nu=NU, density=7800.0)
+    with pytest.raises(ValueError, match="friction"):
+        indent_solid(R, plate, [1e-6], friction=1.5)
+    with pytest.raises(ValueError, match="slides: 1 entries, but the overlap path has 2"):
+        indent_solid(R, plate, [1e-6, 2e-6], slides=[0.0])
