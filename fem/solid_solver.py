@@ -11,7 +11,7 @@ velocity of the impact model). The plate's surface nodes obey
   node in the increment, Δξ e_x − Δu_t,i.
 
 The pressure p and the shear τ are the fields linear between the surface vertices (the hat moments of the nodal
-forces, as on the axisymmetric plate, :mod:`fem.forms3d`); the Coulomb cone |τ| ≤ μ p is checked on them, vertex by
+forces, as on the axisymmetric plate, :mod:`fem.forms3d`); the Coulomb cone ‖τ‖ ≤ μ p is checked on them, vertex by
 vertex, and a mid-edge node sticks when both its vertices do. Nodes that penetrate join the contact, nodes where the
 pressure is negative leave it; stick vertices outside the cone slip, slip vertices whose slip reverses stick. The
 slip traction is evaluated at the current iterate (a fixed point inside Newton: the normal–tangential coupling of
@@ -361,7 +361,7 @@ class SolidSolver:
         magnitude = np.linalg.norm(tau, axis=1)
         cone = mu * np.maximum(p_vertex, 0.0)
         # the projected traction overshoots the cone by a few per cent at a discrete stick edge (where the
-        # continuum's |τ|/μp → 1 like 1 − √(c − r)); releasing on that overshoot sets off a cascade to gross slip
+        # continuum's ‖τ‖/μp → 1 like 1 − √(c − r)); releasing on that overshoot sets off a cascade to gross slip
         floor = 1e-3 * max(float(cone.max(initial=0.0)), 1e-300)
         leave = sticks & (magnitude > (1.0 + self.cone_tolerance) * cone + floor)
         nodal_slip = np.stack([slide - start.slide - (u[self.ut[:, 0]] - start.u[self.ut[:, 0]]),
