@@ -17,6 +17,10 @@ Named boundaries: ``surface`` (z = 0), ``bottom`` (z = −L), ``symmetry`` (y = 
 
 from __future__ import annotations
 
+import logging
+from collections.abc import Iterator
+from contextlib import contextmanager
+
 import numpy as np
 from skfem import MeshHex, MeshTet
 
@@ -29,6 +33,19 @@ BLOCK_SIZE = 64.0
 #: The contact box's half-width across the track and beyond its ends, and its depth (units of a_max).
 BOX_WIDTH = 1.3
 BOX_DEPTH = 1.0
+
+
+@contextmanager
+def _quiet_refinement() -> Iterator[None]:
+    """scikit-fem warns on every refined mesh of over 1000 elements that it copies an array to C order (a
+    performance note, not a user's concern): silenced while the block is bisected."""
+    logger = logging.getLogger("skfem")
+    level = logger.level
+    logger.setLevel(logging.ERROR)
+    try:
+        yield
+    finally:
+        logger.setLevel(level)
 
 
 def _with_named_boundaries(mesh: MeshTet, size: float) -> MeshTet:
@@ -84,15 +101,16 @@ def generate_block(
     mesh = MeshHex.init_tensor(
         np.linspace(-size, size, 2 * cells + 1), np.linspace(0.0, size, cells + 1), np.linspace(-size, 0.0, cells + 1)
     ).to_meshtet()
-    for _ in range(200):
-        corners = mesh.p[:, mesh.t]
-        # ∞-norm distance between the element's bounding box and the contact box
-        distance = np.maximum(box_low[:, None] - corners.max(axis=1), corners.min(axis=1) - box_high[:, None])
-        target = h_contact + grading * np.maximum(distance, 0.0).max(axis=0)
-        marked = np.flatnonzero(element_size(mesh) > target * (1.0 + 1e-9))
-        if marked.size == 0:
-            break
-        mesh = mesh.refined(marked)
+    with _quiet_refinement():
+        for _ in range(200):
+            corners = mesh.p[:, mesh.t]
+            # ∞-norm distance between the element's bounding box and the contact box
+            distance = np.maximum(box_low[:, None] - corners.max(axis=1), corners.min(axis=1) - box_high[:, None])
+            target = h_contact + grading * np.maximum(distance, 0.0).max(axis=0)
+            marked = np.flatnonzero(element_size(mesh) > target * (1.0 + 1e-9))
+            if marked.size == 0:
+                break
+            mesh = mesh.refined(marked)
     mesh = MeshTet(np.ascontiguousarray(mesh.p), np.ascontiguousarray(mesh.t))
     return _with_named_boundaries(mesh, size)
 

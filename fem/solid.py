@@ -12,7 +12,6 @@ Forces are those on the whole plate (twice the half model's).
 
 from __future__ import annotations
 
-import logging
 import math
 from dataclasses import dataclass, field
 
@@ -29,9 +28,6 @@ __all__ = ["SolidIndentation", "indent_solid", "MAX_FRICTION"]
 
 #: Largest friction coefficient accepted (dry metal pairs reach ~1; beyond, Coulomb's law is not what is meant).
 MAX_FRICTION = 1.0
-
-# scikit-fem logs a line per array it copies; a user's terminal should not see them
-logging.getLogger("skfem").setLevel(logging.WARNING)
 
 
 @dataclass(frozen=True, eq=False)

@@ -6,16 +6,19 @@ velocity of the impact model). The plate's surface nodes obey
 
 * **contact** (node by node): u_z,i ≤ z_s(ρ_i) − z_i with ρ_i = √((x_i − c)² + y_i²) and z_s the sphere's surface
   (:func:`fem.sphere_contact.sphere_surface`); a node in contact has u_z prescribed there;
-* **stick**: a node that sticks moves with the ball, u_t,i = u_t,i(start) + (Δξ, 0);
+* **stick** (weakly, on each sticking vertex's hat ψ_j): Σ_i G_ij (u_t,i − u_t,i(start) − Δξ e_x) = 0, with G the
+  consistent loads of a linear traction on the quadratic nodes (:mod:`fem.forms3d`) — the mortar pairing, whose
+  multipliers are the shear traction at the stick vertices;
 * **slip**: elsewhere in contact the traction is τ = μ p ŝ, with ŝ the direction of the ball's slip over the
-  node in the increment, Δξ e_x − Δu_t,i.
+  vertex in the increment, Δξ e_x − Δu_t.
 
 The pressure p and the shear τ are the fields linear between the surface vertices (the hat moments of the nodal
-forces, as on the axisymmetric plate, :mod:`fem.forms3d`); the Coulomb cone ‖τ‖ ≤ μ p is checked on them, vertex by
-vertex, and a mid-edge node sticks when both its vertices do. Nodes that penetrate join the contact, nodes where the
-pressure is negative leave it; stick vertices outside the cone slip, slip vertices whose slip reverses stick. The
-slip traction is evaluated at the current iterate (a fixed point inside Newton: the normal–tangential coupling of
-the plate is weak, (1 − 2ν)/2(1 − ν) of Johnson's §7.1, so it converges in a few iterations).
+forces, as on the axisymmetric plate); the Coulomb cone ‖τ‖ ≤ μ p is checked on them, vertex by vertex. Nodes that
+penetrate join the contact, nodes where the pressure is negative leave it; stick vertices outside the cone slip,
+slip vertices whose slip reverses stick. The slip traction is evaluated at the current iterate (a fixed point inside
+Newton: the plate's normal–tangential coupling is weak, (1 − 2ν)/2(1 − ν) of Johnson's §7.1). A stick constraint
+on the quadratic nodes themselves (node by node) would leave the mid-edge nodes between a stick and a slip vertex to
+one side or the other: ±6–7% on the tangential compliance of a Cattaneo–Mindlin contact on the default mesh.
 
 Plasticity is the same J2 radial return as the axisymmetric plate (:mod:`fem.plasticity`, 6 Mandel components).
 Linear solves: the constrained rows become s·I and the system is solved by CG preconditioned with the PARDISO
@@ -127,6 +130,7 @@ class SolidSolver:
         self.mass_lu = spla.splu(d.surface_hat_mass.tocsc())
         self._factor: Factorisation | None = None
         self._factor_key = b""
+        self._columns: dict[int, np.ndarray] = {}
         nel, nq = d.weight.shape
         self._zero_plastic = np.zeros((nel, nq, 6))
         self._zero_alpha = np.zeros((nel, nq))
@@ -186,15 +190,17 @@ class SolidSolver:
         d = self.disc
         overlap, centre, slide = target
         obstacle = self.obstacle(overlap, centre)
-        stick_x = start.u[self.ut[:, 0]] + (slide - start.slide)
-        stick_y = start.u[self.ut[:, 1]]
-        constrained = np.concatenate([d.fixed_dofs, self.uz[contact], self.ut[stick, 0], self.ut[stick, 1]])
-        values = np.concatenate([np.zeros(d.fixed_dofs.size), obstacle[contact], stick_x[stick], stick_y[stick]])
-        constrained, first = np.unique(constrained, return_index=True)
-        values = values[first]
+        constrained = np.unique(np.concatenate([d.fixed_dofs, self.uz[contact]]))
+        values = np.zeros(d.ndofs)
+        values[self.uz[contact]] = obstacle[contact]
+        values = values[constrained]
         free = np.ones(d.ndofs, bool)
         free[constrained] = False
         slip_vertices = self._slip_vertices(contact, stick) if mu > 0.0 else None
+        rows, targets, row_ids = self._stick_rows(start, slide, contact, stick, free) if mu > 0.0 else (None,) * 3
+        if rows is not None and rows.shape[0] == 0:
+            rows = None
+        multipliers = np.zeros(0 if rows is None else rows.shape[0])
         history: list = []
         for it in range(self.max_iterations * (4 if elastic else 1)):
             upd = radial_return(self.material, strain(d, u), start.plastic_strain, start.alpha)
@@ -205,10 +211,15 @@ class SolidSolver:
                 f_ext[self.ut[:, 0]] = loads[:, 0]
                 f_ext[self.ut[:, 1]] = loads[:, 1]
             residual_vector = f_ext - f
-            residual = np.linalg.norm(residual_vector[free])
+            # the stick tractions (the multipliers of the last solve) balance the residual on the stick zone
+            balanced = residual_vector if rows is None else residual_vector - rows.T @ multipliers
+            residual = np.linalg.norm(balanced[free])
             scale = max(np.linalg.norm(f[self.uz[contact]]), self.atol / self.rtol)
             du_c = values - u[constrained]
-            if np.max(np.abs(du_c), initial=0.0) <= self.gap_tol and residual <= self.rtol * scale:
+            # the rows are scaled to unit row sums (a weighted mean slip), so their error is a length
+            stick_error = 0.0 if rows is None else float(np.max(np.abs(targets - rows @ u), initial=0.0))
+            if (np.max(np.abs(du_c), initial=0.0) <= self.gap_tol and stick_error <= self.gap_tol
+                    and residual <= self.rtol * scale):  # fmt: skip
                 return u, upd, f, it
             if it > 0 and residual > 1e6 * scale:
                 break
@@ -224,7 +235,13 @@ class SolidSolver:
             tolerance = 1e-3 * self.rtol * scale / max(np.linalg.norm(rhs), 1e-300)
             key = constrained.tobytes() + (b"elastic" if elastic else b"")
             try:
-                du = self._solve(K_mod, rhs, tolerance, key)
+                if rows is None:
+                    du = self._solve(K_mod, rhs, tolerance, key)
+                else:
+                    # a tangent that changed (plastic points) must be factorised again: the key says when
+                    stuck_key = key + (b"" if elastic or not upd.yielding.any() else b"%d" % self.stats.iterations)
+                    defect = targets - rows @ (u + step)
+                    du, multipliers = self._solve_stuck(K_mod, rhs, rows, row_ids, defect, stuck_key)
             except SingularMatrixError:
                 break
             self.stats.iterations += 1
@@ -252,6 +269,71 @@ class SolidSolver:
         dG = np.stack([b[1] - a[1] for a, b in zip(history[:-1], history[1:], strict=True)], axis=1)
         gamma = np.linalg.lstsq(dG, du, rcond=None)[0]
         return u + du - (dU + dG) @ gamma
+
+    def _stick_rows(self, start: SolidState, slide: float, contact, stick, free) -> tuple[sp.csr_matrix, np.ndarray]:
+        r"""The stick constraints, weak on each sticking vertex's hat (the mortar pairing of the linear traction
+        field with the quadratic displacements):
+
+        .. math:: \sum_i G_{ij}\,\bigl(u_{t,i} - u_{t,i}^{start} - \Delta\xi\, e_x\bigr) = 0,
+
+        x and y rows (no y row on the symmetry plane: there τ_y = 0 by symmetry). Their multipliers are the shear
+        traction at the stick vertices (Pa) times their hats' weights. Returns (rows over all DOFs, each scaled to a
+        unit sum of absolute values so that its error is a length in m, targets in m, row ids 2·vertex + component).
+        """
+        d = self.disc
+        vertex_rows = self.node_vertices[self.is_vertex, 0]
+        sticking = np.zeros(d.surface_vertex_nodes.size, bool)
+        sticking[vertex_rows] = (stick & contact)[self.is_vertex]
+        loads = d.surface_loads[:, sticking].T.tocsr()  # (k, surface nodes)
+        on_plane = np.abs(d.nodes[1, d.surface_vertex_nodes[sticking]]) <= 1e-9 * float(np.ptp(d.nodes[0]))
+        blocks, targets, ids = [], [], []
+        vertex_ids = np.flatnonzero(sticking)
+        for component, keep_rows in ((0, slice(None)), (1, ~on_plane)):
+            ids.append(2 * vertex_ids[keep_rows] + component)
+            block = loads[keep_rows]
+            dofs = self.ut[:, component]
+            coo = block.tocoo()
+            columns = dofs[coo.col]
+            mask = free[columns]
+            blocks.append(sp.csr_matrix((coo.data[mask], (coo.row[mask], columns[mask])),
+                                        shape=(block.shape[0], d.ndofs)))  # fmt: skip
+            moved = start.u[dofs] + ((slide - start.slide) if component == 0 else 0.0)
+            targets.append(block @ moved)
+        rows, targets = sp.vstack(blocks).tocsr(), np.concatenate(targets)
+        sums = np.asarray(abs(rows).sum(axis=1)).ravel()
+        sums[sums == 0.0] = 1.0
+        return (sp.diags(1.0 / sums) @ rows).tocsr(), targets / sums, np.concatenate(ids)
+
+    def _solve_stuck(self, K_mod, rhs, rows, row_ids, defect, key: bytes):
+        r"""Solve [[K_mod, Cᵀ], [C, 0]] [du; λ] = [rhs; defect] by the multipliers' Schur complement on the SPD
+        factor of K_mod (kept, like :meth:`_solve`'s, while ``key`` and the matrix are unchanged):
+
+        .. math:: (C K^{-1} C^T)\,\lambda = C K^{-1} r - d,\qquad du = K^{-1}(r - C^T\lambda).
+
+        The columns K⁻¹Cᵀ are one multi-right-hand-side solve, kept per row (``row_ids``) with the factor: a row
+        depends only on its vertex's hat, so a new stick set costs only its new rows. A saddle-point factorisation
+        (PARDISO's symmetric-indefinite mode) perturbs the multipliers' zero pivots and returned a residual of 1e12
+        here; the complement of a few hundred rows is exact and reuses the plate's own factor. Returns (du, λ)."""
+        if self._factor is None or key != self._factor_key:
+            t0 = time.perf_counter()
+            if self._factor is not None:
+                self._factor.free()
+            self._factor = factorise(K_mod)
+            self._factor_key = key
+            self._columns = {}
+            self.stats.factorisations += 1
+            self.stats.factor_time += time.perf_counter() - t0
+        missing = [k for k, i in enumerate(row_ids) if int(i) not in self._columns]
+        if missing:
+            solved = self._factor.solve(np.ascontiguousarray(rows[missing].T.toarray()))
+            for j, k in enumerate(missing):
+                self._columns[int(row_ids[k])] = solved[:, j]
+            self.stats.solves += len(missing)
+        columns = np.stack([self._columns[int(i)] for i in row_ids], axis=1)
+        base = self._factor.solve(rhs)
+        self.stats.solves += 1
+        multipliers = np.linalg.solve(rows @ columns, rows @ base - defect)
+        return base - columns @ multipliers, multipliers
 
     def _slip_vertices(self, contact: np.ndarray, stick: np.ndarray) -> np.ndarray:
         """Surface vertices in contact that do not stick."""
@@ -293,6 +375,7 @@ class SolidSolver:
             self._factor.free()
         self._factor = factorise(K_mod)
         self._factor_key = key
+        self._columns = {}
         self.stats.factorisations += 1
         self.stats.solves += 1
         self.stats.factor_time += time.perf_counter() - t0
@@ -366,19 +449,28 @@ class SolidSolver:
         leave = sticks & (magnitude > (1.0 + self.cone_tolerance) * cone + floor)
         nodal_slip = np.stack([slide - start.slide - (u[self.ut[:, 0]] - start.u[self.ut[:, 0]]),
                                -(u[self.ut[:, 1]] - start.u[self.ut[:, 1]])], axis=1)  # fmt: skip
-        # the slip as a linear field (its L2 projection on the hats): the quadratic field's vertex values carry the
-        # same corner/mid-edge alternation as its reactions
-        slip = self.mass_lu.solve(np.asarray(self.disc.surface_loads.T @ nodal_slip))
+        # the slip over each vertex's hat, weighted as the stick constraint weighs it (zero at a stick vertex): the
+        # quadratic field's own vertex values carry the corner/mid-edge alternation of its reactions
+        area = np.maximum(self.disc.surface_area, 1e-300)[:, None]
+        slip = np.asarray(self.disc.surface_loads.T @ nodal_slip) / area
         length = np.linalg.norm(slip, axis=1)
         along = np.einsum("ij,ij->i", slip, direction)
         reach = max(float(length.max(initial=0.0)), 1e-300)
         was_released = np.zeros(p_vertex.size, bool)
         was_released[vertex_rows] = released[self.is_vertex]
         reverse = in_contact & ~sticks & ~was_released & (along < -1e-2 * reach)
+        # The slip direction, leaning towards the ball's own slide: a vertex that has just left the stick zone
+        # slips by little, and the direction of that small slip (or of the discrete stick traction at the zone's
+        # edge) is noise that turned half the slip zone's traction sideways and set off a cascade to gross slip.
+        # The lean, the ball's slide in the increment, leaves a slip larger than that mostly its own way.
+        lean = (slide - start.slide) * np.array([1.0, 0.0])
+        leaned = slip + lean
+        size = np.linalg.norm(leaned, axis=1)
         new_direction = direction.copy()
-        moving = ~sticks & ~reverse & (length > 1e-6 * reach)
-        new_direction[moving] = slip[moving] / length[moving, None]
-        new_direction[leave] = tau[leave] / magnitude[leave, None]
+        moving = ~sticks & (along >= -1e-2 * reach) & (size > 1e-6 * max(reach, float(np.linalg.norm(lean))))
+        new_direction[moving] = leaned[moving] / size[moving, None]
+        released_now = leave & (size > 0.0)
+        new_direction[released_now] = leaned[released_now] / size[released_now, None]
         vertex_sticks = in_contact & ((sticks & ~leave) | reverse)
         ends = self.node_vertices
         return new_contact & vertex_sticks[ends[:, 0]] & vertex_sticks[ends[:, 1]], new_direction

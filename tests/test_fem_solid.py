@@ -107,3 +107,46 @@ def test_bad_friction_and_path_lengths_name_the_parameter():
         indent_solid(R, plate, [1e-6], friction=1.5)
     with pytest.raises(ValueError, match="slides: 1 entries, but the overlap path has 2"):
         indent_solid(R, plate, [1e-6, 2e-6], slides=[0.0])
+
+
+@pytest.mark.slow
+def test_partial_slip_matches_cattaneo_mindlin():
+    """Normal load applied without friction, then the ball's surface slid by ξ with μ = 0.3 (Johnson 1985 §7.2,
+    Eqs. 7.42-7.43, rigid ball): Q/μP = 1 − (1 − ξ/ξ_max)^{3/2}, ξ_max = 3μP(2 − ν)/(16 G a), stick radius
+    c/a = (1 − Q/μP)^{1/3}. The slide each Q takes and the stick radius within 5%; gross sliding (Q = μP within 1%)
+    beyond ξ_max. A mesh with 8 elements across a over a shallow box (the tractions need the surface resolved)."""
+    mu = 0.3
+    plate = Material(E=E, nu=NU, density=7800.0)
+    a_max = 1e-4
+    delta = a_max**2 / R
+    shear_modulus = E / (2.0 * (1.0 + NU))
+
+    def gross_slide(P, a):
+        return 3.0 * mu * P * (2.0 - NU) / (16.0 * shear_modulus * a)
+
+    # the path's slides from the Hertz contact; the checks use the FE's own normal force and its Hertz radius
+    fractions = np.array([0.2, 0.5, 0.8, 1.2])
+    result = indent_solid(
+        R, plate, np.full(fractions.size + 1, delta), slides=np.r_[0.0, fractions * gross_slide(hertz_force(delta),
+        math.sqrt(R * delta))], friction=np.r_[0.0, np.full(fractions.size, mu)], contact_elements=8, box_depth=0.3,
+    )  # fmt: skip
+    P = result.normal_force[0]
+    a = (3.0 * P * R / (4.0 * E_STAR)) ** (1.0 / 3.0)
+    slide_max = gross_slide(P, a)
+    fractions = result.slide[1:] / slide_max
+    ratio = result.tangential_force[1:] / (mu * result.normal_force[1:])
+    partial = fractions < 1.0
+    slide_for_q = slide_max * (1.0 - (1.0 - ratio[partial]) ** (2.0 / 3.0))
+    np.testing.assert_allclose(slide_for_q / (fractions[partial] * slide_max), 1.0, atol=0.05)
+    stick = a * (1.0 - ratio[partial]) ** (1.0 / 3.0)
+    np.testing.assert_allclose(result.stick_radius[1:][partial] / stick, 1.0, atol=0.05)
+    np.testing.assert_allclose(ratio[~partial], 1.0, atol=0.01)
+    assert np.all(result.stick_radius[1:][~partial] == 0.0)
+
+
+def test_mesh_generation_is_quiet(caplog):
+    """No scikit-fem log lines reach the user while the block is refined (a performance note per refined mesh)."""
+    with caplog.at_level("INFO"):
+        mesh = generate_block(4)
+    assert mesh.nelements > 1000
+    assert not [r for r in caplog.records if r.name.startswith("skfem")]
