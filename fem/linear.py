@@ -30,17 +30,16 @@ class SingularMatrixError(np.linalg.LinAlgError):
 
 
 class Factorisation:
-    """The factor of a symmetric ``matrix`` (CSR), positive definite unless ``definite`` is False (a saddle-point
-    system: PARDISO's symmetric-indefinite mode with pivoting); :meth:`solve` applies its inverse."""
+    """The factor of a symmetric positive-(semi)definite ``matrix`` (CSR); :meth:`solve` applies its inverse."""
 
-    def __init__(self, matrix: sp.csr_matrix, definite: bool = True) -> None:
+    def __init__(self, matrix: sp.csr_matrix) -> None:
         self.shape = matrix.shape
         if pypardiso is not None:
             self._upper = sp.triu(matrix, format="csr")
             self._upper.sort_indices()
             # SPD first; a consistent tangent of a perfectly plastic zone can be singular to working precision
             # (zero pivot, PARDISO error -4): the symmetric-indefinite mode with pivot perturbation takes it
-            for mtype in (2, -2) if definite else (-2,):
+            for mtype in (2, -2):
                 self._pardiso = pypardiso.PyPardisoSolver(mtype=mtype)
                 try:
                     self._pardiso.factorize(self._upper)
@@ -51,9 +50,10 @@ class Factorisation:
             else:
                 raise SingularMatrixError(f"PARDISO could not factorise the matrix: {error}") from None
         else:  # pragma: no cover
-            options = {"permc_spec": "MMD_AT_PLUS_A", "diag_pivot_thresh": 0.0, "options": {"SymmetricMode": True}}
             try:
-                self._lu = spla.splu(matrix.tocsc(), **(options if definite else {}))
+                self._lu = spla.splu(
+                    matrix.tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True}
+                )
             except RuntimeError as exc:
                 raise SingularMatrixError(f"SuperLU could not factorise the matrix: {exc}") from None
 
@@ -69,6 +69,6 @@ class Factorisation:
             self._pardiso.free_memory(everything=True)
 
 
-def factorise(matrix: sp.csr_matrix, definite: bool = True) -> Factorisation:
-    """Factorise the symmetric ``matrix`` (CSR; SPD unless ``definite`` is False)."""
-    return Factorisation(matrix, definite)
+def factorise(matrix: sp.csr_matrix) -> Factorisation:
+    """Factorise the SPD ``matrix`` (CSR)."""
+    return Factorisation(matrix)
