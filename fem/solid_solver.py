@@ -315,14 +315,7 @@ class SolidSolver:
         (PARDISO's symmetric-indefinite mode) perturbs the multipliers' zero pivots and returned a residual of 1e12
         here; the complement of a few hundred rows is exact and reuses the plate's own factor. Returns (du, λ)."""
         if self._factor is None or key != self._factor_key:
-            t0 = time.perf_counter()
-            if self._factor is not None:
-                self._factor.free()
-            self._factor = factorise(K_mod)
-            self._factor_key = key
-            self._columns = {}
-            self.stats.factorisations += 1
-            self.stats.factor_time += time.perf_counter() - t0
+            self._refactor(K_mod, key)
         missing = [k for k, i in enumerate(row_ids) if int(i) not in self._columns]
         if missing:
             solved = self._factor.solve(np.ascontiguousarray(rows[missing].T.toarray()))
@@ -370,6 +363,13 @@ class SolidSolver:
             self.stats.solves += count[0] + 1
             if info == 0:
                 return x
+        self._refactor(K_mod, key)
+        self.stats.solves += 1
+        return self._factor.solve(rhs)
+
+    def _refactor(self, K_mod: sp.csr_matrix, key: bytes) -> None:
+        """Replace the kept factor by one of ``K_mod`` (its constrained DOFs ``key``); the kept K⁻¹Cᵀ columns of
+        the stick rows belong to the old factor and go with it."""
         t0 = time.perf_counter()
         if self._factor is not None:
             self._factor.free()
@@ -377,9 +377,7 @@ class SolidSolver:
         self._factor_key = key
         self._columns = {}
         self.stats.factorisations += 1
-        self.stats.solves += 1
         self.stats.factor_time += time.perf_counter() - t0
-        return self._factor.solve(rhs)
 
     def _newton(self, start: SolidState, target, u0, contact, stick, direction, mu) -> SolidState:
         """Equilibrium at ``target`` = (δ, c, ξ), correcting the contact and stick sets until neither is violated."""
