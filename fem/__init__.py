@@ -7,7 +7,7 @@ own force law, :mod:`fem.coupling`), :func:`plate_mesh` and :mod:`fem.mesh` (mes
 
 The 3-D plate (half block about the plane of incidence, quadratic tetrahedra, Coulomb friction): :func:`indent_solid`
 (:mod:`fem.solid`, :mod:`fem.solid_solver`, :mod:`fem.forms3d`, :mod:`fem.mesh3d`, sparse solves in
-:mod:`fem.linear`).
+:mod:`fem.linear`) and :func:`couple_solid` (an oblique impact on it, :mod:`fem.solid_coupling`).
 """
 
 from fem.coupling import CoupledImpact, CouplingSettings, PlateCycle, contact_pressure, couple, couple_elastic
@@ -17,6 +17,7 @@ from fem.plate import Plate, surface_profile
 from fem.reload import ElasticReload, elastic_reload
 from fem.result import REGIMES, FirstYieldPoint, IndentationResult, worst_regime
 from fem.solid import SolidIndentation, indent_solid
+from fem.solid_coupling import SolidCoupledImpact, couple_solid
 from fem.solver import ConvergenceError
 
 __all__ = [
@@ -33,6 +34,8 @@ __all__ = [
     "IndentationResult",
     "Plate",
     "SolidIndentation",
+    "SolidCoupledImpact",
+    "couple_solid",
     "elastic_reload",
     "estimate_contact_radius",
     "generate_mesh",

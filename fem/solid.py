@@ -15,16 +15,17 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+import meshio
 import numpy as np
 
 from contact.checks import check_array, check_number
 from contact.materials import Material
 from fem.indent import _plate_model, check_small_strain, estimate_contact_radius
 from fem.mesh3d import generate_block, scale_block
-from fem.plasticity import J2Material
+from fem.plasticity import J2Material, von_mises
 from fem.solid_solver import SolidSolver, SolidState, SolidStats
 
-__all__ = ["SolidIndentation", "indent_solid", "MAX_FRICTION"]
+__all__ = ["SolidIndentation", "SolidRecorder", "indent_solid", "solid_solver", "MAX_FRICTION"]
 
 #: Largest friction coefficient accepted (dry metal pairs reach ~1; beyond, Coulomb's law is not what is meant).
 MAX_FRICTION = 1.0
@@ -39,7 +40,8 @@ class SolidIndentation:
     areas summed over the surface vertices' hats, so the edge falls midway between a vertex in and one out);
     ``max_pressure`` (Pa); ``max_equivalent_plastic_strain``; ``newton_iterations``; ``surface_vertices`` (n, 3)
     reference coordinates of the surface vertices (m); ``pressure`` (steps, n) and ``shear`` (steps, n, 2) the
-    contact tractions on the plate at those vertices (Pa, linear between them); ``residual_depth`` (n) the
+    contact tractions on the plate at those vertices (Pa, linear between them); ``sticking`` (steps, n) the
+    vertices in stick; ``residual_depth`` (n) the
     surface vertices' u_z after the last step, positive into the plate (m); ``stats`` the solver's work.
     """
 
@@ -56,10 +58,32 @@ class SolidIndentation:
     surface_vertices: np.ndarray
     pressure: np.ndarray
     shear: np.ndarray
+    sticking: np.ndarray
     residual_depth: np.ndarray
     stats: SolidStats
     final: SolidState = field(repr=False)
     solver: SolidSolver = field(repr=False)
+
+    def to_meshio(self) -> meshio.Mesh:
+        """The whole plate after the last step (the half block and its mirror image about y = 0) as linear
+        tetrahedra on the element vertices: points (m, reference), point data ``u`` (m), cell data ``von_mises``
+        (Pa, the residual stress after an unloaded path) and ``equivalent_plastic_strain`` (element averages)."""
+        solver, state = self.solver, self.final
+        mesh = solver.disc.mesh
+        points = mesh.p.T
+        u = state.u.reshape(-1, 3)[: points.shape[0]]
+        vm = von_mises(solver.stress_update(state).stress).mean(axis=1)
+        eps = state.alpha.mean(axis=1)
+        tets = mesh.t.T
+        mirror = points * [1.0, -1.0, 1.0]
+        # the mirror image reverses the orientation: swap two vertices of each tetrahedron
+        mirrored = tets[:, [1, 0, 2, 3]] + points.shape[0]
+        return meshio.Mesh(
+            np.vstack([points, mirror]),
+            [("tetra", np.vstack([tets, mirrored]))],
+            point_data={"u": np.vstack([u, u * [1.0, -1.0, 1.0]])},
+            cell_data={"von_mises": [np.r_[vm, vm]], "equivalent_plastic_strain": [np.r_[eps, eps]]},
+        )
 
 
 def _per_step(name: str, values, steps: int, low: float | None, high: float | None, units: str) -> np.ndarray:
@@ -71,6 +95,96 @@ def _per_step(name: str, values, steps: int, low: float | None, high: float | No
     if array.size != steps:
         raise ValueError(f"{name}: {array.size} entries, but the overlap path has {steps} (one per step)")
     return array
+
+
+def solid_solver(
+    radius: float,
+    plate: Material,
+    max_overlap: float,
+    centres: np.ndarray,
+    friction: float,
+    ball: Material | None = None,
+    hardening: float = 0.0,
+    contact_elements: int = 4,
+    box_depth: float = 1.0,
+    rtol: float = 1e-6,
+) -> SolidSolver:
+    """The 3-D half plate of ``plate`` for a sphere of ``radius`` (m) reaching ``max_overlap`` (m) over the contact
+    centres ``centres`` (m) with friction up to ``friction``: a block (:func:`fem.mesh3d.generate_block`) with
+    ``contact_elements`` elements across the largest expected contact radius (Hertz, or Kogut & Etsion once
+    yielded) over a box ``box_depth`` of it deep, around the centres' track."""
+    material, e_star = _plate_model(plate, ball, hardening)
+    check_small_strain(radius, e_star, plate, max_overlap)
+    a_max = estimate_contact_radius(radius, e_star, plate, max_overlap)
+    track = (float(np.min(centres)) / a_max, float(np.max(centres)) / a_max)
+    mesh = scale_block(generate_block(contact_elements, track=track, depth=box_depth), a_max)
+    force_scale = 4.0 / 3.0 * e_star * math.sqrt(radius) * max_overlap**1.5
+    return SolidSolver(mesh, J2Material(material.E, material.nu, material.yield_strength, material.hardening),
+                       radius, friction, force_scale, max_overlap, rtol=rtol)  # fmt: skip
+
+
+class SolidRecorder:
+    """Collects what :class:`SolidIndentation` reports of each converged step of ``solver``."""
+
+    def __init__(self, solver: SolidSolver) -> None:
+        self.solver = solver
+        self.vertex_rows = solver.node_vertices[solver.is_vertex, 0]
+        self.records: dict[str, list] = {k: [] for k in ("P", "Q", "a", "c", "pmax", "eps", "it", "p", "tau", "st")}
+        self.states: list[SolidState] = []
+
+    def measure(self, state: SolidState) -> dict[str, float | int | np.ndarray]:
+        """One step's numbers: forces on the whole plate (N), contact and stick radii (m), peak pressure (Pa),
+        largest equivalent plastic strain, Newton iterations, vertex pressure and shear (Pa), stick mask."""
+        solver, d = self.solver, self.solver.disc
+        normal, shear = solver.surface_forces(state)
+        pressure = solver.vertex_field(normal)
+        traction = solver.vertex_field(shear)
+        in_contact = np.zeros(pressure.size, bool)
+        in_contact[self.vertex_rows] = state.contact[solver.is_vertex]
+        sticking = np.zeros(pressure.size, bool)
+        sticking[self.vertex_rows] = state.stick[solver.is_vertex]
+        return {
+            "P": 2.0 * float(normal[state.contact].sum()),
+            "Q": 2.0 * float(shear[:, 0].sum()),
+            "a": math.sqrt(2.0 * float(d.surface_area[in_contact].sum()) / math.pi),
+            "c": math.sqrt(2.0 * float(d.surface_area[sticking].sum()) / math.pi),
+            "pmax": float(np.max(pressure * in_contact, initial=0.0)),
+            "eps": float(np.max(state.alpha, initial=0.0)),
+            "it": state.iterations,
+            "p": np.where(in_contact, pressure, 0.0),
+            "tau": np.where(in_contact[:, None], traction, 0.0),
+            "st": sticking & in_contact,
+        }
+
+    def add(self, state: SolidState) -> None:
+        """Record a converged step."""
+        for key, value in self.measure(state).items():
+            self.records[key].append(value)
+        self.states.append(state)
+
+    def result(self) -> SolidIndentation:
+        """The recorded path as a :class:`SolidIndentation`."""
+        r, d, state = self.records, self.solver.disc, self.states[-1]
+        return SolidIndentation(
+            overlap=np.array([s.overlap for s in self.states]),
+            centre=np.array([s.centre for s in self.states]),
+            slide=np.array([s.slide for s in self.states]),
+            normal_force=np.array(r["P"]),
+            tangential_force=np.array(r["Q"]),
+            contact_radius=np.array(r["a"]),
+            stick_radius=np.array(r["c"]),
+            max_pressure=np.array(r["pmax"]),
+            max_equivalent_plastic_strain=np.array(r["eps"]),
+            newton_iterations=np.array(r["it"]),
+            surface_vertices=d.nodes[:, d.surface_vertex_nodes].T,
+            pressure=np.array(r["p"]),
+            shear=np.array(r["tau"]),
+            sticking=np.array(r["st"]),
+            residual_depth=-state.u[3 * d.surface_vertex_nodes + 2],
+            stats=self.solver.stats,
+            final=state,
+            solver=self.solver,
+        )
 
 
 def indent_solid(
@@ -91,9 +205,8 @@ def indent_solid(
     ``overlaps`` δ (m, one entry per increment), ``centres`` c (m, the sphere axis' x; default 0), ``slides`` ξ
     (m; default 0), ``friction`` μ (one value, or one per step: 0 while the normal load is applied and μ after
     is the Cattaneo–Mindlin protocol). ``ball`` None = rigid. ``hardening`` H (Pa). The mesh
-    (:func:`fem.mesh3d.generate_block`) has ``contact_elements`` elements across the path's largest expected
-    contact radius (Hertz, or Kogut & Etsion once yielded) over a box ``box_depth`` of it deep, around the centres'
-    track.
+    (:func:`solid_solver`) has ``contact_elements`` elements across the path's largest expected contact radius over
+    a box ``box_depth`` of it deep, around the centres' track.
     """
     radius = check_number("radius", radius, low=1e-6, high=10.0, units="m", what="ball radius")
     path = check_array("overlaps", overlaps, low=0.0, units="m", what="overlap")
@@ -104,56 +217,12 @@ def indent_solid(
     slide = _per_step("slides", slides, steps, -radius, radius, "m")
     mu = _per_step("friction", friction, steps, 0.0, MAX_FRICTION, "")
     hardening = check_number("hardening", hardening, low=0.0, high=1e12, units="Pa", what="hardening modulus")
-    material, e_star = _plate_model(plate, ball, hardening)
-    max_overlap = float(path.max())
-    check_small_strain(radius, e_star, plate, max_overlap)
-    a_max = estimate_contact_radius(radius, e_star, plate, max_overlap)
-    track = (float(centre.min()) / a_max, float(centre.max()) / a_max)
-    mesh = scale_block(generate_block(contact_elements, track=track, depth=box_depth), a_max)
-    force_scale = 4.0 / 3.0 * e_star * math.sqrt(radius) * max_overlap**1.5
-    solver = SolidSolver(mesh, J2Material(material.E, material.nu, material.yield_strength, material.hardening),
-                         radius, float(mu.max()), force_scale, max_overlap, rtol=rtol)  # fmt: skip
-    d = solver.disc
-    vertex_rows = solver.node_vertices[solver.is_vertex, 0]
+    solver = solid_solver(radius, plate, float(path.max()), centre, float(mu.max()), ball, hardening,
+                          contact_elements, box_depth, rtol)  # fmt: skip
+    recorder = SolidRecorder(solver)
     state, previous = solver.initial_state(), None
-    records: dict[str, list] = {k: [] for k in ("P", "Q", "a", "c", "pmax", "eps", "it", "p", "tau")}
     for k in range(steps):
         new = solver.advance(state, previous, (float(path[k]), float(centre[k]), float(slide[k])), float(mu[k]))
         previous, state = state, new
-        normal, shear = solver.surface_forces(state)
-        pressure = solver.vertex_field(normal)
-        traction = solver.vertex_field(shear)
-        in_contact = np.zeros(pressure.size, bool)
-        in_contact[vertex_rows] = state.contact[solver.is_vertex]
-        sticking = np.zeros(pressure.size, bool)
-        sticking[vertex_rows] = state.stick[solver.is_vertex]
-        records["P"].append(2.0 * float(normal[state.contact].sum()))
-        records["Q"].append(2.0 * float(shear[:, 0].sum()))
-        records["a"].append(math.sqrt(2.0 * float(d.surface_area[in_contact].sum()) / math.pi))
-        records["c"].append(math.sqrt(2.0 * float(d.surface_area[sticking].sum()) / math.pi))
-        records["pmax"].append(float(np.max(pressure * in_contact, initial=0.0)))
-        records["eps"].append(float(np.max(state.alpha, initial=0.0)))
-        records["it"].append(state.iterations)
-        records["p"].append(np.where(in_contact, pressure, 0.0))
-        records["tau"].append(np.where(in_contact[:, None], traction, 0.0))
-    vertices = d.nodes[:, d.surface_vertex_nodes].T
-    uz = state.u[3 * d.surface_vertex_nodes + 2]
-    return SolidIndentation(
-        overlap=path,
-        centre=centre,
-        slide=slide,
-        normal_force=np.array(records["P"]),
-        tangential_force=np.array(records["Q"]),
-        contact_radius=np.array(records["a"]),
-        stick_radius=np.array(records["c"]),
-        max_pressure=np.array(records["pmax"]),
-        max_equivalent_plastic_strain=np.array(records["eps"]),
-        newton_iterations=np.array(records["it"]),
-        surface_vertices=vertices,
-        pressure=np.array(records["p"]),
-        shear=np.array(records["tau"]),
-        residual_depth=-uz,
-        stats=solver.stats,
-        final=state,
-        solver=solver,
-    )
+        recorder.add(state)
+    return recorder.result()

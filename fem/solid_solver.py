@@ -51,7 +51,8 @@ class SolidState:
     """Converged state: ``overlap`` δ (m), ``centre`` c (m), ``slide`` ξ (m), ``u`` nodal displacements (m,
     interleaved x, y, z), ``plastic_strain`` (elements, qp, 6) Mandel, ``alpha`` (elements, qp) equivalent plastic
     strain, ``contact`` and ``stick`` bool masks of the surface nodes, ``direction`` (surface vertices, 2) the unit
-    slip directions of the slipping vertices, ``iterations`` Newton iterations spent."""
+    slip directions of the slipping vertices, ``iterations`` Newton iterations spent, ``friction`` the Coulomb
+    coefficient it was solved with."""
 
     overlap: float
     centre: float
@@ -63,6 +64,7 @@ class SolidState:
     stick: np.ndarray
     direction: np.ndarray
     iterations: int = 0
+    friction: float = 0.0
 
 
 @dataclass
@@ -414,9 +416,8 @@ class SolidSolver:
             key = new_contact.tobytes() + new_stick.tobytes()
             if np.array_equal(new_contact, contact) and np.array_equal(new_stick, stick):
                 self.stats.history.append(spent)
-                return SolidState(
-                    overlap, centre, slide, u, upd.plastic_strain, upd.alpha, contact, stick, direction, spent
-                )
+                return SolidState(overlap, centre, slide, u, upd.plastic_strain, upd.alpha, contact, stick, direction,
+                                  spent, mu)  # fmt: skip
             self.stats.set_updates += 1
             seen.add(contact.tobytes() + stick.tobytes())
             if key in seen:
@@ -484,10 +485,29 @@ class SolidSolver:
         if state.overlap == 0.0 and not state.contact.any():
             rho = np.hypot(self.disc.surface_xy[:, 0] - centre, self.disc.surface_xy[:, 1])
             contact = rho < np.sqrt(self.radius * max(overlap, 0.0))
-        # a node that comes into contact sticks first; after a frictionless history every node in contact does
-        stuck = state.stick if state.stick.any() else state.contact
-        stick = (stuck | ~state.contact) & contact if mu > 0.0 else np.zeros_like(contact)
-        return u0, contact, stick, state.direction
+        return u0, contact, self._stick_guess(state, target, contact, mu), state.direction
+
+    def _stick_guess(self, state: SolidState, target, contact: np.ndarray, mu: float) -> np.ndarray:
+        """The stick set an increment starts from. In partial slip a node that comes into contact sticks first;
+        after a frictionless history the whole contact does (and releases where the cone is exceeded). After gross
+        sliding the contact slips on while the slide goes on the same way, and sticks when it reverses. At first
+        contact (normal and tangential loads applied together) it all slips if the slide reaches Mindlin's
+        gross-slip slide of the target overlap, μδ(2 − ν)/(2(1 − ν)) for a rigid sphere on a Hertzian plate
+        (Johnson Eq. 7.42 with Hertz's P and a), else it sticks. A start on the wrong side costs a release (or
+        stick) round per ring of vertices, each with its own stick factor."""
+        if mu <= 0.0:
+            return np.zeros_like(contact)
+        if state.stick.any():
+            return (state.stick | ~state.contact) & contact
+        step = target[2] - state.slide
+        if state.friction > 0.0 and state.contact.any():
+            previous = float(np.mean(state.direction[:, 0]))
+            return contact if step * previous <= 0.0 else np.zeros_like(contact)
+        if state.contact.any():
+            return contact
+        nu = self.material.nu
+        gross = mu * target[0] * (2.0 - nu) / (2.0 * (1.0 - nu))
+        return np.zeros_like(contact) if abs(step) >= gross else contact
 
     def advance(
         self, state: SolidState, previous: SolidState | None, target: tuple[float, float, float],

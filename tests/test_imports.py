@@ -1,7 +1,8 @@
 """The package's imports go one way and sit at the top of modules.
 
 Rooms, lowest first (a module may import from its own room and the rooms below it, never above): ``contact`` ←
-``fem`` ← the wear law (``wear.law``, ``wear.laws``, ``wear.pressure``, ``wear.integrate``, ``wear.surface``) ← the case
+``fem`` ← the wear law (``wear.law``, ``wear.laws``, ``wear.pressure``, ``wear.integrate``, ``wear.solid_wear``,
+``wear.surface``) ← the case
 (``wear.case``) ← erosion (``wear.erosion``) ← the chains (``wear.chain``) ← the command line (``wear.app``).
 ``meshes`` is data: only its ``__main__`` (which regenerates the mesh) imports ``fem``. No import cycle between the
 project's modules, and at most 10 function-level imports of them, each with a comment saying why.
@@ -19,7 +20,7 @@ PACKAGES = ("contact", "fem", "wear", "meshes")
 ROOMS = (
     ("contact",),
     ("fem",),
-    ("wear.law", "wear.laws", "wear.pressure", "wear.integrate", "wear.surface"),
+    ("wear.law", "wear.laws", "wear.pressure", "wear.integrate", "wear.solid_wear", "wear.surface"),
     ("wear.case",),
     ("wear.erosion",),
     ("wear.chain",),

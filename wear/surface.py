@@ -8,10 +8,11 @@ The plate surface after one impact is described by two depths, both positive *in
 
 A surface node sits at :math:`z = -(h + w)`, the undeformed surface being z = 0.
 
-Approximation (oblique impacts): the FE plate is axisymmetric, so the dent is the residual profile
-of a *normal* indentation to the same maximum overlap, centred where the overlap peaked. The
-tangential traction and the drift of the contact centre during the impact (a few percent of the
-contact diameter for the default case) are not in the dent shape; the wear map does carry them.
+Approximation (oblique impacts on the axisymmetric plate): the dent is the residual profile of a *normal*
+indentation to the same maximum overlap, centred where the overlap peaked. The tangential traction and the drift of
+the contact centre during the impact (a few percent of the contact diameter for the default case) are not in the
+dent shape; the wear map does carry them. The 3-D plate (``fem.model = "3d"``) gives the dent itself as a field on
+the grid (``dent_grid``): asymmetric, with its pile-up lip.
 """
 
 from __future__ import annotations
@@ -26,6 +27,7 @@ from contact.checks import check_array, check_number
 
 __all__ = [
     "DeformedSurface",
+    "DentDimensions",
     "surface_mesh",
     "plate_block_mesh",
     "deform_plate_mesh",
@@ -52,6 +54,9 @@ class DeformedSurface:
         Zero beyond the last radius.
     dent_centre : (float, float), m
         (x_c, y_c) where the dent is centred: the contact centre at maximum overlap.
+    dent_grid : (nx, ny) array, m, or None
+        The dent on the grid nodes (the 3-D plate's residual surface); when given, it is the dent, and
+        ``dent_radius``/``dent_depth`` are its profile across the track through ``dent_centre`` (for reference).
     """
 
     x: np.ndarray
@@ -60,6 +65,7 @@ class DeformedSurface:
     dent_radius: np.ndarray
     dent_depth: np.ndarray
     dent_centre: tuple[float, float] = (0.0, 0.0)
+    dent_grid: np.ndarray | None = None
 
     def __post_init__(self) -> None:
         x = check_array("x", self.x, units="m", min_size=2)
@@ -75,7 +81,13 @@ class DeformedSurface:
             raise ValueError("dent_radius must increase strictly and have the shape of dent_depth (m)")
         cx = check_number("dent_centre[0]", self.dent_centre[0], units="m")
         cy = check_number("dent_centre[1]", self.dent_centre[1], units="m")
-        for name, arr in (("x", x), ("y", y), ("wear_depth", w), ("dent_radius", r), ("dent_depth", h)):
+        arrays = [("x", x), ("y", y), ("wear_depth", w), ("dent_radius", r), ("dent_depth", h)]
+        if self.dent_grid is not None:
+            g = check_array("dent_grid", self.dent_grid, units="m", ndim=2)
+            if g.shape != w.shape:
+                raise ValueError(f"dent_grid has shape {g.shape}: must be (len(x), len(y)) = ({x.size}, {y.size})")
+            arrays.append(("dent_grid", g))
+        for name, arr in arrays:
             arr.setflags(write=False)
             object.__setattr__(self, name, arr)
         object.__setattr__(self, "dent_centre", (cx, cy))
@@ -86,25 +98,76 @@ class DeformedSurface:
         return cls(x, y, wear_depth, np.array([0.0, 1.0]), np.zeros(2))
 
     def dent_at(self, px, py) -> np.ndarray:
-        """Dent depth h (m) at points (px, py) (m), linear in r; 0 beyond the profile."""
+        """Dent depth h (m) at points (px, py) (m): bilinear on ``dent_grid`` (0 outside it), else linear in r of
+        the profile (0 beyond it)."""
+        if self.dent_grid is not None:
+            return self._on_grid(self.dent_grid, px, py)
         r = np.hypot(np.asarray(px, float) - self.dent_centre[0], np.asarray(py, float) - self.dent_centre[1])
         return np.interp(r, self.dent_radius, self.dent_depth, right=0.0)
 
     def wear_at(self, px, py) -> np.ndarray:
         """Wear depth w (m) at points (px, py) (m): bilinear on the grid, 0 outside it."""
-        interp = RegularGridInterpolator((self.x, self.y), self.wear_depth, bounds_error=False, fill_value=0.0)
+        return self._on_grid(self.wear_depth, px, py)
+
+    def _on_grid(self, values: np.ndarray, px, py) -> np.ndarray:
+        interp = RegularGridInterpolator((self.x, self.y), values, bounds_error=False, fill_value=0.0)
         px, py = np.broadcast_arrays(np.asarray(px, float), np.asarray(py, float))
         return interp(np.column_stack([px.ravel(), py.ravel()])).reshape(px.shape)
 
     def dent_on_grid(self) -> np.ndarray:
         """Dent depth (m) at the grid nodes, shape (nx, ny)."""
+        if self.dent_grid is not None:
+            return self.dent_grid
         gx, gy = np.meshgrid(self.x, self.y, indexing="ij")
         return self.dent_at(gx, gy)
 
     @property
     def max_dent_depth(self) -> float:
-        """Largest dent depth (m) of the profile."""
-        return float(np.max(self.dent_depth))
+        """Largest dent depth (m)."""
+        return float(np.max(self.dent_grid if self.dent_grid is not None else self.dent_depth))
+
+    def dent_dimensions(self, samples: int = 4001) -> DentDimensions:
+        """Length (along x) and width (across, y) of the dent where it lies below the original plane, through its
+        deepest point, and the pile-up height above the plane (m)."""
+        if self.dent_grid is not None:
+            i, j = np.unravel_index(int(np.argmax(self.dent_grid)), self.dent_grid.shape)
+            centre = (float(self.x[i]), float(self.y[j]))
+            reach = max(float(np.ptp(self.x)), float(np.ptp(self.y)))
+            pile_up = max(0.0, -float(np.min(self.dent_grid)))
+        else:
+            centre, reach = self.dent_centre, float(self.dent_radius[-1])
+            pile_up = max(0.0, -float(np.min(self.dent_depth)))
+        s = np.linspace(-reach, reach, samples)
+        along = self.dent_at(centre[0] + s, np.full_like(s, centre[1]))
+        across = self.dent_at(np.full_like(s, centre[0]), centre[1] + s)
+        return DentDimensions(_below(s, along), _below(s, across), pile_up)
+
+
+@dataclass(frozen=True)
+class DentDimensions:
+    """A dent's ``length`` along the impact and ``width`` across it, where the surface is below the original
+    plane through the deepest point, and the ``pile_up`` height above the plane (all m)."""
+
+    length: float
+    width: float
+    pile_up: float
+
+
+def _below(s: np.ndarray, depth: np.ndarray) -> float:
+    """Length (m) of the run of ``depth`` > 0 around its deepest sample, the ends interpolated."""
+    k = int(np.argmax(depth))
+    if depth[k] <= 0.0:
+        return 0.0
+    out = np.flatnonzero(depth <= 0.0)
+    ends = []
+    for side in (out[out < k], out[out > k]):
+        if side.size == 0:
+            ends.append(s[0] if not ends else s[-1])
+            continue
+        o = int(side[-1] if not ends else side[0])
+        i = o + 1 if not ends else o - 1
+        ends.append(s[o] + (s[i] - s[o]) * (0.0 - depth[o]) / (depth[i] - depth[o]))
+    return float(ends[1] - ends[0])
 
 
 def _grid_quads(nx: int, ny: int) -> np.ndarray:

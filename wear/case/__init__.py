@@ -16,6 +16,7 @@ from wear.case.jobs import JOBS, Job, default_case
 from wear.case.schema import Key, Table, key
 from wear.case.tables import (
     COUPLINGS,
+    FEM_MODELS,
     TABLES,
     BallSpec,
     CalibrationSpec,
@@ -41,6 +42,7 @@ from wear.laws import LAWS
 
 __all__ = [
     "COUPLINGS",
+    "FEM_MODELS",
     "JOBS",
     "LAWS",
     "TABLES",

@@ -26,9 +26,11 @@ from wear.pressure import PRESSURE_SOURCES, SPEED_MODELS
 
 __all__ = ["BallSpec", "PlateSpec", "ImpactSpec", "WearSpec", "FemSpec", "OutputSpec", "ErosionSpec", "RepeatSpec",
            "CalibrationSpec",
-           "Case", "COUPLINGS", "NORMAL_MODELS", "TANGENTIAL_MODELS", "SCHEMES"]  # fmt: skip
+           "Case", "COUPLINGS", "FEM_MODELS", "NORMAL_MODELS", "TANGENTIAL_MODELS", "SCHEMES"]  # fmt: skip
 
 COUPLINGS = ("two-way", "one-way", "none")
+#: The FE plate models: the axisymmetric (r, z) frictionless plate, or the 3-D half plate with Coulomb friction.
+FEM_MODELS = ("axisymmetric", "3d")
 NORMAL_MODELS = ("hertz", "thornton")
 TANGENTIAL_MODELS = ("hdd", "mindlin")
 SCHEMES = ("verlet", "paper")
@@ -163,10 +165,13 @@ class WearSpec(Table):
 
 @dataclass(frozen=True)
 class FemSpec(Table):
-    """The FE plate: ``coupling`` ("two-way": the impact runs on the FE plate's own force law; "one-way": the FE
-    plate follows the impact's overlap; "none"), its ``tolerance`` and ``max_iterations``, the FE increments
-    ``load_steps`` and ``unload_steps``, the ``overshoot`` of the single FE loading past the estimated maximum
-    overlap, and ``mesh_scale`` (multiplies the FE element sizes; > 1 coarser)."""
+    """The FE plate: ``model`` ("axisymmetric": the (r, z) frictionless plate; "3d": the half block with Coulomb
+    friction, coupled after the axisymmetric one), ``coupling`` ("two-way": the impact runs on the FE plate's own
+    force law; "one-way": the FE plate follows the impact's overlap; "none"), its ``tolerance`` and
+    ``max_iterations``, the FE increments ``load_steps`` and ``unload_steps``, the ``overshoot`` of the single FE
+    loading past the estimated maximum overlap, ``mesh_scale`` (multiplies the FE element sizes; > 1 coarser; the
+    3-D plate has 8/mesh_scale elements across the contact radius), and the 3-D plate's ``solid_iterations``,
+    ``solid_load_steps`` and ``solid_unload_steps``."""
 
     table: ClassVar[str] = "fem"
     coupling: str = key(str, "two-way", "impact-FE coupling (two-way = the FE normal law)", choices=COUPLINGS)
@@ -177,6 +182,11 @@ class FemSpec(Table):
     unload_steps: int = key(int, 8, "FE increments of the unloading", low=1, high=2000)
     overshoot: float = key(float, 0.1, "FE loading past the estimated max overlap (relative)", low=0.02, high=2.0)
     mesh_scale: float = key(float, 2.0, "FE element size factor (> 1 coarser)", low=0.25, high=8.0)
+    model: str = key(str, "axisymmetric", "FE plate: axisymmetric (r, z), or 3d (half block, Coulomb friction)",
+                     choices=FEM_MODELS)  # fmt: skip
+    solid_iterations: int = key(int, 3, "most 3-D plate cycles of the 3-D coupling", low=1, high=20)
+    solid_load_steps: int = key(int, 10, "3-D plate increments of the loading", low=2, high=200)
+    solid_unload_steps: int = key(int, 6, "3-D plate increments of the unloading", low=1, high=200)
 
 
 @dataclass(frozen=True)

@@ -15,9 +15,12 @@ Stages (their wall times are in ``RunResult.stage_times``):
    overlap changes by < ``fem.tolerance`` (:func:`fem.couple`); ``"one-way"`` drives the FE plate with
    the impact's overlap history (``fem.indent_impact``); ``"none"`` skips the FE (no dent; the pressure
    source must then not be ``"fe"``).
-3. ``wear``: Eq. 15 integrated over the moving contact patch (:func:`wear.integrate_wear`).
-4. ``surface``: the residual FE dent placed at the contact centre of maximum overlap plus the wear map
-   (:class:`wear.surface.DeformedSurface`).
+3. ``plate3d`` (``fem.model = "3d"``): the impact coupled to the 3-D half plate with friction, started from the
+   axisymmetric coupled impact (:mod:`wear.chain.solid`).
+4. ``wear``: Eq. 15 integrated over the moving contact patch (:func:`wear.integrate_wear`; on the 3-D plate with its
+   pressure and stick/slip fields, :mod:`wear.solid_wear`).
+5. ``surface``: the residual FE dent placed at the contact centre of maximum overlap plus the wear map
+   (:class:`wear.surface.DeformedSurface`; the 3-D plate's residual surface itself on the 3-D plate).
 """
 
 from __future__ import annotations
@@ -33,8 +36,10 @@ import fem
 from contact import ImpactResult, Material, effective_modulus, simulate_impact
 from contact.theory import PAPER_YIELD_COEFFICIENT, first_yield, yield_velocity
 from fem import CoupledImpact, IndentationResult, PlateCycle, worst_regime
+from fem.solid_coupling import SolidCoupledImpact
 from wear.case import JOBS, Case
 from wear.chain.plate import case_mesh, case_plate, coupling_settings, impact_on_law
+from wear.chain.solid import check_solid_case, solid_impact, solid_surface, solid_wear
 from wear.integrate import WearMap
 from wear.laws import LAWS, ImpactWear, wear_of_impact
 from wear.pressure import PressureHistory, pressure_history, sliding_speed
@@ -52,7 +57,7 @@ __all__ = [
 ]
 
 #: Stages of :func:`run`, in order (the output writer adds "meshes" and "figures").
-STAGES = ("impact", "fem", "coupling", "wear", "surface")
+STAGES = ("impact", "fem", "coupling", "plate3d", "wear", "surface")
 
 
 @dataclass(frozen=True, eq=False)
@@ -66,7 +71,8 @@ class RunResult:
     by mechanism, :class:`wear.laws.ImpactWear`), ``surface``
     (:class:`wear.surface.DeformedSurface`), ``yield_info`` (dict: ``F_y_paper`` Eq. 18 with C = 1.6, ``F_c_exact``
     with C(ν), ``fe_first_yield_force``, ``V_y`` Thornton's yield speed, N and m/s), ``regime`` (str),
-    ``stage_times`` (dict stage → s).
+    ``stage_times`` (dict stage → s), ``solid`` (:class:`fem.solid_coupling.SolidCoupledImpact` with
+    ``fem.model = "3d"``, else None; ``fe`` and ``coupling`` are then the axisymmetric plate it started from).
     """
 
     case: Case
@@ -81,6 +87,7 @@ class RunResult:
     yield_info: dict[str, float | None]
     regime: str
     stage_times: dict[str, float]
+    solid: SolidCoupledImpact | None = None
 
     def summary(self) -> dict:
         """The numbers of summary.json (without versions; the writer adds them)."""
@@ -92,11 +99,17 @@ class RunResult:
         impact = {k: getattr(imp, k) for k in names}
         # the pressure of the plate the impact acted on: the FE's where there is one (its contact pressure field),
         # else the normal law's (the Hertz-type 3F/(2πa²) would overstate a plastic contact's by up to 1.5x)
-        if self.fe is not None:
+        if self.solid is not None:
+            impact["max_peak_pressure"] = float(np.max(self.solid.solid.max_pressure))
+            impact["max_peak_pressure_source"] = "3-D FE plate"
+        elif self.fe is not None:
             impact["max_peak_pressure"] = float(np.max(self.fe.pressure))
-        impact["max_peak_pressure_source"] = "FE plate" if self.fe is not None else f"normal law {imp.normal_model!r}"
+            impact["max_peak_pressure_source"] = "FE plate"
+        else:
+            impact["max_peak_pressure_source"] = f"normal law {imp.normal_model!r}"
         impact["units"] = "s, N, m, Pa, m/s, rad/s, deg"
         w, c = self.wear, self.coupling
+        dent = self.surface.dent_dimensions()
         coupling = None
         if c is not None:
             coupling = {"iterations": c.iterations, "final_change": c.change, "converged": c.converged,
@@ -122,10 +135,39 @@ class RunResult:
             "dent": {
                 "max_depth_m": self.surface.max_dent_depth,
                 "centre_x_m": self.surface.dent_centre[0],
+                "length_m": dent.length,
+                "width_m": dent.width,
+                "pile_up_m": dent.pile_up,
+                "model": "3d" if self.solid is not None else "axisymmetric",
             },
             "coupling": coupling,
+            "plate_3d": None if self.solid is None else solid_summary(self.solid),
             "stage_times_s": dict(self.stage_times),
         }
+
+
+def solid_summary(coupled: SolidCoupledImpact) -> dict:
+    """The 3-D plate's block of summary.json (SI units)."""
+    solid, stats = coupled.solid, coupled.solid.stats
+    yielded = np.flatnonzero(solid.max_equivalent_plastic_strain > 0.0)
+    return {
+        "iterations": coupled.iterations,
+        "converged": coupled.converged,
+        "final_change": coupled.change,
+        "max_overlaps_m": list(coupled.max_overlaps),
+        "tangential_restitutions": list(coupled.tangential_restitutions),
+        "max_normal_force_N": float(np.max(solid.normal_force)),
+        "max_tangential_force_N": float(np.max(np.abs(solid.tangential_force))),
+        "tangential_mismatch": coupled.tangential_mismatch,
+        "max_contact_radius_m": float(np.max(solid.contact_radius)),
+        "max_stick_radius_m": float(np.max(solid.stick_radius)),
+        "first_yield_force_N": float(solid.normal_force[yielded[0]]) if yielded.size else None,
+        "max_equivalent_plastic_strain": float(np.max(solid.max_equivalent_plastic_strain)),
+        "increments": stats.increments,
+        "factorisations": stats.factorisations,
+        "linear_solves": stats.solves,
+        "dofs": int(solid.final.u.size),
+    }
 
 
 def _yield_info(case: Case, ball: Material, plate: Material, fe: PlateCycle | IndentationResult | None) -> dict:
@@ -203,6 +245,8 @@ def run(case: Case, progress: Callable[[str], None] | None = None) -> RunResult:
         raise ValueError(f"fem.coupling={coupling_mode!r} needs a deformable plate: set fem.coupling='none'")
     if coupling_mode == "none" and case.wear.pressure == "fe":
         raise ValueError("wear.pressure='fe' needs the FE plate: set fem.coupling to 'two-way' or 'one-way'")
+    if case.fem.model == "3d":
+        check_solid_case(case)
     times: dict[str, float] = {}
 
     def timed(stage, fn, *args, **kwargs):
@@ -226,10 +270,18 @@ def run(case: Case, progress: Callable[[str], None] | None = None) -> RunResult:
         rows = fem.contact_pressure(fe.pressure, fe.surface_r, fe.contact_radius)
         fe_table = (np.asarray(fe.time, float), np.asarray(fe.surface_r, float), rows)
 
-    plate_work = None if coupled is None else coupled.plastic_work
-    ph, wm, worn = timed("wear", impact_wear, case, impact, fe_table, plate_work)
+    solid = None
+    if case.fem.model == "3d":
+        solid = timed("plate3d", solid_impact, case, impact)
+        impact = solid.impact
+        ph, wm, worn = timed("wear", solid_wear, case, solid)
+    else:
+        plate_work = None if coupled is None else coupled.plastic_work
+        ph, wm, worn = timed("wear", impact_wear, case, impact, fe_table, plate_work)
 
     def surface_stage() -> DeformedSurface:
+        if solid is not None:
+            return solid_surface(solid, wm)
         h = impact.history
         i_max = int(np.argmax(h.overlap))
         centre = (float(h.contact_x[i_max]), 0.0)
@@ -243,7 +295,7 @@ def run(case: Case, progress: Callable[[str], None] | None = None) -> RunResult:
     info = _yield_info(case, ball, plate, fe)
     return RunResult(case=case, estimate=estimate, impact=impact, fe=fe, coupling=coupled, pressure=ph, wear=wm,
                      worn=worn, surface=surface, yield_info=info, regime=_regime(impact, info, fe),
-                     stage_times=times)  # fmt: skip
+                     stage_times=times, solid=solid)  # fmt: skip
 
 
 def speed_ratio(case: Case) -> float:

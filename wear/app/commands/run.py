@@ -62,7 +62,13 @@ def _table(summary: dict, out: str) -> str:
         ("max wear depth", num(w["max_depth_m"], 1e9), "nm"),
         ("scar length x width", f"{num(w['scar_length_m'], 1e6)} x {num(w['scar_width_m'], 1e6)}", "um"),
         ("max dent depth", num(d["max_depth_m"], 1e6), "um"),
+        ("dent length x width", f"{num(d['length_m'], 1e6)} x {num(d['width_m'], 1e6)}", "um"),
+        ("pile-up height", num(d["pile_up_m"], 1e9), "nm"),
     ]
+    if summary.get("plate_3d"):
+        s = summary["plate_3d"]
+        rows.append(("3-D plate: max tangential force", num(s["max_tangential_force_N"]), "N"))
+        rows.append(("3-D plate: cycles (converged)", f"{s['iterations']} ({s['converged']})", ""))
     width = max(len(r[0]) for r in rows)
     lines = [f"{label:<{width}}  {value} {unit}".rstrip() for label, value, unit in rows]
     times = ", ".join(f"{k} {v:.2f} s" for k, v in summary["stage_times_s"].items())

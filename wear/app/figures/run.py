@@ -21,6 +21,7 @@ __all__ = [
     "pressure_profiles",
     "wear_map",
     "cross_sections",
+    "plastic_zone",
     "restitution_comparison",
     "write_run_figures",
 ]
@@ -42,7 +43,10 @@ def force_overlap(result, path) -> Path:
     ax3.plot(h.overlap * 1e6, h.normal_force, "C0", label="impact")
     fe = result.fe
     if fe is not None:
-        ax3.plot(np.asarray(fe.overlap) * 1e6, fe.force, "k.", ms=3, label="FE steps")
+        ax3.plot(np.asarray(fe.overlap) * 1e6, fe.force, "k.", ms=3, label="FE steps (axisymmetric)")
+    if result.solid is not None:
+        steps = result.solid.solid
+        ax3.plot(steps.overlap[:-1] * 1e6, steps.normal_force[:-1], "C3x", ms=4, label="3-D plate steps")
     ax3.set_xlabel("overlap (µm)")
     ax3.set_ylabel("normal force (N)")
     ax3.legend(fontsize=8)
@@ -101,8 +105,17 @@ def wear_map(result, path) -> Path:
 
 
 def cross_sections(result, path) -> Path:
-    """Dent + wear depth along y = 0 and across x = dent centre (surface z = −(dent + wear))."""
+    """Dent + wear depth along y = 0 and across x = dent centre (surface z = −(dent + wear)); on the 3-D plate also
+    the axisymmetric plate's dent it started from, centred at the same point."""
     s = result.surface
+    axisymmetric = None
+    if result.solid is not None and result.fe is not None:
+        order = np.argsort(result.fe.surface_r)
+        r_fe, h_fe = np.asarray(result.fe.surface_r)[order], np.asarray(result.fe.residual_depth)[order]
+
+        def axisymmetric(offset):
+            return np.interp(np.abs(offset), r_fe, h_fe, right=0.0)
+
     dent = s.dent_on_grid()
     wear = s.wear_depth
     j0 = int(np.argmin(np.abs(s.y)))
@@ -112,8 +125,11 @@ def cross_sections(result, path) -> Path:
         (axes[0], s.x, dent[:, j0], wear[:, j0], "x along the impact (µm), y = 0"),
         (axes[1], s.y, dent[i0, :], wear[i0, :], "y across (µm), x = dent centre"),
     ):
-        ax.plot(coord * 1e6, -d * 1e6, "C0", label="dent only")
+        ax.plot(coord * 1e6, -d * 1e6, "C0", label="dent only" if axisymmetric is None else "dent only (3-D plate)")
         ax.plot(coord * 1e6, -(d + w) * 1e6, "C3--", label="dent + wear")
+        if axisymmetric is not None:
+            centre = s.dent_centre[0] if coord is s.x else s.dent_centre[1]
+            ax.plot(coord * 1e6, -axisymmetric(coord - centre) * 1e6, "k:", lw=1, label="dent, axisymmetric plate")
         ax.set_xlabel(label)
         ax.set_ylabel("surface z (µm)")
         ax2 = ax.twinx()
@@ -147,12 +163,37 @@ def restitution_comparison(speed_ratio, coupled_restitution, path, thornton=None
     return save_figure(fig, path)
 
 
+def plastic_zone(result, path) -> Path:
+    """The 3-D plate's equivalent plastic strain on the plane of incidence y = 0 (elements with a face on it), x
+    along the impact against depth, after the impact."""
+    solid = result.solid.solid
+    mesh = solid.solver.disc.mesh
+    on_plane = np.abs(mesh.p[1]) <= 1e-9 * float(np.ptp(mesh.p[0]))
+    touching = on_plane[mesh.t].sum(axis=0) >= 3
+    centroid = mesh.p[:, mesh.t[:, touching]].mean(axis=1)
+    eps = solid.final.alpha.mean(axis=1)[touching]
+    a = float(np.max(solid.contact_radius))
+    near = (np.abs(centroid[0] - result.surface.dent_centre[0]) < 3.0 * a) & (centroid[2] > -3.0 * a)
+    fig, ax = plt.subplots(figsize=(8, 4))
+    art = ax.tricontourf(centroid[0, near] * 1e6, centroid[2, near] * 1e6, eps[near], levels=12, cmap="magma_r")
+    fig.colorbar(art, ax=ax, label="equivalent plastic strain")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x along the impact (µm), plane of incidence y = 0")
+    ax.set_ylabel("z (µm)")
+    ax.set_title(f"plastic zone of the 3-D plate (μ = {result.case.impact.friction:g})")
+    fig.tight_layout()
+    return save_figure(fig, path)
+
+
 def write_run_figures(result, folder: str | os.PathLike) -> list[Path]:
     """All run figures into ``folder``; returns their paths."""
     folder = Path(folder)
-    return [
+    paths = [
         force_overlap(result, folder / "force_overlap.png"),
         pressure_profiles(result, folder / "pressure_profiles.png"),
         wear_map(result, folder / "wear_map.png"),
         cross_sections(result, folder / "cross_sections.png"),
     ]
+    if result.solid is not None:
+        paths.append(plastic_zone(result, folder / "plastic_zone.png"))
+    return paths

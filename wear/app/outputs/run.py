@@ -2,7 +2,8 @@
 
 Files: ``summary.json`` (case, versions, results, stage times, notes), ``history.csv`` (impact histories, units in
 the column names), ``pressure.npz`` (the wear stage's p(s, t) table, and the FE table p(r, t) if any),
-``surface.vtu``, ``plate.vtu``, ``plate_fe.vtu`` (with an FE plate), the PNG figures and ``surface_3d.png``.
+``surface.vtu``, ``plate.vtu``, ``plate_fe.vtu`` (with an FE plate: the (r, z) section, or the whole 3-D plate with
+``fem.model = "3d"``), the PNG figures and ``surface_3d.png``.
 """
 
 from __future__ import annotations
@@ -32,7 +33,10 @@ PRESSURE_ABOUT = (
     "p(r, t): pressure_Pa[i, k] (Pa) at time_s[i] (s) and radius r_m[i, k] (m) from the contact centre, which is at "
     "contact_x_m[i] (m) along the impact direction; the pressure is 0 beyond extent_m[i] (m); s[k] is the sample "
     "coordinate (r = extent * sqrt(1 - s^2)); source names the pressure model. With the FE plate also fe_time_s, "
-    "fe_surface_r_m and fe_pressure_Pa[i, j]: the FE plate's contact pressure at its surface nodes."
+    "fe_surface_r_m and fe_pressure_Pa[i, j]: the FE plate's contact pressure at its surface nodes. With the 3-D "
+    "plate (fem.model = '3d') the pressure above is its profile across the track, and fe3d_time_s[i], "
+    "fe3d_surface_xy_m[j] (surface vertices of the half plate y >= 0), fe3d_pressure_Pa[i, j], fe3d_shear_Pa[i, j, 2] "
+    "(traction on the plate, x and y) and fe3d_sticking[i, j] are its fields."
 )
 
 #: history.csv columns: :class:`contact.History` field → column name with units.
@@ -80,6 +84,10 @@ def write_run(result: RunResult, out: str | os.PathLike, progress: Callable[[str
         if result.coupling is not None:
             ft, fr, fp = result.coupling.pressure_table
             arrays.update(fe_time_s=ft, fe_surface_r_m=fr, fe_pressure_Pa=fp)
+        if result.solid is not None:
+            s = result.solid.solid
+            arrays.update(fe3d_time_s=result.solid.times, fe3d_surface_xy_m=s.surface_vertices[:, :2],
+                          fe3d_pressure_Pa=s.pressure, fe3d_shear_Pa=s.shear, fe3d_sticking=s.sticking)  # fmt: skip
         write_npz(tmp / "pressure.npz", arrays)
         surf_mesh = surface_mesh(result.surface)
         write_mesh(tmp / "surface.vtu", surf_mesh)
@@ -93,7 +101,9 @@ def write_run(result: RunResult, out: str | os.PathLike, progress: Callable[[str
             write_mesh(tmp / "plate.vtu", deform_plate_mesh(user, result.surface))
         else:
             write_mesh(tmp / "plate.vtu", plate_block_mesh(result.surface, case.output.block_thickness))
-        if result.fe is not None:
+        if result.solid is not None:
+            write_mesh(tmp / "plate_fe.vtu", result.solid.solid.to_meshio())
+        elif result.fe is not None:
             write_mesh(tmp / "plate_fe.vtu", _plate_fe(result))
         times["meshes"] = time.perf_counter() - t0
         if case.output.figures:

@@ -1,0 +1,82 @@
+"""Benchmark of the 3-D plate in the chain: the default oblique impact (``impactwear run``'s default case, 30° from
+the normal, μ = 0.3) coupled to the 3-D half plate with friction (``fem.model = "3d"``).
+
+Prints, side by side in one run: the wall time of the 3-D coupling (its plate cycles, increments, Newton
+iterations, factorisations and factor applications), the time of one linear elastic solve on the same mesh
+(assembly of the stiffness, the clamped DOFs removed, PARDISO/SuperLU factorisation and one solve), and the cost per
+increment in units of that solve. Goals (the issue): the whole 3-D impact ≤ 10 min and ≤ 5 solve-equivalents per
+increment on 2 cores.
+
+Run: ``python benchmarks/bench_solid.py`` (``--quick``: 3 elements across the contact, 4 + 2 increments, one cycle).
+"""
+
+from __future__ import annotations
+
+import argparse
+import time
+import warnings
+
+import numpy as np
+
+from fem.forms import assemble
+from fem.linear import BACKEND, factorise
+from wear.case import JOBS
+from wear.chain.single import run
+from wear.chain.solid import solid_impact, solid_settings
+
+
+def one_elastic_solve(solver, repeats: int = 3) -> float:
+    """Best-of-``repeats`` time (s) of one linear elastic solve on the 3-D plate ``solver``'s mesh."""
+    d = solver.disc
+    free = np.setdiff1d(np.arange(d.ndofs), d.fixed_dofs)
+    rhs = np.ones(free.size)
+    best = np.inf
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        K = assemble(d, solver.elastic_element_matrices)
+        factor = factorise(K[free][:, free].tocsr())
+        factor.solve(rhs)
+        factor.free()
+        best = min(best, time.perf_counter() - t0)
+    return best
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="reduced mesh and path")
+    args = parser.parse_args()
+    warnings.simplefilter("ignore")  # the elastic-ball note: the benchmark measures time
+    case = JOBS["run"].default_case().with_(fem={"model": "3d"})
+    if args.quick:
+        case = case.with_(fem={"model": "3d", "mesh_scale": 2.6, "solid_load_steps": 4, "solid_unload_steps": 2,
+                               "solid_iterations": 1})  # fmt: skip
+    t0 = time.perf_counter()
+    start = run(case.with_(fem={"model": "axisymmetric"})).impact
+    t_start = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    coupled = solid_impact(case, start)
+    t_solid = time.perf_counter() - t0
+    solid, stats = coupled.solid, coupled.solid.stats
+    solve = one_elastic_solve(solid.solver)
+    per_increment = t_solid / stats.increments
+    settings = solid_settings(case)
+    print(f"3-D plate benchmark: default oblique impact, {settings.contact_elements} elements across the contact, "
+          f"{solid.final.u.size} DOFs, solver {BACKEND}")  # fmt: skip
+    print(f"  axisymmetric start (whole chain):      {t_start:8.1f} s")
+    print(f"  3-D coupling:                          {t_solid:8.1f} s   ({t_solid / 60:.2f} min; goal <= 10 min)")
+    print(f"  plate cycles / converged:              {coupled.iterations:8d}   {coupled.converged}")
+    print(f"  increments:                            {stats.increments:8d}")
+    print(f"  Newton iterations:                     {stats.iterations:8d}")
+    print(f"  factorisations / factor applications:  {stats.factorisations:8d} / {stats.solves}")
+    print(f"  factorisation time:                    {stats.factor_time:8.1f} s")
+    print(f"  one linear elastic solve, same mesh:   {solve:8.2f} s")
+    print(f"  cost per increment:                    {per_increment:8.2f} s = {per_increment / solve:.1f} "
+          "solve-equivalents (goal <= 5)")  # fmt: skip
+    print(
+        f"  e_n {coupled.impact.normal_restitution:.4f} (axisymmetric {start.normal_restitution:.4f}), "
+        f"e_t {coupled.impact.tangential_restitution:.4f} (axisymmetric {start.tangential_restitution:.4f})"
+    )
+
+
+if __name__ == "__main__":
+    main()

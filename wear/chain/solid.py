@@ -1,0 +1,111 @@
+"""The 3-D plate in the chain (``fem.model = "3d"``): its checks, its coupling, and the wear and residual surface
+from its fields (SI units, angles in degrees from the plate normal).
+
+The oblique impact, first coupled to the axisymmetric plate (its normal law is the 3-D one's within about 1 % at
+μ = 0, a cheap start), is coupled to the 3-D half plate with friction (:func:`fem.solid_coupling.couple_solid`);
+the 3-D pressure and stick/slip fields then drive the local wear law (:mod:`wear.solid_wear`) and the 3-D residual
+surface is the dent.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.interpolate import LinearNDInterpolator
+
+from contact import ImpactResult
+from fem.solid import MAX_FRICTION
+from fem.solid_coupling import SolidCoupledImpact, SolidCouplingSettings, couple_solid
+from wear.case import Case
+from wear.chain.plate import impact_on_law
+from wear.integrate import wear_map
+from wear.laws import ImpactWear, impact_wear, wear_of_impact
+from wear.pressure import PressureHistory, fe_pressure_history, sliding_speed
+from wear.solid_wear import mirrored_surface, solid_dent_depth, solid_grid, solid_wear_depth
+from wear.surface import DeformedSurface
+
+__all__ = ["MIN_CONTACT_ELEMENTS", "check_solid_case", "solid_settings", "solid_impact",
+           "solid_wear", "solid_surface"]  # fmt: skip
+
+#: Fewest 3-D elements across the largest contact radius that resolve the contact (the Hertz force is within 2 %
+#: with 4; below 3 the contact edge falls between two element vertices over much of the impact).
+MIN_CONTACT_ELEMENTS = 3
+#: 3-D elements across the largest contact radius at ``fem.mesh_scale`` = 1.
+CONTACT_ELEMENTS_AT_SCALE_1 = 8
+
+
+def solid_settings(case: Case) -> SolidCouplingSettings:
+    """The 3-D coupling's numbers from the case's ``[fem]`` table (its own ``solid_load_steps`` and
+    ``solid_unload_steps``; elements across the contact radius 8/``mesh_scale``)."""
+    f = case.fem
+    return SolidCouplingSettings(tolerance=f.tolerance, max_iterations=f.solid_iterations,
+                                 load_steps=f.solid_load_steps, unload_steps=f.solid_unload_steps,
+                                 overshoot=f.overshoot,
+                                 contact_elements=round(CONTACT_ELEMENTS_AT_SCALE_1 / f.mesh_scale))  # fmt: skip
+
+
+def check_solid_case(case: Case) -> None:
+    """One-line ``ValueError`` for a case the 3-D plate cannot run: a coupling other than two-way, friction above
+    :data:`fem.solid.MAX_FRICTION`, or a mesh too coarse to resolve the contact."""
+    if case.fem.coupling != "two-way":
+        raise ValueError(f"fem.model='3d' needs fem.coupling='two-way' (got {case.fem.coupling!r}): the 3-D plate "
+                         "is coupled to the impact")  # fmt: skip
+    mu = case.impact.friction
+    if mu > MAX_FRICTION:
+        raise ValueError(f"impact.friction={mu!r}: the 3-D plate (fem.model='3d') takes a Coulomb coefficient in "
+                         f"[0, {MAX_FRICTION}]")  # fmt: skip
+    elements = solid_settings(case).contact_elements
+    if elements < MIN_CONTACT_ELEMENTS:
+        raise ValueError(
+            f"fem.mesh_scale={case.fem.mesh_scale!r}: the 3-D plate would have {elements} elements across the "
+            f"contact radius and cannot resolve the contact; it needs at least {MIN_CONTACT_ELEMENTS} "
+            f"(mesh_scale <= {CONTACT_ELEMENTS_AT_SCALE_1 / (MIN_CONTACT_ELEMENTS - 0.5):.3g})"
+        )
+
+
+def solid_impact(case: Case, start: ImpactResult, progress=None) -> SolidCoupledImpact:
+    """The case's impact coupled to the 3-D plate from the impact ``start`` (m, s; the axisymmetric coupled one)."""
+    ball, plate = case.ball.material(), case.plate.material()
+    return couple_solid(impact_on_law(case), start, case.ball.radius, plate, case.impact.friction,
+                        None if ball.is_rigid else ball, 0.0, solid_settings(case), progress)  # fmt: skip
+
+
+def _across_profile(coupled: SolidCoupledImpact, samples: int = 81) -> PressureHistory:
+    """The 3-D pressure across the track through each step's contact centre as a p(r, t) table (the wear stage's
+    pressure history for the summary, ``pressure.npz`` and the figures)."""
+    solid = coupled.solid
+    points, source = mirrored_surface(solid)
+    field = LinearNDInterpolator(points, solid.pressure[:, source].T, fill_value=0.0)
+    radii = np.linspace(0.0, 1.5 * float(np.max(solid.contact_radius)), samples)
+    rows = np.array([field(np.column_stack([np.full(samples, c), radii]))[:, k] for k, c in enumerate(solid.centre)])
+    ph = fe_pressure_history(coupled.times, radii, rows, solid.centre)
+    return PressureHistory(ph.time, ph.contact_x, ph.extent, ph.pressure, source="fe-3d (across the track)")
+
+
+def solid_wear(case: Case, coupled: SolidCoupledImpact) -> tuple[PressureHistory, object, ImpactWear]:
+    """Stage ``wear`` on the 3-D plate: the local law integrated with the 3-D pressure and stick/slip fields
+    (:func:`wear.solid_wear.solid_wear_depth`) on the 3-D grid; another law's volumes as on the axisymmetric plate,
+    laid out by the across-track pressure profile. Returns (pressure history, wear map, worn volumes)."""
+    w, impact = case.wear, coupled.impact
+    ph = _across_profile(coupled)
+    speed = sliding_speed(impact, w.speed)
+    constants = {**w.values(), "hardness": case.plate.hardness}
+    density = case.plate.material().density
+    if w.law != "local":
+        wm, worn = wear_of_impact(w.law, constants, w.wear_law(), impact, ph, speed, density=density,
+                                  points_across=w.points_across)  # fmt: skip
+        return ph, wm, worn
+    x, y = solid_grid(coupled.solid, w.points_across)
+    depth = solid_wear_depth(coupled.solid, coupled.times, speed, w.wear_law(), x, y)
+    wm = wear_map(x, y, depth, density)
+    return ph, wm, impact_wear("local", constants, impact, local=wm.volume_m3)
+
+
+def solid_surface(coupled: SolidCoupledImpact, wm) -> DeformedSurface:
+    """The 3-D plate's residual surface on the wear grid (m) with the wear map ``wm``; its profile across the
+    track through the deepest point as ``dent_radius``/``dent_depth``."""
+    dent = solid_dent_depth(coupled.solid, wm.x, wm.y)
+    wear = wm.depth.T
+    i, j = np.unravel_index(int(np.argmax(dent)), dent.shape)
+    across = wm.y >= wm.y[j]
+    return DeformedSurface(wm.x, wm.y, wear, wm.y[across] - wm.y[j], dent[i, across], (float(wm.x[i]), 0.0),
+                           dent_grid=dent)  # fmt: skip
