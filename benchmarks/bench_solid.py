@@ -7,7 +7,8 @@ iterations, factorisations and factor applications), the time of one linear elas
 increment in units of that solve. Goals (the issue): the whole 3-D impact ≤ 10 min and ≤ 5 solve-equivalents per
 increment on 2 cores.
 
-Run: ``python benchmarks/bench_solid.py`` (``--quick``: 3 elements across the contact, 4 + 2 increments, one cycle).
+Run: ``python benchmarks/bench_solid.py`` (``--quick``: 3 elements across the contact, 4 + 2 increments, one cycle;
+``--friction 0``: the frictionless oblique impact).
 """
 
 from __future__ import annotations
@@ -44,9 +45,12 @@ def one_elastic_solve(solver, repeats: int = 3) -> float:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="reduced mesh and path")
+    parser.add_argument("--friction", type=float, default=None, help="the impact's μ (default: the case's, 0.3)")
     args = parser.parse_args()
     warnings.simplefilter("ignore")  # the elastic-ball note: the benchmark measures time
     case = JOBS["run"].default_case().with_(fem={"model": "3d"})
+    if args.friction is not None:
+        case = case.with_(impact={"friction": args.friction})
     if args.quick:
         case = case.with_(fem={"model": "3d", "mesh_scale": 2.6, "solid_load_steps": 4, "solid_unload_steps": 2,
                                "solid_iterations": 1})  # fmt: skip
@@ -60,7 +64,8 @@ def main() -> None:
     solve = one_elastic_solve(solid.solver)
     per_increment = t_solid / stats.increments
     settings = solid_settings(case)
-    print(f"3-D plate benchmark: default oblique impact, {settings.contact_elements} elements across the contact, "
+    print(f"3-D plate benchmark: default oblique impact, μ = {case.impact.friction:g}, "
+          f"{settings.contact_elements} elements across the contact, "
           f"{solid.final.u.size} DOFs, solver {BACKEND}")  # fmt: skip
     print(f"  axisymmetric start (whole chain):      {t_start:8.1f} s")
     print(f"  3-D coupling:                          {t_solid:8.1f} s   ({t_solid / 60:.2f} min; goal <= 10 min)")

@@ -147,8 +147,9 @@ class SolidCoupledImpact:
 
     @property
     def tangential_mismatch(self) -> float:
-        """Largest |Q_3D − F_t| over the plate steps, relative to the impact's largest |F_t| (the 3-D plate's
-        tangential force against the impact's H-DD spring at the same instants)."""
+        """Largest absolute difference of the 3-D plate's tangential force Q and the impact's F_t over the plate's
+        steps, relative to the impact's largest absolute F_t (the 3-D plate against the H-DD spring at the same
+        instants)."""
         h = self.impact.history
         ft = np.interp(self.times, h.t, h.tangential_force)
         scale = float(np.max(np.abs(h.tangential_force)))

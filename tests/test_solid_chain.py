@@ -1,7 +1,7 @@
 """The oblique impact on the 3-D plate in the chain (``fem.model = "3d"``): the frictionless oblique impact against the
 axisymmetric chain, its outputs, the dent's dimensions against closed forms, and the bad-input errors.
 
-Reduced path (CI): the default 3-D mesh (4 elements across the contact radius), 6 + 3 increments.
+Reduced path (CI): the default 3-D mesh (4 elements across the contact radius), 5 + 3 increments.
 """
 
 import json
@@ -16,7 +16,7 @@ from wear.app.cli import main
 from wear.case import JOBS
 from wear.surface import DeformedSurface
 
-REDUCED = {"model": "3d", "mesh_scale": 2.0, "solid_load_steps": 6, "solid_unload_steps": 3, "solid_iterations": 2}
+REDUCED = {"model": "3d", "mesh_scale": 2.0, "solid_load_steps": 5, "solid_unload_steps": 3, "solid_iterations": 2}
 
 
 @pytest.fixture(scope="module")
