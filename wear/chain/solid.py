@@ -9,6 +9,8 @@ surface is the dent.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 from scipy.interpolate import LinearNDInterpolator
 
@@ -17,7 +19,7 @@ from fem.solid import MAX_FRICTION
 from fem.solid_coupling import SolidCoupledImpact, SolidCouplingSettings, couple_solid
 from wear.case import Case
 from wear.chain.plate import impact_on_law
-from wear.integrate import wear_map
+from wear.integrate import WearMap, wear_map
 from wear.laws import ImpactWear, impact_wear, wear_of_impact
 from wear.pressure import PressureHistory, fe_pressure_history, sliding_speed
 from wear.solid_wear import mirrored_surface, solid_dent_depth, solid_grid, solid_wear_depth
@@ -62,8 +64,9 @@ def check_solid_case(case: Case) -> None:
         )
 
 
-def solid_impact(case: Case, start: ImpactResult, progress=None) -> SolidCoupledImpact:
-    """The case's impact coupled to the 3-D plate from the impact ``start`` (m, s; the axisymmetric coupled one)."""
+def solid_impact(case: Case, start: ImpactResult, progress: Callable[[int], None] | None = None) -> SolidCoupledImpact:
+    """The case's impact coupled to the 3-D plate from the impact ``start`` (m, s; the axisymmetric coupled one);
+    ``progress(cycle)`` is called as each 3-D plate cycle starts."""
     ball, plate = case.ball.material(), case.plate.material()
     return couple_solid(impact_on_law(case), start, case.ball.radius, plate, case.impact.friction,
                         None if ball.is_rigid else ball, 0.0, solid_settings(case), progress)  # fmt: skip
@@ -81,7 +84,7 @@ def _across_profile(coupled: SolidCoupledImpact, samples: int = 81) -> PressureH
     return PressureHistory(ph.time, ph.contact_x, ph.extent, ph.pressure, source="fe-3d (across the track)")
 
 
-def solid_wear(case: Case, coupled: SolidCoupledImpact) -> tuple[PressureHistory, object, ImpactWear]:
+def solid_wear(case: Case, coupled: SolidCoupledImpact) -> tuple[PressureHistory, WearMap, ImpactWear]:
     """Stage ``wear`` on the 3-D plate: the local law integrated with the 3-D pressure and stick/slip fields
     (:func:`wear.solid_wear.solid_wear_depth`) on the 3-D grid; another law's volumes as on the axisymmetric plate,
     laid out by the across-track pressure profile. Returns (pressure history, wear map, worn volumes)."""
@@ -100,7 +103,7 @@ def solid_wear(case: Case, coupled: SolidCoupledImpact) -> tuple[PressureHistory
     return ph, wm, impact_wear("local", constants, impact, local=wm.volume_m3)
 
 
-def solid_surface(coupled: SolidCoupledImpact, wm) -> DeformedSurface:
+def solid_surface(coupled: SolidCoupledImpact, wm: WearMap) -> DeformedSurface:
     """The 3-D plate's residual surface on the wear grid (m) with the wear map ``wm``; its profile across the
     track through the deepest point as ``dent_radius``/``dent_depth``."""
     dent = solid_dent_depth(coupled.solid, wm.x, wm.y)
