@@ -31,6 +31,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.integrate import cumulative_trapezoid
 
 from contact import ImpactResult, Material, TabulatedLaw
 from fem.coupling import force_law
@@ -68,12 +69,6 @@ class ImpactPath:
     peak: int
 
 
-def _slide(impact: ImpactResult) -> np.ndarray:
-    h = impact.history
-    v, t = np.asarray(h.slip_velocity, float), np.asarray(h.t, float)
-    return np.r_[0.0, np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(t))]
-
-
 def impact_path(impact: ImpactResult, load_steps: int, unload_steps: int) -> ImpactPath:
     r"""The path of ``impact`` (with histories) for the 3-D plate: ``load_steps`` overlaps
     δ_max (k/n)^{3/2} on the loading branch (F ∝ δ^{3/2} curves most at the start), ``unload_steps`` normal forces
@@ -90,12 +85,12 @@ def impact_path(impact: ImpactResult, load_steps: int, unload_steps: int) -> Imp
     levels = f[peak] * (1.0 - np.arange(1, unload_steps + 1) / unload_steps)
     branch = np.minimum.accumulate(f[peak:])
     t_unload = np.interp(-levels, -branch, t[peak:])
-    times = np.r_[t_load, t_unload]
-    times[load_steps - 1] = t[peak]
-    slide = _slide(impact)
-    overlap = np.r_[np.interp(times, t, d), 0.0]
-    centre = np.interp(np.r_[times, t[-1]], t, np.asarray(h.contact_x, float))
-    return ImpactPath(np.r_[times, t[-1]], overlap, centre, np.interp(np.r_[times, t[-1]], t, slide), load_steps - 1)
+    t_load[-1] = t[peak]
+    times = np.r_[t_load, t_unload, t[-1]]  # the last: lift-off at separation
+    slide = cumulative_trapezoid(np.asarray(h.slip_velocity, float), t, initial=0.0)
+    overlap = np.r_[np.interp(times[:-1], t, d), 0.0]
+    centre = np.interp(times, t, np.asarray(h.contact_x, float))
+    return ImpactPath(times, overlap, centre, np.interp(times, t, slide), load_steps - 1)
 
 
 def place_steps(impact: ImpactResult, path: ImpactPath) -> np.ndarray:

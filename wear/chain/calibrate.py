@@ -30,8 +30,8 @@ from contact import ImpactResult, simulate_impacts
 from contact.theory import sphere_mass
 from wear.case import TABLES, Case
 from wear.chain.fit import Constant, LogFit, log_fit
-from wear.chain.plate import case_plate, coupling_settings, impact_on_law
-from wear.chain.single import estimate_arguments, estimate_impact, wear_constants
+from wear.chain.plate import case_plate, coupling_settings, impact_on_law, wear_constants
+from wear.chain.single import estimate_arguments, estimate_impact
 from wear.law import WearLaw
 from wear.laws import flow_pressure_of, impact_wear, local_volume, oka_exponents, pressed_area
 from wear.pressure import PressureHistory, SlidingSpeed, pressure_history, sliding_speed

@@ -1,5 +1,5 @@
-"""The FE plate of a case: its mesh, the :class:`fem.Plate`, the coupling's settings and the impact run on a force
-law (SI units). Every chain that couples an impact to the plate builds them here."""
+"""The FE plate of a case: its mesh, the :class:`fem.Plate`, the coupling's settings, the impact run on a force
+law and the wear law's constants (SI units). Every chain that couples an impact to the plate builds them here."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ from contact import ImpactResult, TabulatedLaw, simulate_impact
 from fem.mesh import DEFAULT_PARAMETERS
 from wear.case import Case
 
-__all__ = ["case_mesh", "case_plate", "coupling_settings", "impact_on_law"]
+__all__ = ["case_mesh", "case_plate", "coupling_settings", "impact_on_law", "wear_constants"]
 
 
 def case_mesh(case: Case, max_overlap: float, growth: float = 1.0) -> MeshTri:
@@ -64,3 +64,8 @@ def impact_on_law(case: Case) -> Callable[[TabulatedLaw], ImpactResult]:
         return simulate_impact(**args, force_law=law)
 
     return run
+
+
+def wear_constants(case: Case) -> dict[str, float | str | None]:
+    """The constants of the case's wear law (:mod:`wear.laws`): the ``[wear]`` table and the plate's hardness."""
+    return {**case.wear.values(), "hardness": case.plate.hardness}

@@ -38,7 +38,7 @@ from contact.theory import PAPER_YIELD_COEFFICIENT, first_yield, yield_velocity
 from fem import CoupledImpact, IndentationResult, PlateCycle, worst_regime
 from fem.solid_coupling import SolidCoupledImpact
 from wear.case import JOBS, Case
-from wear.chain.plate import case_mesh, case_plate, coupling_settings, impact_on_law
+from wear.chain.plate import case_mesh, case_plate, coupling_settings, impact_on_law, wear_constants
 from wear.chain.solid import check_solid_case, solid_impact, solid_surface, solid_wear
 from wear.integrate import WearMap
 from wear.laws import LAWS, ImpactWear, wear_of_impact
@@ -51,7 +51,6 @@ __all__ = [
     "estimate_arguments",
     "estimate_impact",
     "impact_wear",
-    "wear_constants",
     "speed_ratio",
     "STAGES",
 ]
@@ -205,11 +204,6 @@ def estimate_impact(case: Case, **overrides) -> ImpactResult:
     """The impact of ``case`` on its own normal model, with its histories (:func:`estimate_arguments`): the impact
     of an uncoupled run and the first estimate of a coupled one."""
     return simulate_impact(**estimate_arguments(case, history=True, **overrides))
-
-
-def wear_constants(case: Case) -> dict[str, float | str | None]:
-    """The constants of the case's wear law (:mod:`wear.laws`): the ``[wear]`` table and the plate's hardness."""
-    return {**case.wear.values(), "hardness": case.plate.hardness}
 
 
 def impact_wear(case: Case, impact: ImpactResult, fe_table=None,

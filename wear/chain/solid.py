@@ -18,7 +18,7 @@ from contact import ImpactResult
 from fem.solid import MAX_FRICTION
 from fem.solid_coupling import SolidCoupledImpact, SolidCouplingSettings, couple_solid
 from wear.case import Case
-from wear.chain.plate import impact_on_law
+from wear.chain.plate import impact_on_law, wear_constants
 from wear.integrate import WearMap, wear_map
 from wear.laws import ImpactWear, impact_wear, wear_of_impact
 from wear.pressure import PressureHistory, fe_pressure_history, sliding_speed
@@ -91,7 +91,7 @@ def solid_wear(case: Case, coupled: SolidCoupledImpact) -> tuple[PressureHistory
     w, impact = case.wear, coupled.impact
     ph = _across_profile(coupled)
     speed = sliding_speed(impact, w.speed)
-    constants = {**w.values(), "hardness": case.plate.hardness}
+    constants = wear_constants(case)
     density = case.plate.material().density
     if w.law != "local":
         wm, worn = wear_of_impact(w.law, constants, w.wear_law(), impact, ph, speed, density=density,
