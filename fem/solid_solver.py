@@ -132,6 +132,7 @@ class SolidSolver:
         self.mass_lu = spla.splu(d.surface_hat_mass.tocsc())
         self._factor: Factorisation | None = None
         self._factor_key = b""
+        self._factor_data = np.zeros(0)
         nel, nq = d.weight.shape
         self._zero_plastic = np.zeros((nel, nq, 6))
         self._zero_alpha = np.zeros((nel, nq))
@@ -235,14 +236,15 @@ class SolidSolver:
             K_mod = (sp.diags(keep) @ K @ sp.diags(keep) + sp.diags(diag * (1.0 - keep))).tocsr()
             tolerance = 1e-3 * self.rtol * scale / max(np.linalg.norm(rhs), 1e-300)
             key = constrained.tobytes() + (b"elastic" if elastic else b"")
+            coupling = None
+            if slip_vertices is not None and slip_vertices.any():
+                coupling = self._slip_linearisation(K, -f[self.uz], direction, slip_vertices, mu, keep)
             try:
                 if rows is None:
-                    du = self._solve(K_mod, rhs, tolerance, key)
+                    du = self._solve(K_mod, rhs, tolerance, key, coupling)
                 else:
-                    # a tangent that changed (plastic points) must be factorised again: the key says when
-                    stuck_key = key + (b"" if elastic or not upd.yielding.any() else b"%d" % self.stats.iterations)
                     defect = targets - rows @ (u + step)
-                    du, multipliers = self._solve_stuck(K_mod, rhs, rows, row_ids, defect, stuck_key)
+                    du, multipliers = self._solve_stuck(K_mod, rhs, rows, row_ids, defect, key, tolerance, coupling)
             except SingularMatrixError:
                 break
             self.stats.iterations += 1
@@ -252,6 +254,29 @@ class SolidSolver:
                 history.clear()
                 u = u + du
         raise _NotConverged(residual)
+
+    def _slip_linearisation(self, K, normal, direction, slip_vertices, mu: float, keep: np.ndarray):
+        r"""The change of the slip tractions' nodal loads with the displacement, as a function of a displacement
+        change v (m) to loads (N) on the free DOFs ``keep``: the slip traction τ = μ p ŝ follows the pressure, whose
+        nodal forces are the normal rows of K v,
+
+        .. math:: \delta f_t = L\,\mu\,\hat s\;M^{-1} H\,(-K v)_z
+
+        (L the traction's consistent loads, M⁻¹H the hat moments to the linear pressure field; ŝ held at the set's
+        direction). It makes Newton's tangent the consistent, nonsymmetric one, K − ∂f_t/∂u: the lagged slip
+        traction made Newton a fixed-point iteration of 14–19 iterations per frictional increment."""
+        pressed = mu * slip_vertices * (self.vertex_field(normal) > 0.0)
+        ut = self.ut
+
+        def coupling(v: np.ndarray) -> np.ndarray:
+            tau = (pressed * self.vertex_field(-(K @ v)[self.uz]))[:, None] * direction
+            loads = self.disc.surface_loads @ tau
+            out = np.zeros(v.size)
+            out[ut[:, 0]] = loads[:, 0]
+            out[ut[:, 1]] = loads[:, 1]
+            return out * keep
+
+        return coupling
 
     def _accelerate(self, history: list, u: np.ndarray, du: np.ndarray, depth: int = 6) -> np.ndarray:
         r"""Anderson acceleration (type II, Walker & Ni 2011) of the initial-stiffness iteration u ← u + K_e⁻¹ r(u):
@@ -305,31 +330,31 @@ class SolidSolver:
         sums[sums == 0.0] = 1.0
         return (sp.diags(1.0 / sums) @ rows).tocsr(), targets / sums, np.concatenate(ids)
 
-    def _solve_stuck(self, K_mod, rhs, rows, row_ids, defect, key: bytes):
+    def _solve_stuck(self, K_mod, rhs, rows, row_ids, defect, key: bytes, tolerance: float = 1e-10, coupling=None):
         r"""Solve [[K_mod, Cᵀ], [C, 0]] [du; λ] = [rhs; defect] by the augmented Lagrangian (Uzawa) iteration on
-        the SPD factor of K_mod + ρCᵀC (kept while ``key`` and the stick rows are unchanged):
+        K_mod + ρCᵀC:
 
         .. math:: (K + \rho C^T C)\,du_k = r - C^T\lambda_k + \rho C^T d,\qquad
                   \lambda_{k+1} = \lambda_k + \rho\,(C\,du_k - d),
 
         until the constraint error is below a tenth of the gap tolerance (the rows are scaled to unit sums, so it is
         a length). ρ is 10⁴ × the stiffness of a DOF over the rows' own scale: each iteration gains about
-        four digits, and one back-substitution. A saddle-point factorisation (PARDISO's symmetric-indefinite mode)
-        perturbed the multipliers' zero pivots into a residual of 1e12 here; the multipliers' exact Schur
-        complement needs a solve per stick row for every new factor, which made a stuck plastic increment cost
-        hundreds of solves per Newton iteration. ``row_ids`` name the rows (2·vertex + component). Returns
-        (du, λ)."""
+        four digits. The inner solves are those of :meth:`_solve`: CG preconditioned with the kept factor of an
+        earlier K + ρCᵀC with the same constrained DOFs and stick rows (the penalty part is then exact in the
+        preconditioner and CG sees only the plastic points' change of tangent), refactorised when CG is slow. A
+        saddle-point factorisation (PARDISO's symmetric-indefinite mode) perturbed the multipliers' zero pivots into
+        a residual of 1e12 here; the multipliers' exact Schur complement needs a solve per stick row for every new
+        factor. ``row_ids`` name the rows (2·vertex + component); ``tolerance`` the inner solves' relative residual,
+        ``coupling`` the slip tractions' linearisation (:meth:`_slip_linearisation`). Returns (du, λ)."""
         diagonal = float(np.mean(K_mod.diagonal()))
         CtC = (rows.T @ rows).tocsr()
         rho = 1e4 * diagonal / max(float(np.mean(CtC.diagonal()[CtC.diagonal() > 0.0])), 1e-300)
+        augmented = (K_mod + rho * CtC).tocsr()
         full_key = key + row_ids.tobytes() + rows.indices.tobytes()
-        if self._factor is None or full_key != self._factor_key:
-            self._refactor((K_mod + rho * CtC).tocsr(), full_key)
         multipliers = np.zeros(rows.shape[0])
         base = rhs + rho * (rows.T @ defect)
         for _ in range(20):
-            du = self._factor.solve(base - rows.T @ multipliers)
-            self.stats.solves += 1
+            du = self._solve(augmented, base - rows.T @ multipliers, min(tolerance, 1e-8), full_key, coupling)
             error = rows @ du - defect
             multipliers = multipliers + rho * error
             if float(np.max(np.abs(error), initial=0.0)) <= 0.1 * self.gap_tol:
@@ -354,26 +379,46 @@ class SolidSolver:
             ke[elements] = element_matrices(d, D, elements)
         return assemble(d, ke)
 
-    def _solve(self, K_mod: sp.csr_matrix, rhs: np.ndarray, tolerance: float, key: bytes) -> np.ndarray:
-        """K_mod x = rhs by CG preconditioned with the kept factor; refactorised when CG is slow or when the
-        constrained DOFs (``key``) changed: a new contact or stick node changes K_mod by a rank of a few dozen,
-        which CG on the old factor resolves only in as many iterations."""
-        if self._factor is not None and key == self._factor_key:
-            count = [0]
-
-            def apply(v):
-                count[0] += 1
-                return self._factor.solve(v)
-
-            M = spla.LinearOperator(K_mod.shape, matvec=apply, dtype=float)
-            x, info = spla.cg(K_mod, rhs, x0=self._factor.solve(rhs), rtol=max(tolerance, 1e-12),
-                              maxiter=self.cg_max_iterations, M=M)  # fmt: skip
-            self.stats.solves += count[0] + 1
-            if info == 0:
+    def _solve(self, K_mod: sp.csr_matrix, rhs: np.ndarray, tolerance: float, key: bytes, coupling=None) -> np.ndarray:
+        """K_mod x − coupling(x) = rhs by a Krylov method (CG, or GMRES with the nonsymmetric ``coupling`` of the
+        slip tractions) preconditioned with the kept factor of an earlier symmetric K_mod; refactorised when the
+        Krylov method is slow or when the constrained DOFs (``key``) changed: a new contact or stick node changes
+        K_mod by a rank of a few dozen, which CG on the old factor resolves only in as many iterations. The factor of
+        the very same matrix is applied directly: CG on a stiff penalty system cannot reach a tight tolerance in
+        floating point."""
+        kept = self._factor is not None and key == self._factor_key
+        if kept and coupling is None and self._same_matrix(K_mod):
+            self.stats.solves += 1
+            return self._factor.solve(rhs)
+        if kept:
+            x, converged = self._krylov(K_mod, rhs, tolerance, coupling)
+            if converged or self._same_matrix(K_mod):
                 return x
         self._refactor(K_mod, key)
-        self.stats.solves += 1
-        return self._factor.solve(rhs)
+        if coupling is None:
+            self.stats.solves += 1
+            return self._factor.solve(rhs)
+        return self._krylov(K_mod, rhs, tolerance, coupling)[0]
+
+    def _krylov(self, K_mod: sp.csr_matrix, rhs: np.ndarray, tolerance: float, coupling) -> tuple[np.ndarray, bool]:
+        """Preconditioned CG (symmetric) or GMRES (with ``coupling``) on the kept factor, at most
+        ``cg_max_iterations`` iterations. Returns (x, converged)."""
+        count = [0]
+
+        def apply(v):
+            count[0] += 1
+            return self._factor.solve(v)
+
+        M = spla.LinearOperator(K_mod.shape, matvec=apply, dtype=float)
+        x0 = apply(rhs)
+        rtol = max(tolerance, 1e-12)
+        if coupling is None:
+            x, info = spla.cg(K_mod, rhs, x0=x0, rtol=rtol, maxiter=self.cg_max_iterations, M=M)
+        else:
+            A = spla.LinearOperator(K_mod.shape, matvec=lambda v: K_mod @ v - coupling(v), dtype=float)
+            x, info = spla.gmres(A, rhs, x0=x0, rtol=rtol, restart=self.cg_max_iterations, maxiter=1, M=M)
+        self.stats.solves += count[0]
+        return x, info == 0
 
     def _refactor(self, K_mod: sp.csr_matrix, key: bytes) -> None:
         """Replace the kept factor by one of ``K_mod`` (its constrained DOFs and stick rows ``key``)."""
@@ -382,8 +427,13 @@ class SolidSolver:
             self._factor.free()
         self._factor = factorise(K_mod)
         self._factor_key = key
+        self._factor_data = K_mod.data.copy()
         self.stats.factorisations += 1
         self.stats.factor_time += time.perf_counter() - t0
+
+    def _same_matrix(self, K_mod: sp.csr_matrix) -> bool:
+        """Whether ``K_mod`` is the factorised matrix (same key, so the same pattern: compare the values)."""
+        return K_mod.data.shape == self._factor_data.shape and np.array_equal(K_mod.data, self._factor_data)
 
     def _newton(self, start: SolidState, target, u0, contact, stick, direction, mu) -> SolidState:
         """Equilibrium at ``target`` = (δ, c, ξ), correcting the contact and stick sets until neither is violated."""
@@ -489,10 +539,13 @@ class SolidSolver:
         if state.overlap == 0.0 and not state.contact.any():
             rho = np.hypot(self.disc.surface_xy[:, 0] - centre, self.disc.surface_xy[:, 1])
             contact = rho < np.sqrt(self.radius * max(overlap, 0.0))
-        return u0, contact, self._stick_guess(state, target, contact, mu), state.direction
+        last_step = 0.0 if previous is None else state.slide - previous.slide
+        return u0, contact, self._stick_guess(state, target, contact, mu, last_step), state.direction
 
-    def _stick_guess(self, state: SolidState, target, contact: np.ndarray, mu: float) -> np.ndarray:
-        """The stick set an increment starts from. In partial slip a node that comes into contact sticks first;
+    def _stick_guess(self, state: SolidState, target, contact: np.ndarray, mu: float, last_step: float = 0.0):
+        """The stick set an increment starts from. Where the slide reverses against ``last_step`` (m, the slide of
+        the increment before), the whole contact sticks and releases from the edge where the cone is exceeded
+        (Mindlin's unloading, Johnson §7.3). In partial slip a node that comes into contact sticks first;
         after a frictionless history the whole contact does (and releases where the cone is exceeded). After gross
         sliding the contact slips on while the slide goes on the same way, and sticks when it reverses. At first
         contact (normal and tangential loads applied together) it all slips if the slide reaches Mindlin's
@@ -501,9 +554,11 @@ class SolidSolver:
         stick) round per ring of vertices, each with its own stick factor."""
         if mu <= 0.0:
             return np.zeros_like(contact)
+        step = target[2] - state.slide
+        if step * last_step < 0.0:
+            return contact.copy()
         if state.stick.any():
             return (state.stick | ~state.contact) & contact
-        step = target[2] - state.slide
         if state.friction > 0.0 and state.contact.any():
             previous = float(np.mean(state.direction[:, 0]))
             return contact if step * previous <= 0.0 else np.zeros_like(contact)
