@@ -15,20 +15,22 @@ velocity of the impact model). The plate's surface nodes obey
 The pressure p and the shear τ are the fields linear between the surface vertices (the hat moments of the nodal
 forces, as on the axisymmetric plate); the Coulomb cone ‖τ‖ ≤ μ p is checked on them, vertex by vertex. Nodes that
 penetrate join the contact, nodes where the pressure is negative leave it; stick vertices outside the cone slip,
-slip vertices whose slip reverses stick. The slip traction is evaluated at the current iterate (a fixed point inside
-Newton: the plate's normal–tangential coupling is weak, (1 − 2ν)/2(1 − ν) of Johnson's §7.1). A stick constraint
+slip vertices whose slip reverses stick; where the ball's slide reverses, the whole contact sticks first
+(Mindlin's unloading). Newton linearises the slip traction with the pressure it follows (a nonsymmetric tangent;
+lagged, it made Newton a fixed-point iteration of 14–19 iterations an increment). A stick constraint
 on the quadratic nodes themselves (node by node) would leave the mid-edge nodes between a stick and a slip vertex to
 one side or the other: ±6–7% on the tangential compliance of a Cattaneo–Mindlin contact on the default mesh.
 
 Plasticity is the same J2 radial return as the axisymmetric plate (:mod:`fem.plasticity`, 6 Mandel components).
-Linear solves: the constrained rows become s·I and the system is solved by CG preconditioned with the PARDISO
-factor of an earlier such matrix (:mod:`fem.linear`), refactorised when CG needs more than ``cg_max_iterations``:
-a modified-Newton iteration that keeps one factorisation over most of an increment.
+Linear solves: the constrained rows become s·I, the stick rows enter as an augmented Lagrangian (one multiplier
+update a Newton step), and the system is solved by CG (GMRES where slip tractions make it nonsymmetric)
+preconditioned with the PARDISO factor of an earlier symmetric such matrix (:mod:`fem.kept_factor`), to an
+inexact-Newton tolerance, refactorised when the Krylov method is slow: a modified-Newton iteration that keeps one
+factorisation over much of an increment.
 """
 
 from __future__ import annotations
 
-import time
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -38,7 +40,8 @@ from skfem import MeshTet
 
 from fem.forms import assemble, element_matrices, internal_force, strain
 from fem.forms3d import discretise_solid
-from fem.linear import Factorisation, SingularMatrixError, factorise
+from fem.kept_factor import KeptFactor, SolveCounters
+from fem.linear import SingularMatrixError
 from fem.plasticity import J2Material, radial_return
 from fem.solver import ConvergenceError
 from fem.sphere_contact import sphere_surface
@@ -68,18 +71,15 @@ class SolidState:
 
 
 @dataclass
-class SolidStats:
-    """Work counters (for the benchmark): factorisations, linear solves (factor applications), Newton iterations,
-    set updates, cut increments, and seconds spent factorising."""
+class SolidStats(SolveCounters):
+    """Work counters (for the benchmark): factorisations, linear solves (factor applications) and seconds spent
+    factorising (:class:`fem.kept_factor.SolveCounters`), Newton iterations, set updates, cut increments."""
 
-    factorisations: int = 0
-    solves: int = 0
     iterations: int = 0
     set_updates: int = 0
     cuts: int = 0
     elastic_retries: int = 0
     increments: int = 0
-    factor_time: float = 0.0
     history: list = field(default_factory=list)
 
 
@@ -114,7 +114,6 @@ class SolidSolver:
         self.max_iterations = max_iterations
         self.max_cuts = max_cuts
         self.max_set_updates = 40
-        self.cg_max_iterations = 15
         self.cone_tolerance = 0.05
         self.stats = SolidStats()
         self.tangent_elastic = material.elastic_tangent_of(6)
@@ -130,9 +129,7 @@ class SolidSolver:
         self.is_vertex = d.surface_nodes < nvert
         self.on_symmetry = np.abs(d.surface_xy[:, 1]) <= 1e-9 * float(np.ptp(d.nodes[0]))
         self.mass_lu = spla.splu(d.surface_hat_mass.tocsc())
-        self._factor: Factorisation | None = None
-        self._factor_key = b""
-        self._factor_data = np.zeros(0)
+        self.linear = KeptFactor(self.stats, max_krylov=15)
         nel, nq = d.weight.shape
         self._zero_plastic = np.zeros((nel, nq, 6))
         self._zero_alpha = np.zeros((nel, nq))
@@ -246,7 +243,7 @@ class SolidSolver:
                 coupling = self._slip_linearisation(K, -f[self.uz], direction, slip_vertices, mu, keep)
             try:
                 if rows is None:
-                    du = self._solve(K_mod, rhs, tolerance, key, coupling)
+                    du = self.linear.solve(K_mod, rhs, tolerance, key, coupling)
                 else:
                     defect = targets - rows @ (u + step)
                     du, multipliers = self._augmented_step(K_mod, rhs, rows, row_ids, defect, multipliers, key,
@@ -345,10 +342,10 @@ class SolidSolver:
 
         ρ is 10⁴ × the stiffness of a DOF over the rows' own scale (the rows are scaled to unit sums, so the
         constraint error is a length): each update gains about four digits on the multipliers, so they converge
-        alongside Newton, one solve a step. The solve is :meth:`_solve`'s, preconditioned by the kept factor of an
-        earlier K + ρCᵀC with the same constrained DOFs and stick rows (the penalty part is then exact in the
-        preconditioner and the Krylov method sees only the plastic points' change of tangent and the slip
-        tractions' ``coupling``), within ``tolerance`` (N). A saddle-point factorisation (PARDISO's
+        alongside Newton, one solve a step. The solve (:class:`fem.kept_factor.KeptFactor`) is preconditioned by
+        the kept factor of an earlier K + ρCᵀC with the same constrained DOFs and stick rows (the penalty part is
+        then exact in the preconditioner and the Krylov method sees only the plastic points' change of tangent and
+        the slip tractions' ``coupling``), within ``tolerance`` (N). A saddle-point factorisation (PARDISO's
         symmetric-indefinite mode) perturbed the multipliers' zero pivots into a residual of 1e12 here; the
         multipliers' exact Schur complement needs a solve per stick row for every new factor. ``row_ids`` name the
         rows (2·vertex + component). Returns (du, λ_{k+1})."""
@@ -357,7 +354,9 @@ class SolidSolver:
         rho = 1e4 * diagonal / max(float(np.mean(CtC.diagonal()[CtC.diagonal() > 0.0])), 1e-300)
         augmented = (K_mod + rho * CtC).tocsr()
         full_key = key + row_ids.tobytes() + rows.indices.tobytes()
-        du = self._solve(augmented, rhs - rows.T @ multipliers + rho * (rows.T @ defect), tolerance, full_key, coupling)
+        du = self.linear.solve(
+            augmented, rhs - rows.T @ multipliers + rho * (rows.T @ defect), tolerance, full_key, coupling
+        )
         return du, multipliers + rho * (rows @ du - defect)
 
     def _slip_vertices(self, contact: np.ndarray, stick: np.ndarray) -> np.ndarray:
@@ -377,62 +376,6 @@ class SolidSolver:
             D[upd.yielding[elements]] = upd.tangent
             ke[elements] = element_matrices(d, D, elements)
         return assemble(d, ke)
-
-    def _solve(self, K_mod: sp.csr_matrix, rhs: np.ndarray, tolerance: float, key: bytes, coupling=None) -> np.ndarray:
-        """K_mod x − coupling(x) = rhs to a residual of ``tolerance`` (N) by a Krylov method (CG, or GMRES with the
-        nonsymmetric ``coupling`` of the slip tractions) preconditioned with the kept factor of an earlier symmetric
-        K_mod; refactorised when the Krylov method is slow or when the constrained DOFs (``key``) changed: a new
-        contact or stick node changes K_mod by a rank of a few dozen, which CG on the old factor resolves only in as
-        many iterations. The factor of the very same matrix is applied directly: CG on a stiff penalty system cannot
-        reach a tight tolerance in floating point."""
-        kept = self._factor is not None and key == self._factor_key
-        if kept and coupling is None and self._same_matrix(K_mod):
-            self.stats.solves += 1
-            return self._factor.solve(rhs)
-        if kept:
-            x, converged = self._krylov(K_mod, rhs, tolerance, coupling)
-            if converged or self._same_matrix(K_mod):
-                return x
-        self._refactor(K_mod, key)
-        if coupling is None:
-            self.stats.solves += 1
-            return self._factor.solve(rhs)
-        return self._krylov(K_mod, rhs, tolerance, coupling)[0]
-
-    def _krylov(self, K_mod: sp.csr_matrix, rhs: np.ndarray, tolerance: float, coupling) -> tuple[np.ndarray, bool]:
-        """Preconditioned CG (symmetric) or GMRES (with ``coupling``) on the kept factor to a residual of
-        ``tolerance`` (N), at most ``cg_max_iterations`` iterations. Returns (x, converged)."""
-        count = [0]
-
-        def apply(v):
-            count[0] += 1
-            return self._factor.solve(v)
-
-        M = spla.LinearOperator(K_mod.shape, matvec=apply, dtype=float)
-        x0 = apply(rhs)
-        if coupling is None:
-            x, info = spla.cg(K_mod, rhs, x0=x0, rtol=1e-12, atol=tolerance, maxiter=self.cg_max_iterations, M=M)
-        else:
-            A = spla.LinearOperator(K_mod.shape, matvec=lambda v: K_mod @ v - coupling(v), dtype=float)
-            x, info = spla.gmres(A, rhs, x0=x0, rtol=1e-12, atol=tolerance, restart=self.cg_max_iterations,
-                                 maxiter=1, M=M)  # fmt: skip
-        self.stats.solves += count[0]
-        return x, info == 0
-
-    def _refactor(self, K_mod: sp.csr_matrix, key: bytes) -> None:
-        """Replace the kept factor by one of ``K_mod`` (its constrained DOFs and stick rows ``key``)."""
-        t0 = time.perf_counter()
-        if self._factor is not None:
-            self._factor.free()
-        self._factor = factorise(K_mod)
-        self._factor_key = key
-        self._factor_data = K_mod.data.copy()
-        self.stats.factorisations += 1
-        self.stats.factor_time += time.perf_counter() - t0
-
-    def _same_matrix(self, K_mod: sp.csr_matrix) -> bool:
-        """Whether ``K_mod`` is the factorised matrix (same key, so the same pattern: compare the values)."""
-        return K_mod.data.shape == self._factor_data.shape and np.array_equal(K_mod.data, self._factor_data)
 
     def _newton(self, start: SolidState, target, u0, contact, stick, direction, mu) -> SolidState:
         """Equilibrium at ``target`` = (δ, c, ξ), correcting the contact and stick sets until neither is violated."""
