@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from scipy.integrate import cumulative_trapezoid
@@ -36,6 +36,7 @@ from scipy.integrate import cumulative_trapezoid
 from contact import ImpactResult, Material, TabulatedLaw
 from fem.coupling import force_law
 from fem.solid import MAX_FRICTION, SolidIndentation, SolidRecorder, solid_solver
+from fem.solid_solver import SolidStats
 
 __all__ = ["ImpactPath", "SolidCouplingSettings", "SolidCoupledImpact", "couple_solid", "impact_path",
            "place_steps"]  # fmt: skip
@@ -123,7 +124,7 @@ class SolidCoupledImpact:
     law it ran on), ``solid`` (the 3-D plate along the path that law came from), ``path`` (that path),
     ``times`` (s: the solid's steps placed in ``impact``, :func:`place_steps`), ``max_overlaps`` (m) and
     ``tangential_restitutions`` of each impact run (the first is the starting impact's), ``change`` (the last
-    change), ``converged``."""
+    change), ``converged``, ``work`` the 3-D solver's work over all cycles."""
 
     impact: ImpactResult
     law: TabulatedLaw
@@ -134,6 +135,7 @@ class SolidCoupledImpact:
     tangential_restitutions: tuple[float, ...]
     change: float
     converged: bool
+    work: SolidStats = field(default_factory=SolidStats)
 
     @property
     def iterations(self) -> int:
@@ -226,11 +228,13 @@ def couple_solid(
     impact = first
     overlaps, restitutions = [first.max_overlap], [first.tangential_restitution]
     change, converged = math.inf, False
+    work = SolidStats()
     for iteration in range(settings.max_iterations):
         if progress is not None:
             progress(iteration)
         path = impact_path(impact, settings.load_steps, settings.unload_steps)
         solid, law = solid_cycle(path, radius, plate, friction, ball, hardening, settings)
+        work.add(solid.stats)
         impact = impact_on_law(law)
         overlaps.append(impact.max_overlap)
         restitutions.append(impact.tangential_restitution)
@@ -241,4 +245,4 @@ def couple_solid(
             break
     return SolidCoupledImpact(impact=impact, law=law, solid=solid, path=path, times=place_steps(impact, path),
                               max_overlaps=tuple(overlaps), tangential_restitutions=tuple(restitutions),
-                              change=change, converged=converged)  # fmt: skip
+                              change=change, converged=converged, work=work)  # fmt: skip

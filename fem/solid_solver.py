@@ -82,6 +82,13 @@ class SolidStats(SolveCounters):
     increments: int = 0
     history: list = field(default_factory=list)
 
+    def add(self, other: SolidStats) -> None:
+        """Add the counters of ``other`` (another run's work) to these."""
+        for name in ("factorisations", "solves", "factor_time", "iterations", "set_updates", "cuts",
+                     "elastic_retries", "increments"):  # fmt: skip
+            setattr(self, name, getattr(self, name) + getattr(other, name))
+        self.history.extend(other.history)
+
 
 class _NotConverged(Exception):
     pass

@@ -147,7 +147,7 @@ class RunResult:
 
 def solid_summary(coupled: SolidCoupledImpact) -> dict:
     """The 3-D plate's block of summary.json (SI units)."""
-    solid, stats = coupled.solid, coupled.solid.stats
+    solid, stats = coupled.solid, coupled.work
     yielded = np.flatnonzero(solid.max_equivalent_plastic_strain > 0.0)
     return {
         "iterations": coupled.iterations,
