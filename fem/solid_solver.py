@@ -31,7 +31,7 @@ factorisation over much of an increment.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 
 import numpy as np
 import scipy.sparse as sp
@@ -84,9 +84,9 @@ class SolidStats(SolveCounters):
 
     def add(self, other: SolidStats) -> None:
         """Add the counters of ``other`` (another run's work) to these."""
-        for name in ("factorisations", "solves", "factor_time", "iterations", "set_updates", "cuts",
-                     "elastic_retries", "increments"):  # fmt: skip
-            setattr(self, name, getattr(self, name) + getattr(other, name))
+        for counter in fields(self):
+            if counter.name != "history":
+                setattr(self, counter.name, getattr(self, counter.name) + getattr(other, counter.name))
         self.history.extend(other.history)
 
 
