@@ -179,11 +179,13 @@ class SolidSolver:
         return radial_return(self.material, strain(self.disc, state.u), ref.plastic_strain, ref.alpha)
 
     # -- one increment
-    def _slip_traction(self, normal: np.ndarray, direction: np.ndarray, slip_vertices: np.ndarray, mu: float):
-        """Consistent nodal loads (surface nodes, 2) of τ = μ p ŝ over the slipping vertices."""
-        p = self.vertex_field(normal)
-        tau = (mu * np.maximum(p, 0.0) * slip_vertices)[:, None] * direction
-        return self.disc.surface_loads @ tau
+    def _shear_loads(self, tau: np.ndarray) -> np.ndarray:
+        """Consistent nodal loads (N, all DOFs) of a shear traction field ``tau`` (surface vertices, 2) in Pa."""
+        loads = self.disc.surface_loads @ tau
+        out = np.zeros(self.disc.ndofs)
+        out[self.ut[:, 0]] = loads[:, 0]
+        out[self.ut[:, 1]] = loads[:, 1]
+        return out
 
     def _equilibrate(
         self, start: SolidState, target: tuple[float, float, float], u, contact, stick, direction, mu, elastic=False
@@ -211,11 +213,12 @@ class SolidSolver:
         for it in range(self.max_iterations * (4 if elastic else 1)):
             upd = radial_return(self.material, strain(d, u), start.plastic_strain, start.alpha)
             f = internal_force(d, upd.stress)
+            slipping = slip_vertices is not None and slip_vertices.any()
             f_ext = np.zeros(d.ndofs)
-            if slip_vertices is not None and slip_vertices.any():
-                loads = self._slip_traction(-f[self.uz], direction, slip_vertices, mu)
-                f_ext[self.ut[:, 0]] = loads[:, 0]
-                f_ext[self.ut[:, 1]] = loads[:, 1]
+            if slipping:
+                # τ = μ p ŝ over the slipping vertices
+                pressure = self.vertex_field(-f[self.uz])
+                f_ext = self._shear_loads((mu * np.maximum(pressure, 0.0) * slip_vertices)[:, None] * direction)
             residual_vector = f_ext - f
             # the stick tractions (the multipliers of the last solve) balance the residual on the stick zone
             balanced = residual_vector if rows is None else residual_vector - rows.T @ multipliers
@@ -246,8 +249,8 @@ class SolidSolver:
             tolerance = max(1e-3 * target_force, min(1e-2 * size, 0.1 * np.sqrt(target_force * size)))
             key = constrained.tobytes() + (b"elastic" if elastic else b"")
             coupling = None
-            if slip_vertices is not None and slip_vertices.any():
-                coupling = self._slip_linearisation(K, -f[self.uz], direction, slip_vertices, mu, keep)
+            if slipping:
+                coupling = self._slip_linearisation(K, pressure, direction, slip_vertices, mu, keep)
             try:
                 if rows is None:
                     du = self.linear.solve(K_mod, rhs, tolerance, key, coupling)
@@ -265,7 +268,7 @@ class SolidSolver:
                 u = u + du
         raise _NotConverged(residual)
 
-    def _slip_linearisation(self, K, normal, direction, slip_vertices, mu: float, keep: np.ndarray):
+    def _slip_linearisation(self, K, pressure, direction, slip_vertices, mu: float, keep: np.ndarray):
         r"""The change of the slip tractions' nodal loads with the displacement, as a function of a displacement
         change v (m) to loads (N) on the free DOFs ``keep``: the slip traction τ = μ p ŝ follows the pressure, whose
         nodal forces are the normal rows of K v,
@@ -273,18 +276,13 @@ class SolidSolver:
         .. math:: \delta f_t = L\,\mu\,\hat s\;M^{-1} H\,(-K v)_z
 
         (L the traction's consistent loads, M⁻¹H the hat moments to the linear pressure field; ŝ held at the set's
-        direction). It makes Newton's tangent the consistent, nonsymmetric one, K − ∂f_t/∂u: the lagged slip
-        traction made Newton a fixed-point iteration of 14–19 iterations per frictional increment."""
-        pressed = mu * slip_vertices * (self.vertex_field(normal) > 0.0)
-        ut = self.ut
+        direction; ``pressure`` the iterate's pressure field (Pa), whose positive part the traction follows). It
+        makes Newton's tangent the consistent, nonsymmetric one, K − ∂f_t/∂u: the lagged slip traction made Newton a
+        fixed-point iteration of 14–19 iterations per frictional increment."""
+        pressed = mu * slip_vertices * (pressure > 0.0)
 
         def coupling(v: np.ndarray) -> np.ndarray:
-            tau = (pressed * self.vertex_field(-(K @ v)[self.uz]))[:, None] * direction
-            loads = self.disc.surface_loads @ tau
-            out = np.zeros(v.size)
-            out[ut[:, 0]] = loads[:, 0]
-            out[ut[:, 1]] = loads[:, 1]
-            return out * keep
+            return self._shear_loads((pressed * self.vertex_field(-(K @ v)[self.uz]))[:, None] * direction) * keep
 
         return coupling
 
