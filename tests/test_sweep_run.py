@@ -15,17 +15,19 @@ from __future__ import annotations
 
 import csv
 import json
+import multiprocessing
 import os
 import signal
 import subprocess
 import sys
 import time
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 import pytest
 
 from wear.app import cli
-from wear.app.sweep.runner import run_sweep
+from wear.app.sweep.runner import _worker_init, run_sweep
 from wear.app.sweep.spec import load_sweep
 from wear.case import Case, default_case
 
@@ -41,6 +43,14 @@ impact.time_step = 2e-11
 "impact.angle" = [0, 5, 10, 15, 20, 25, 30, 35, 40, 45, 50, 55, 60, 65, 70, 75, 80, 85, 88, 89]
 "impact.friction" = [0.1, 0.3]
 """
+
+
+def _repeat_summary(case: Case) -> dict:
+    """The repeat stage's summary of ``case``, run directly (no sweep)."""
+    from wear import repeat
+    from wear.app.sweep.stages import stage_case
+
+    return repeat(stage_case(case, "repeat")).summary()
 
 
 def _sweep_file(tmp_path: Path, text: str, name: str = "sweep.toml") -> Path:
@@ -281,7 +291,7 @@ def test_sigint_stops_with_status_130_keeping_finished_cases(reference, tmp_path
 def test_erode_and_repeat_are_sweep_stages(tmp_path):
     """The erosion and the repeated impacts run as sweep stages: each case's results are the runner's own summary
     numbers (wear.erode_case, wear.repeat called directly on the same case)."""
-    from wear import erode_case, repeat
+    from wear import erode_case
     from wear.app.sweep.stages import stage_case
 
     erosion = load_sweep(_sweep_file(tmp_path, """
@@ -313,6 +323,10 @@ def test_erode_and_repeat_are_sweep_stages(tmp_path):
     out = run_sweep(many, tmp_path / "repeat", workers=1, quiet=True)
     assert (out.computed, out.failed) == (1, 0), out.failures
     result = _records(tmp_path / "repeat")[many.cases[0].case_id]["results"]
-    direct = repeat(stage_case(many.cases[0].case, "repeat")).summary()
+    # the reference runs as the sweep's workers do (a spawned process, one thread: THREAD_VARIABLES), since a
+    # threaded reduction's last digits depend on the thread count
+    with ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("spawn"), initializer=_worker_init,
+                             initargs=(os.getpid(), 1)) as pool:  # fmt: skip
+        direct = pool.submit(_repeat_summary, many.cases[0].case).result()
     assert result["impacts"] == 2
     assert result["after_last_impact.total_wear_volume_m3"] == direct["after_last_impact"]["total_wear_volume_m3"]
