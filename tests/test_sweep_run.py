@@ -15,19 +15,17 @@ from __future__ import annotations
 
 import csv
 import json
-import multiprocessing
 import os
 import signal
 import subprocess
 import sys
 import time
-from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 import pytest
 
 from wear.app import cli
-from wear.app.sweep.runner import _worker_init, run_sweep
+from wear.app.sweep.runner import run_sweep, worker_pool
 from wear.app.sweep.spec import load_sweep
 from wear.case import Case, default_case
 
@@ -325,8 +323,7 @@ def test_erode_and_repeat_are_sweep_stages(tmp_path):
     result = _records(tmp_path / "repeat")[many.cases[0].case_id]["results"]
     # the reference runs as the sweep's workers do (a spawned process, one thread: THREAD_VARIABLES), since a
     # threaded reduction's last digits depend on the thread count
-    with ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("spawn"), initializer=_worker_init,
-                             initargs=(os.getpid(), 1)) as pool:  # fmt: skip
+    with worker_pool(1) as pool:
         direct = pool.submit(_repeat_summary, many.cases[0].case).result()
     assert result["impacts"] == 2
     assert result["after_last_impact.total_wear_volume_m3"] == direct["after_last_impact"]["total_wear_volume_m3"]

@@ -47,7 +47,7 @@ from wear.app.sweep.spec import SweepCase, SweepSpec, flatten
 from wear.app.sweep.stages import STAGES, execute_case
 from wear.case import TABLES
 
-__all__ = ["SweepOutcome", "SweepAborted", "run_sweep", "results_table", "MAX_ATTEMPTS"]
+__all__ = ["SweepOutcome", "SweepAborted", "run_sweep", "results_table", "worker_pool", "MAX_ATTEMPTS"]
 
 #: A case is recorded as failed after the worker running it died this many times.
 #: What a sweep writes in its folder (the rest of the folder is left alone).
@@ -113,6 +113,18 @@ def _threads_per_worker(workers: int) -> int:
     return 1
 
 
+def worker_pool(workers: int) -> cf.ProcessPoolExecutor:
+    """A pool of ``workers`` processes set up as a local sweep's: spawned, each with the thread count of
+    :func:`_threads_per_worker` (:data:`THREAD_VARIABLES`), each ending when this process does. A function run on it
+    gives the very numbers a sweep's case would (a threaded reduction's last digits depend on its thread count)."""
+    return cf.ProcessPoolExecutor(
+        max_workers=workers,
+        mp_context=multiprocessing.get_context("spawn"),
+        initializer=_worker_init,
+        initargs=(os.getpid(), _threads_per_worker(workers)),
+    )
+
+
 Done = Callable[[SweepCase, dict], None]
 
 
@@ -127,17 +139,11 @@ def _run_local(pending: list[SweepCase], stage: str, workers: int, done: Done) -
     during :data:`MAX_ATTEMPTS` breakdowns is recorded as failed. After ``MAX_ATTEMPTS + 2`` breakdowns in a row
     with no case finishing in between, the workers evidently cannot run at all: :class:`SweepAborted`.
     """
-    ctx = multiprocessing.get_context("spawn")
     queue = list(reversed(pending))
     attempts: dict[str, int] = {}
     breaks_in_a_row = 0
     while queue:
-        pool = cf.ProcessPoolExecutor(
-            max_workers=workers,
-            mp_context=ctx,
-            initializer=_worker_init,
-            initargs=(os.getpid(), _threads_per_worker(workers)),
-        )
+        pool = worker_pool(workers)
         running: dict[cf.Future, SweepCase] = {}
         broken = False
         try:
