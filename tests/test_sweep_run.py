@@ -57,6 +57,12 @@ def _sweep_file(tmp_path: Path, text: str, name: str = "sweep.toml") -> Path:
     return path
 
 
+def _sigint_default() -> None:
+    # a shell started without job control (a CI script, `cmd &`) runs its background jobs with SIGINT ignored, and the
+    # child inherits that; the sweep is started as a terminal starts a foreground job, where Ctrl-C interrupts
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def _cli_process(sweep: Path, out: Path, *extra: str) -> subprocess.Popen:
     return subprocess.Popen(
         [sys.executable, "-m", "wear.app.cli", "sweep", str(sweep), "--out", str(out), "--quiet", *extra],
@@ -64,6 +70,7 @@ def _cli_process(sweep: Path, out: Path, *extra: str) -> subprocess.Popen:
         stderr=subprocess.PIPE,
         text=True,
         start_new_session=True,  # our own process group, so a leftover can be cleaned up by group
+        preexec_fn=_sigint_default,
     )
 
 
