@@ -28,6 +28,7 @@ from numba import njit, prange
 from contact.laws import (
     ERR_MAX_STEPS,
     HERTZ,
+    MEMORY,
     OK,
     P_DAMP,
     P_GSTAR,
@@ -35,6 +36,9 @@ from contact.laws import (
     P_INERTIA,
     P_MASS,
     P_RADIUS,
+    SPRING,
+    SPRINGS,
+    memory_tangential_law,
     normal_law,
     tangential_law,
 )
@@ -115,10 +119,13 @@ def _hertz_verlet_step(
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def _step(scheme, model, factor, friction, dt, delta, vn, x, vt, om, xi, fn, ft, dmax, prm, tab):
-    """Advance one impact by one step; returns the new state and (a, p, sliding, error)."""
+def _step(
+    scheme, model, tangential, factor, friction, dt, delta, vn, x, vt, om, xi, fn, ft, dmax, prm, tab, springs, pitch
+):
+    """Advance one impact by one step; returns the new state and (a, p, sliding, error). With the ``MEMORY``
+    tangential law ξ is the ball surface's slide ∫(v_t − Rω) dt and ``springs`` (spaced ``pitch`` m) its state."""
     mass, inertia, radius = prm[P_MASS], prm[P_INERTIA], prm[P_RADIUS]
-    if model == HERTZ and scheme == VERLET:
+    if model == HERTZ and scheme == VERLET and tangential == SPRING:
         return _hertz_verlet_step(
             factor,
             friction,
@@ -162,7 +169,12 @@ def _step(scheme, model, factor, friction, dt, delta, vn, x, vt, om, xi, fn, ft,
     fn_new, a, p, err = normal_law(
         model, delta_new, rate, dmax_new, prm, tab[0], tab[1], tab[2], tab[3], tab[4], tab[5]
     )
-    ft_new, xi_new, sliding = tangential_law(xi_trial, a, fn_new, friction, factor, prm[P_GSTAR])
+    if tangential == MEMORY:
+        ft_new, sliding, e = memory_tangential_law(springs, pitch, xi_trial - xi, a, fn_new, friction, prm[P_GSTAR])
+        xi_new = xi_trial
+        err = err if err != OK else e
+    else:
+        ft_new, xi_new, sliding = tangential_law(xi_trial, a, fn_new, friction, factor, prm[P_GSTAR])
     if scheme == VERLET:
         vn_new = vn_half - 0.5 * dt * fn_new / mass
         vt_new = vt_half + 0.5 * dt * ft_new / mass
@@ -173,9 +185,10 @@ def _step(scheme, model, factor, friction, dt, delta, vn, x, vt, om, xi, fn, ft,
 
 
 @njit(cache=True, error_model="numpy")
-def _impact(scheme, model, factor, friction, dt, vn0, vt0, max_steps, prm, tab, out, hist, every):
+def _impact(scheme, model, tangential, factor, friction, dt, vn0, vt0, max_steps, prm, tab, pitch, out, hist, every):
     """Integrate one impact; fill ``out`` (see OUT_FIELDS) and, if ``every`` > 0, rows of ``hist``."""
     radius = prm[P_RADIUS]
+    springs = np.zeros(SPRINGS if tangential == MEMORY else 1)
     delta, vn, x, vt, om, xi, fn, ft, dmax = 0.0, vn0, 0.0, vt0, 0.0, 0.0, 0.0, 0.0, 0.0
     t, t_slide = 0.0, 0.0
     fmax, amax, pmax, ftmax, wn, wt = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
@@ -192,8 +205,9 @@ def _impact(scheme, model, factor, friction, dt, vn0, vt0, max_steps, prm, tab, 
         vs = vt - radius * om
         pn, pt = fn * vn, ft * vs
         delta, vn, x, vt, om, xi, fn, ft, dmax, a, p, sliding, e = _step(
-            scheme, model, factor, friction, dt, delta, vn, x, vt, om, xi, fn, ft, dmax, prm, tab
-        )
+            scheme, model, tangential, factor, friction, dt, delta, vn, x, vt, om, xi, fn, ft, dmax, prm, tab,
+            springs, pitch,
+        )  # fmt: skip
         steps += 1
         t = steps * dt
         vs = vt - radius * om
@@ -300,6 +314,7 @@ def _block(scheme, model, factor, friction, dt, vn0, vt0, max_steps, prm, tab, o
         st[_MU, k], st[_DT, k], st[_LIMIT, k] = friction[i], dt[i], max_steps[i]
     fast = model == HERTZ and scheme == VERLET
     stiff, damp, gstar = prm[P_HERTZ_K], prm[P_DAMP], prm[P_GSTAR]
+    no_springs = np.zeros(1)
     n_active = LANES
     while n_active > 0:
         if fast:
@@ -330,6 +345,7 @@ def _block(scheme, model, factor, friction, dt, vn0, vt0, max_steps, prm, tab, o
                 new = _step(
                     scheme,
                     model,
+                    SPRING,
                     factor,
                     st[_MU, k],
                     st[_DT, k],
@@ -344,6 +360,8 @@ def _block(scheme, model, factor, friction, dt, vn0, vt0, max_steps, prm, tab, o
                     st[_DMAX, k],
                     prm,
                     tab,
+                    no_springs,
+                    0.0,
                 )
                 _lane_update(st, k, radius, new)
         n_active = 0
@@ -367,10 +385,17 @@ def _block(scheme, model, factor, friction, dt, vn0, vt0, max_steps, prm, tab, o
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def run_batch(scheme, model, factor, friction, dt, vn0, vt0, max_steps, prm, tab):
-    """Integrate every impact i (arrays of length n) in blocks of LANES; returns the (n, len(OUT_FIELDS)) array."""
+def run_batch(scheme, model, tangential, factor, friction, dt, vn0, vt0, max_steps, prm, tab, pitch):
+    """Integrate every impact i (arrays of length n) in blocks of LANES (one by one with the ``MEMORY`` tangential
+    law, whose springs ``pitch`` m apart are no register state); returns the (n, len(OUT_FIELDS)) array."""
     n = vn0.shape[0]
     out = np.empty((n, _N_OUT))
+    if tangential == MEMORY:
+        no_history = np.empty((len(HISTORY_FIELDS), 1))
+        for i in prange(n):
+            _impact(scheme, model, tangential, factor, friction[i], dt[i], vn0[i], vt0[i], max_steps[i], prm, tab,
+                    pitch[i], out[i], no_history, 0)  # fmt: skip
+        return out
     n_blocks = (n + LANES - 1) // LANES
     for b in prange(n_blocks):
         lo, hi = b * LANES, min(n, b * LANES + LANES)
@@ -391,9 +416,10 @@ def run_batch(scheme, model, factor, friction, dt, vn0, vt0, max_steps, prm, tab
 
 
 @njit(cache=True, error_model="numpy")
-def run_history(scheme, model, factor, friction, dt, vn0, vt0, max_steps, prm, tab, capacity, every):
+def run_history(scheme, model, tangential, factor, friction, dt, vn0, vt0, max_steps, prm, tab, pitch, capacity, every):
     """Integrate one impact recording every ``every``-th step (and the last) into a (13, rows) array."""
     out = np.empty(_N_OUT)
     hist = np.empty((len(HISTORY_FIELDS), capacity))
-    rows = _impact(scheme, model, factor, friction, dt, vn0, vt0, max_steps, prm, tab, out, hist, every)
+    rows = _impact(scheme, model, tangential, factor, friction, dt, vn0, vt0, max_steps, prm, tab, pitch, out, hist,
+                   every)  # fmt: skip
     return out, hist[:, :rows]

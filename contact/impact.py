@@ -22,7 +22,9 @@ __all__ = ["simulate_impact", "simulate_impacts", "ForceLawRangeError", "NORMAL_
            "check_time_step", "MAX_STEPS", "MAX_HISTORY_STEPS"]  # fmt: skip
 
 NORMAL_MODELS = {"hertz": laws.HERTZ, "thornton": laws.THORNTON, "tabulated": laws.TABULATED}
-TANGENTIAL_MODELS = {"hdd": 2.0 / 3.0, "mindlin": 1.0}
+#: Tangential laws: (kernel code, spring factor f).
+TANGENTIAL_MODELS = {"hdd": (laws.SPRING, 2.0 / 3.0), "mindlin": (laws.SPRING, 1.0),
+                     "mindlin_deresiewicz": (laws.MEMORY, 1.0)}  # fmt: skip
 SCHEMES = {"verlet": engine.VERLET, "paper": engine.PAPER}
 
 #: Default number of steps per Hertz contact time t_c (time step t_c/2000).
@@ -141,7 +143,32 @@ _ERRORS = {
     laws.ERR_UNLOADING_TABLE: "unloading started beyond the last unloading curve of force_law "
     "(unloading_max_overlap[-1]={unload:.4g} m)",
     laws.ERR_MAX_STEPS: "the contact did not end within {steps} steps",
+    laws.ERR_SPRINGS: "the contact radius outgrew the row of Mindlin-Deresiewicz springs (3 times the Hertz or the "
+    "plastic energy bound, or 1.5 times force_law's largest)",
 }
+
+
+def _spring_pitch(
+    radius: float,
+    e_star: float,
+    mass: float,
+    normal_speed: np.ndarray,
+    force_law: TabulatedLaw | None,
+    limiting_pressure: float | None,
+) -> np.ndarray:
+    """Spacing (m) of the Mindlin-Deresiewicz springs per impact: :data:`contact.laws.SPRINGS` of them over three
+    times the larger of the Hertz contact radius at the impact's normal speed (:func:`contact.theory.hertz_impact`)
+    and, with a ``limiting_pressure`` p_y (Pa), the radius √(Rδ) of a contact that takes the whole kinetic energy at
+    p_y, ½mv² = πp_yRδ²/2; or over 1.5 times the largest contact radius of ``force_law``."""
+    if force_law is not None:
+        largest = max(float(np.max(force_law.loading_contact_radius)),
+                      float(np.max(force_law.unloading_contact_radius)))  # fmt: skip
+        return np.full(normal_speed.shape, 1.5 * largest / laws.SPRINGS)
+    largest = np.array([theory.hertz_impact(mass, radius, e_star, v).max_contact_radius for v in normal_speed])
+    if limiting_pressure is not None:
+        plastic_overlap = normal_speed * math.sqrt(mass / (math.pi * limiting_pressure * radius))
+        largest = np.maximum(largest, np.sqrt(radius * plastic_overlap))
+    return 3.0 * largest / laws.SPRINGS
 
 
 def simulate_impacts(
@@ -182,7 +209,8 @@ def simulate_impacts(
         ``"hertz"``, ``"thornton"`` (with ``limiting_pressure`` p_y in Pa, default C(ν)·Y of the body that yields
         first) or ``"tabulated"`` (with ``force_law``, a :class:`contact.TabulatedLaw`).
     tangential_model
-        ``"hdd"`` (F_t = −(2/3)·8G*a·ξ) or ``"mindlin"`` (without the 2/3).
+        ``"hdd"`` (F_t = −(2/3)·8G*a·ξ), ``"mindlin"`` (without the 2/3) or ``"mindlin_deresiewicz"`` (partial
+        slip with memory of the loading history, :func:`contact.laws.memory_tangential_law`).
     scheme
         ``"verlet"`` (second order, default) or ``"paper"`` (the paper's Eqs. 12–13, first order).
     time_step
@@ -246,14 +274,16 @@ def simulate_impacts(
             speed.shape, check_time_step(time_step, contact_time, histories=histories, history_every=history_every)
         )
     max_steps = np.ceil(MAX_CONTACT_TIMES * contact_time / dt).astype(np.int64) + 1000
-    code, factor, scheme_code = NORMAL_MODELS[model], TANGENTIAL_MODELS[tangential_model], SCHEMES[scheme]
-    out = engine.run_batch(scheme_code, code, factor, friction, dt, vn0, vt0, max_steps, prm, tab)
+    code, scheme_code = NORMAL_MODELS[model], SCHEMES[scheme]
+    tangential, factor = TANGENTIAL_MODELS[tangential_model]
+    pitch = _spring_pitch(radius, e_star, mass, vn0, force_law if model == "tabulated" else None, p_y)
+    out = engine.run_batch(scheme_code, code, tangential, factor, friction, dt, vn0, vt0, max_steps, prm, tab, pitch)
     errors = out[:, -1].astype(int)
     if np.any(errors):
         i = int(np.flatnonzero(errors)[0])
         why = _ERRORS[errors[i]].format(load=tab[0][0, -1], unload=tab[1][-1], steps=int(max_steps[i]))
-        name = "force_law" if errors[i] != laws.ERR_MAX_STEPS else "time_step"
-        error = ValueError if errors[i] == laws.ERR_MAX_STEPS else ForceLawRangeError
+        name = {laws.ERR_MAX_STEPS: "time_step", laws.ERR_SPRINGS: "tangential_model"}.get(errors[i], "force_law")
+        error = ForceLawRangeError if name == "force_law" else ValueError
         raise error(f"{name}: impact {i} (speed={speed[i]:g} m/s, angle={angle[i]:g} deg): {why}")
     hist = None
     if histories:
@@ -263,6 +293,7 @@ def simulate_impacts(
             _, h = engine.run_history(
                 scheme_code,
                 code,
+                tangential,
                 factor,
                 friction[i],
                 dt[i],
@@ -271,6 +302,7 @@ def simulate_impacts(
                 max_steps[i],
                 prm,
                 tab,
+                pitch[i],
                 capacity,
                 history_every,
             )

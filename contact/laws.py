@@ -15,8 +15,9 @@ Normal laws (errata Eqs. 4, 6; Thornton 1997):
   :math:`a_p^2 = (2F^* + F_y)/(2\pi p_y)`, residual overlap :math:`\delta_p = \delta^* - a_p^2/R_p`.
 * ``tabulated``: a :class:`contact.TabulatedLaw` (see :func:`tabulated_arrays`).
 
-Tangential law (errata Eqs. 3, 8): :math:`F_t = -f k_t \xi`, :math:`k_t = 8G^*a`, f = 2/3 (``hdd``) or 1
+Tangential laws (errata Eqs. 3, 8): :math:`F_t = -f k_t \xi`, :math:`k_t = 8G^*a`, f = 2/3 (``hdd``) or 1
 (``mindlin``); Coulomb truncation :math:`|F_t| \le \mu F_n` with :math:`\xi` cut back to :math:`\mu F_n/(f k_t)`.
+``mindlin_deresiewicz``: partial slip with memory (:func:`memory_tangential_law`).
 """
 
 from __future__ import annotations
@@ -40,6 +41,10 @@ __all__ = [
     "tabulated_arrays",
     "normal_law",
     "tangential_law",
+    "memory_tangential_law",
+    "SPRING",
+    "MEMORY",
+    "SPRINGS",
 ]
 
 HERTZ, THORNTON, TABULATED = 0, 1, 2
@@ -49,7 +54,12 @@ P_RADIUS, P_HERTZ_K, P_ESTAR, P_DAMP, P_PY, P_DY, P_FY, P_GSTAR, P_MASS, P_INERT
 N_PARAMS = 10
 
 # Error codes a kernel can report per impact.
-OK, ERR_LOADING_TABLE, ERR_UNLOADING_TABLE, ERR_MAX_STEPS = 0, 1, 2, 3
+OK, ERR_LOADING_TABLE, ERR_UNLOADING_TABLE, ERR_MAX_STEPS, ERR_SPRINGS = 0, 1, 2, 3, 4
+
+# Tangential laws: one spring (H-DD, Mindlin) or Mindlin-Deresiewicz with memory (a row of 1-D springs).
+SPRING, MEMORY = 0, 1
+#: Springs of the Mindlin-Deresiewicz law per impact, over [0, 3 a_Hertz] (about 130 across a Hertz contact).
+SPRINGS = 400
 
 
 # ---------------------------------------------------------------------------------------------------------
@@ -250,6 +260,60 @@ def normal_law(model, delta, rate, dmax, prm, load, umax, ures, s_tab, f_tab, a_
     if a > 0.0:
         return force, a, 1.5 * force / (math.pi * a * a), err
     return force, a, 0.0, err
+
+
+@njit(cache=True, error_model="numpy")
+def memory_tangential_law(springs, pitch, slide_increment, contact_radius, normal_force, friction, gstar):
+    r"""Mindlin–Deresiewicz tangential force with memory, for any history of the normal force and the slide.
+
+    The method of dimensionality reduction (Popov & Heß 2015, ch. 5: exact, in the Cattaneo–Mindlin approximation,
+    for any history of the normal and the tangential loading): the contact is a row of independent 1-D springs at
+    x_i = (i + ½)·``pitch`` (m) on each side of the centre, each with the tangential stiffness 4G*·Δx and the normal
+    line load of the Hertz shape carrying the normal force F,
+
+    .. math:: q(x) = \frac{3F}{4a}\Bigl(1 - \frac{x^2}{a^2}\Bigr),\qquad
+              |u_i| \le \frac{\mu\, q(x_i)}{4G^*} = \frac{3\mu F}{16 G^* a}\Bigl(1 - \frac{x_i^2}{a^2}\Bigr).
+
+    (the line load's sum over the springs is made F exactly, so gross sliding is at μF). Each spring in contact
+    (x_i < a) takes the ball surface's ``slide_increment`` dξ (m) and slips at its Coulomb
+    limit; a spring outside the contact is unloaded (it enters the contact at zero). The force on the ball is
+    F_t = −8G*·Δx·Σ u_i (N): at constant F this is Cattaneo–Mindlin's F_t = −μF[1 − (1 − ξ/ξ_max)^{3/2}],
+    ξ_max = 3μF/(16G*a) (Johnson 1985, Eq. 7.42), with the unloading and reloading of Mindlin & Deresiewicz
+    (1953; Johnson §7.3).
+    ``springs`` (m) is the state, updated in place. Returns (F_t N, sliding flag: every spring in contact slips,
+    error code: ERR_SPRINGS if a outgrows the row).
+    """
+    n = springs.shape[0]
+    if contact_radius > n * pitch:
+        return 0.0, False, ERR_SPRINGS
+    if contact_radius <= 0.0 or normal_force <= 0.0:
+        springs[:] = 0.0
+        return 0.0, False, OK
+    # the line load's discrete shape, normalised so that the springs' limits add up to exactly μF
+    shape = 0.0
+    for i in range(n):
+        x = (i + 0.5) * pitch
+        if x < contact_radius:
+            shape += 1.0 - (x / contact_radius) ** 2
+    peak = friction * normal_force / (8.0 * gstar * pitch * shape) if shape > 0.0 else 0.0
+    total = 0.0
+    sliding = True
+    for i in range(n):
+        x = (i + 0.5) * pitch
+        if x >= contact_radius:
+            springs[i] = 0.0
+            continue
+        u = springs[i] + slide_increment
+        limit = peak * (1.0 - (x / contact_radius) ** 2)
+        if u > limit:
+            u = limit
+        elif u < -limit:
+            u = -limit
+        else:
+            sliding = False
+        springs[i] = u
+        total += u
+    return -8.0 * gstar * pitch * total, sliding, OK
 
 
 @njit(cache=True, inline="always", error_model="numpy")

@@ -23,7 +23,8 @@ class History:
     Read-only numpy arrays:
 
     ``t`` (s); ``overlap`` δ (m); ``normal_force`` F_n (N); ``tangential_force`` F_t (N, on the ball along the
-    impact direction); ``tangential_displacement`` ξ (m, the H-DD spring); ``contact_radius`` a (m);
+    impact direction); ``tangential_displacement`` ξ (m, the H-DD spring's; with ``mindlin_deresiewicz`` the ball
+    surface's slide ∫(v_t − Rω) dt); ``contact_radius`` a (m);
     ``peak_pressure`` (Pa: 3F_n/(2πa²) for ``tabulated``; for ``thornton`` p_y while loading plastically and
     the Hertz p₀ of the unloading bounded by p_y; for ``hertz`` the Hertz p₀ of the spring's force, the
     dashpot's left out: :func:`contact.laws.normal_law`);

@@ -17,6 +17,7 @@ from dataclasses import dataclass, field, fields, replace
 from typing import Any, ClassVar
 
 from contact import Material, effective_modulus
+from contact.impact import TANGENTIAL_MODELS as ENGINE_TANGENTIAL_MODELS
 from contact.impact import check_time_step
 from contact.theory import hertz_impact, sphere_mass
 from wear.case.schema import Table, key
@@ -32,7 +33,8 @@ COUPLINGS = ("two-way", "one-way", "none")
 #: The FE plate models: the axisymmetric (r, z) frictionless plate, or the 3-D half plate with Coulomb friction.
 FEM_MODELS = ("axisymmetric", "3d")
 NORMAL_MODELS = ("hertz", "thornton")
-TANGENTIAL_MODELS = ("hdd", "mindlin")
+#: The impact engine's tangential laws (:data:`contact.impact.TANGENTIAL_MODELS`).
+TANGENTIAL_MODELS = tuple(ENGINE_TANGENTIAL_MODELS)
 SCHEMES = ("verlet", "paper")
 
 #: Particle mass concentration of a stream whose case gives neither concentration nor mass flux (kg/m³).

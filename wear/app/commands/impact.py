@@ -25,7 +25,7 @@ _OPTIONS = {
     "friction": ("impact.friction", float, "Coulomb friction coefficient"),
     "restitution": ("impact.restitution", float, "normal restitution setting the Hertz dashpot"),
     "normal_model": ("impact.normal_model", str, "hertz or thornton"),
-    "tangential_model": ("impact.tangential_model", str, "hdd or mindlin"),
+    "tangential_model": ("impact.tangential_model", str, "hdd, mindlin or mindlin_deresiewicz"),
     "limiting_pressure": ("impact.limiting_pressure", float, "Thornton limiting pressure (Pa)"),
     "scheme": ("impact.scheme", str, "verlet or paper"),
     "time_step": ("impact.time_step", float, "time step (s); default Hertz contact time / 2000"),
