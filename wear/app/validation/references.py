@@ -54,19 +54,20 @@ def kharaz_data() -> dict[str, tuple[np.ndarray, np.ndarray]]:
     return {q: (np.array([a for a, _ in v]), np.array([x for _, x in v])) for q, v in out.items()}
 
 
-def kharaz_batch(angles) -> BatchResult:
-    """The Kharaz setup simulated at ``angles`` (deg from the normal)."""
+def kharaz_batch(angles, tangential_model: str = "hdd") -> BatchResult:
+    """The Kharaz setup simulated at ``angles`` (deg from the normal) with the engine's ``tangential_model``."""
     k = KHARAZ
-    return simulate_impacts(k["radius"], k["ball"], k["plate"], k["speed"], angles, k["friction"], k["restitution"])
+    return simulate_impacts(k["radius"], k["ball"], k["plate"], k["speed"], angles, k["friction"], k["restitution"],
+                            tangential_model=tangential_model)  # fmt: skip
 
 
 def _rms(model, data) -> float:
     return float(np.sqrt(np.mean((np.asarray(model) - np.asarray(data)) ** 2)))
 
 
-def kharaz_rms() -> dict[str, float]:
-    """RMS differences between the model (simulated at the measured angles) and the Kharaz et al. 2001 points:
-    centre rebound angle (deg), spin (rad/s), tangential restitution."""
+def kharaz_rms(tangential_model: str = "hdd") -> dict[str, float]:
+    """RMS differences between the model (simulated at the measured angles with ``tangential_model``) and the
+    Kharaz et al. 2001 points: centre rebound angle (deg), spin (rad/s), tangential restitution."""
     data = kharaz_data()
     out = {}
     for quantity, attr in (
@@ -75,7 +76,7 @@ def kharaz_rms() -> dict[str, float]:
         ("tangential_restitution", "tangential_restitution"),
     ):
         angles, values = data[quantity]
-        out[quantity] = _rms(getattr(kharaz_batch(angles), attr), values)
+        out[quantity] = _rms(getattr(kharaz_batch(angles, tangential_model), attr), values)
     return out
 
 
