@@ -65,6 +65,9 @@ def test_3d_outputs(frictionless, tmp_path):
     assert (tmp_path / "out" / "plastic_zone.png").is_file()
     saved = json.loads((tmp_path / "out" / "summary.json").read_text())
     assert saved["plate_3d"]["increments"] == summary["plate_3d"]["increments"] > 0
+    # the impact ran on the plate's tangential law, and the case written with the run says so
+    assert saved["plate_3d"]["tangential_model"] == "mindlin_deresiewicz"
+    assert frictionless.case.impact.tangential_model == "mindlin_deresiewicz"
     dent = saved["dent"]
     assert dent["model"] == "3d"
     # the dent is wider than deep by far, and a plastic dent has a lip above the original plane

@@ -16,7 +16,8 @@ Stages (their wall times are in ``RunResult.stage_times``):
    the impact's overlap history (``fem.indent_impact``); ``"none"`` skips the FE (no dent; the pressure
    source must then not be ``"fe"``).
 3. ``plate3d`` (``fem.model = "3d"``): the impact coupled to the 3-D half plate with friction, started from the
-   axisymmetric coupled impact (:mod:`wear.chain.solid`).
+   axisymmetric coupled impact; the whole chain then runs on the plate's tangential law, Mindlin–Deresiewicz
+   (:mod:`wear.chain.solid`).
 4. ``wear``: Eq. 15 integrated over the moving contact patch (:func:`wear.integrate_wear`; on the 3-D plate with its
    pressure and stick/slip fields, :mod:`wear.solid_wear`).
 5. ``surface``: the residual FE dent placed at the contact centre of maximum overlap plus the wear map
@@ -39,7 +40,7 @@ from fem import CoupledImpact, IndentationResult, PlateCycle, worst_regime
 from fem.solid_coupling import SolidCoupledImpact
 from wear.case import JOBS, Case
 from wear.chain.plate import case_mesh, case_plate, coupling_settings, impact_on_law, wear_constants
-from wear.chain.solid import check_solid_case, solid_impact, solid_surface, solid_wear
+from wear.chain.solid import check_solid_case, solid_case, solid_impact, solid_surface, solid_wear
 from wear.integrate import WearMap
 from wear.laws import LAWS, ImpactWear, wear_of_impact
 from wear.pressure import PressureHistory, pressure_history, sliding_speed
@@ -157,6 +158,7 @@ def solid_summary(coupled: SolidCoupledImpact) -> dict:
         "tangential_restitutions": list(coupled.tangential_restitutions),
         "max_normal_force_N": float(np.max(solid.normal_force)),
         "max_tangential_force_N": float(np.max(np.abs(solid.tangential_force))),
+        "tangential_model": coupled.impact.tangential_model,
         "tangential_mismatch": coupled.tangential_mismatch,
         "max_contact_radius_m": float(np.max(solid.contact_radius)),
         "max_stick_radius_m": float(np.max(solid.stick_radius)),
@@ -241,6 +243,7 @@ def run(case: Case, progress: Callable[[str], None] | None = None) -> RunResult:
         raise ValueError("wear.pressure='fe' needs the FE plate: set fem.coupling to 'two-way' or 'one-way'")
     if case.fem.model == "3d":
         check_solid_case(case)
+        case = solid_case(case)
     times: dict[str, float] = {}
 
     def timed(stage, fn, *args, **kwargs):

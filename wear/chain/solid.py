@@ -5,6 +5,11 @@ The oblique impact, first coupled to the axisymmetric plate (its normal law is t
 μ = 0, a cheap start), is coupled to the 3-D half plate with friction (:func:`fem.solid_coupling.couple_solid`);
 the 3-D pressure and stick/slip fields then drive the local wear law (:mod:`wear.solid_wear`) and the 3-D residual
 surface is the dent.
+
+The impact's tangential law is the plate's: partial slip with memory, Mindlin–Deresiewicz
+(:data:`SOLID_TANGENTIAL_MODEL`, :func:`contact.laws.memory_tangential_law`), which the 3-D plate reproduces at
+constant load (Cattaneo–Mindlin, ``tests/test_fem_solid.py``); :func:`solid_case` sets it for the whole chain, the
+axisymmetric start included.
 """
 
 from __future__ import annotations
@@ -25,14 +30,24 @@ from wear.pressure import PressureHistory, fe_pressure_history, sliding_speed
 from wear.solid_wear import mirrored_surface, solid_dent_depth, solid_grid, solid_wear_depth
 from wear.surface import DeformedSurface
 
-__all__ = ["MIN_CONTACT_ELEMENTS", "check_solid_case", "solid_settings", "solid_impact",
-           "solid_wear", "solid_surface"]  # fmt: skip
+__all__ = ["MIN_CONTACT_ELEMENTS", "SOLID_TANGENTIAL_MODEL", "check_solid_case", "solid_case", "solid_settings",
+           "solid_impact", "solid_wear", "solid_surface"]  # fmt: skip
 
 #: Fewest 3-D elements across the largest contact radius that resolve the contact (the Hertz force is within 2 %
 #: with 4; below 3 the contact edge falls between two element vertices over much of the impact).
 MIN_CONTACT_ELEMENTS = 3
 #: 3-D elements across the largest contact radius at ``fem.mesh_scale`` = 1.
 CONTACT_ELEMENTS_AT_SCALE_1 = 8
+
+
+#: The impact's tangential law on the 3-D plate: the plate's own partial slip with memory.
+SOLID_TANGENTIAL_MODEL = "mindlin_deresiewicz"
+
+
+def solid_case(case: Case) -> Case:
+    """``case`` with the impact's tangential law the 3-D plate's (:data:`SOLID_TANGENTIAL_MODEL`): the H-DD spring
+    slides where the plate sticks and reverses at 2/3 of its stiffness (``docs/fem.md``)."""
+    return case.with_(impact={"tangential_model": SOLID_TANGENTIAL_MODEL})
 
 
 def solid_settings(case: Case) -> SolidCouplingSettings:
