@@ -290,17 +290,21 @@ def memory_tangential_law(springs, pitch, slide_increment, contact_radius, norma
         springs[:] = 0.0
         return 0.0, False, OK
     # the line load's discrete shape, normalised so that the springs' limits add up to exactly μF
+    inside = min(n, int(contact_radius / pitch + 0.5))  # springs with x_i < a
     shape = 0.0
-    for i in range(n):
+    for i in range(inside):
         x = (i + 0.5) * pitch
-        if x < contact_radius:
-            shape += 1.0 - (x / contact_radius) ** 2
+        shape += 1.0 - (x / contact_radius) ** 2
     peak = friction * normal_force / (8.0 * gstar * pitch * shape) if shape > 0.0 else 0.0
     total = 0.0
     sliding = True
     for i in range(n):
         x = (i + 0.5) * pitch
-        if x >= contact_radius:
+        if i >= inside:
+            # springs leave the contact from the outside in, each unloaded as it leaves: past the first unloaded
+            # one all are
+            if springs[i] == 0.0:
+                break
             springs[i] = 0.0
             continue
         u = springs[i] + slide_increment
