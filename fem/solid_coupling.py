@@ -11,7 +11,7 @@ radius along the impact's own path. One coupling iteration:
    as the impact's Coulomb limit), plus one probe step past δ_max (``overshoot``) so that the next impact may go a
    little deeper on the plate's loading branch;
 3. run the impact again on the 3-D plate's law (contact's ``"tabulated"`` model: F(δ) and a(δ) on loading, the
-   unloading curve from the top; the tangential spring then has the 3-D contact radius, k_t = 8G*a);
+   unloading curve from the top; the tangential law then has the 3-D contact radius and normal force);
 4. repeat while δ_max or the tangential restitution e_t change by more than ``tolerance`` (relative for δ_max,
    absolute for e_t) between impact runs.
 
@@ -19,9 +19,10 @@ Unlike the axisymmetric frictionless plate, the loading branch of the 3-D plate 
 the moving centre), so every iteration runs the whole path. Started from the axisymmetric coupled impact (whose
 normal law is the 3-D one's within about 1 %), one or two iterations normally suffice.
 
-The tangential force of the 3-D plate along the path (``solid.tangential_force``) is *reported*, not fed back: the
-H-DD tangential spring stays the impact's tangential law (with the 3-D contact radius). Its difference from the
-impact's tangential force is the measure of what the spring misses (:attr:`SolidCoupledImpact.tangential_mismatch`).
+The impact's tangential law is the one ``impact_on_law`` runs: in the chain the plate's own, Mindlin–Deresiewicz
+partial slip with memory (``wear.chain.solid.solid_case``), fed by the 3-D plate's normal force and contact radius.
+The 3-D plate's tangential force along the path (``solid.tangential_force``) is compared with the impact's
+(:attr:`SolidCoupledImpact.tangential_mismatch`), the measure of what the law misses.
 """
 
 from __future__ import annotations
@@ -145,8 +146,8 @@ class SolidCoupledImpact:
     @property
     def tangential_mismatch(self) -> float:
         """Largest absolute difference of the 3-D plate's tangential force Q and the impact's F_t over the plate's
-        steps, relative to the impact's largest absolute F_t (the 3-D plate against the H-DD spring at the same
-        instants)."""
+        steps, relative to the impact's largest absolute F_t (the 3-D plate against the impact's tangential law at the
+        same instants)."""
         h = self.impact.history
         ft = np.interp(self.times, h.t, h.tangential_force)
         scale = float(np.max(np.abs(h.tangential_force)))
