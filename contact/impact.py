@@ -276,7 +276,9 @@ def simulate_impacts(
     max_steps = np.ceil(MAX_CONTACT_TIMES * contact_time / dt).astype(np.int64) + 1000
     code, scheme_code = NORMAL_MODELS[model], SCHEMES[scheme]
     tangential, factor = TANGENTIAL_MODELS[tangential_model]
-    pitch = _spring_pitch(radius, e_star, mass, vn0, force_law if model == "tabulated" else None, p_y)
+    pitch = np.zeros(vn0.shape)  # only the memory law has springs
+    if tangential == laws.MEMORY:
+        pitch = _spring_pitch(radius, e_star, mass, vn0, force_law if model == "tabulated" else None, p_y)
     out = engine.run_batch(scheme_code, code, tangential, factor, friction, dt, vn0, vt0, max_steps, prm, tab, pitch)
     errors = out[:, -1].astype(int)
     if np.any(errors):

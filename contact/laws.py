@@ -299,7 +299,6 @@ def memory_tangential_law(springs, pitch, slide_increment, contact_radius, norma
     total = 0.0
     sliding = True
     for i in range(n):
-        x = (i + 0.5) * pitch
         if i >= inside:
             # springs leave the contact from the outside in, each unloaded as it leaves: past the first unloaded
             # one all are
@@ -308,6 +307,7 @@ def memory_tangential_law(springs, pitch, slide_increment, contact_radius, norma
             springs[i] = 0.0
             continue
         u = springs[i] + slide_increment
+        x = (i + 0.5) * pitch
         limit = peak * (1.0 - (x / contact_radius) ** 2)
         if u > limit:
             u = limit

@@ -14,8 +14,15 @@ import math
 from contact import simulate_impact
 from wear.app.commands.common import add_case_options, case_from_args, case_json, print_default, print_json
 from wear.case import Case
+from wear.case.tables import NORMAL_MODELS, SCHEMES, TANGENTIAL_MODELS
 
 HELP = "simulate one oblique ball-on-plate impact (H-DD model) and print rebound, forces and timings"
+
+
+def _one_of(choices: tuple[str, ...]) -> str:
+    """The case schema's choices as help text: "a, b or c"."""
+    return f"{', '.join(choices[:-1])} or {choices[-1]}"
+
 
 # option -> case key (values are checked by the case schema, so errors name the key)
 _OPTIONS = {
@@ -24,10 +31,10 @@ _OPTIONS = {
     "angle": ("impact.angle", float, "impact angle from the plate normal (deg)"),
     "friction": ("impact.friction", float, "Coulomb friction coefficient"),
     "restitution": ("impact.restitution", float, "normal restitution setting the Hertz dashpot"),
-    "normal_model": ("impact.normal_model", str, "hertz or thornton"),
-    "tangential_model": ("impact.tangential_model", str, "hdd, mindlin or mindlin_deresiewicz"),
+    "normal_model": ("impact.normal_model", str, _one_of(NORMAL_MODELS)),
+    "tangential_model": ("impact.tangential_model", str, _one_of(TANGENTIAL_MODELS)),
     "limiting_pressure": ("impact.limiting_pressure", float, "Thornton limiting pressure (Pa)"),
-    "scheme": ("impact.scheme", str, "verlet or paper"),
+    "scheme": ("impact.scheme", str, _one_of(SCHEMES)),
     "time_step": ("impact.time_step", float, "time step (s); default Hertz contact time / 2000"),
 }
 
