@@ -17,7 +17,10 @@ shear) are fields linear between the surface vertices, as on the axisymmetric pl
 the vertex hats ψ_j (values ψ_j(x_i) at the surface nodes: 1 at the vertex, ½ at the mid-edge nodes of its edges),
 their mass M_jk = ∫ ψ_j ψ_k dA, and the consistent loads G_ik = ∫ φ_i ψ_k dA of a linear traction on the quadratic
 nodes (on a triangle of area A: A/30 and −A/60 at the vertices, 2A/15 and A/15 at the mid-edge nodes, for the own
-and the opposite hat; Σ_i G_ik = ∫ ψ_k).
+and the opposite hat; Σ_i G_ik = ∫ ψ_k), and those of the hats' dual functions, G̃_ik = ∫ φ_i φ̃_k dA with
+φ̃_k = 4ψ_k − 1 on each triangle of the vertex (Wohlmuth 2000: ∫ φ̃_k ψ_j = δ_kj ∫ ψ_j, so the hat moments of G̃'s
+loads are the vertex's own only, Σ_i ψ_j(x_i) G̃_ik = δ_jk ∫ ψ_k; 2A/15 and −A/15 at the vertices, A/5 and −A/15 at
+the mid-edge nodes).
 """
 
 from __future__ import annotations
@@ -47,7 +50,8 @@ class SolidDiscretisation:
     ``entry_index``), ``fixed_dofs`` (the clamped bottom and u_y on the symmetry plane), ``nodes`` (3, scalar nodes)
     node coordinates (m), ``surface_nodes`` the scalar nodes on z = 0, ``surface_vertex_nodes`` the surface
     vertices' scalar nodes, ``surface_hats`` (surface vertices × surface nodes) ψ_j(x_i), ``surface_hat_mass``
-    (surface vertices²) M (m²), ``surface_loads`` (surface nodes × surface vertices) G (m²), ``surface_area``
+    (surface vertices²) M (m²), ``surface_loads`` (surface nodes × surface vertices) G (m²), ``surface_dual_loads``
+    G̃ (m², the dual functions'), ``surface_area``
     (surface vertices) each hat's integral ∫ ψ_j dA over the half plate (m²).
     """
 
@@ -68,6 +72,7 @@ class SolidDiscretisation:
     surface_hats: sp.csr_matrix
     surface_hat_mass: sp.csc_matrix
     surface_loads: sp.csr_matrix
+    surface_dual_loads: sp.csr_matrix
     surface_area: np.ndarray
 
     def matrix(self, data: np.ndarray) -> sp.csr_matrix:
@@ -111,7 +116,7 @@ def _surface_operators(mesh: MeshTet, basis: Basis, surface_nodes: np.ndarray):
     p = mesh.p[:, triangles]
     area = 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0], axis=0), axis=0)
     mass_rows, mass_cols, mass_values = [], [], []
-    load_rows, load_cols, load_values = [], [], []
+    load_rows, load_cols, load_values, dual_values = [], [], [], []
     hat_entries = {(vertex_row[v], node_row[v]): 1.0 for v in vertex_nodes}
     for k in range(3):
         for m in range(3):
@@ -121,12 +126,14 @@ def _surface_operators(mesh: MeshTet, basis: Basis, surface_nodes: np.ndarray):
             load_rows.append(node_row[triangles[k]])
             load_cols.append(vertex_row[triangles[m]])
             load_values.append(area * (1.0 / 30.0 if k == m else -1.0 / 60.0))
+            dual_values.append(area * (2.0 / 15.0 if k == m else -1.0 / 15.0))
     for a, b in ((0, 1), (1, 2), (0, 2)):
         edge_nodes = np.array([edge_of[(int(x), int(y))] for x, y in zip(triangles[a], triangles[b], strict=True)])
         for m in range(3):
             load_rows.append(node_row[edge_nodes])
             load_cols.append(vertex_row[triangles[m]])
             load_values.append(area * (2.0 / 15.0 if m in (a, b) else 1.0 / 15.0))
+            dual_values.append(area * (1.0 / 5.0 if m in (a, b) else -1.0 / 15.0))
         for end in (a, b):
             for node, vertex in zip(edge_nodes, triangles[end], strict=True):
                 hat_entries[(vertex_row[vertex], node_row[node])] = 0.5
@@ -139,9 +146,12 @@ def _surface_operators(mesh: MeshTet, basis: Basis, surface_nodes: np.ndarray):
     loads = sp.csr_matrix(
         (np.concatenate(load_values), (np.concatenate(load_rows), np.concatenate(load_cols))), shape=(ns, nv)
     )
+    dual_loads = sp.csr_matrix(
+        (np.concatenate(dual_values), (np.concatenate(load_rows), np.concatenate(load_cols))), shape=(ns, nv)
+    )
     (rows, cols), values = zip(*hat_entries.keys(), strict=True), list(hat_entries.values())
     hats = sp.csr_matrix((values, (rows, cols)), shape=(nv, ns))
-    return vertex_nodes, hats, mass, loads
+    return vertex_nodes, hats, mass, loads, dual_loads
 
 
 def discretise_solid(mesh: MeshTet) -> SolidDiscretisation:
@@ -164,7 +174,7 @@ def discretise_solid(mesh: MeshTet) -> SolidDiscretisation:
     symmetry = basis.get_dofs(mesh.boundaries["symmetry"]).flatten()
     fixed = np.unique(np.concatenate([3 * bottom, 3 * bottom + 1, 3 * bottom + 2, 3 * symmetry + 1]))
     surface_nodes = np.unique(basis.get_dofs(mesh.boundaries["surface"]).flatten())
-    vertex_nodes, hats, mass, loads = _surface_operators(mesh, basis, surface_nodes)
+    vertex_nodes, hats, mass, loads, dual_loads = _surface_operators(mesh, basis, surface_nodes)
     return SolidDiscretisation(
         mesh=mesh,
         basis=basis,
@@ -183,5 +193,6 @@ def discretise_solid(mesh: MeshTet) -> SolidDiscretisation:
         surface_hats=hats,
         surface_hat_mass=mass,
         surface_loads=loads,
+        surface_dual_loads=dual_loads,
         surface_area=np.asarray(mass.sum(axis=0)).ravel(),
     )

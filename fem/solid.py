@@ -41,7 +41,8 @@ class SolidIndentation:
     ``max_pressure`` (Pa); ``max_equivalent_plastic_strain``; ``newton_iterations``; ``surface_vertices`` (n, 3)
     reference coordinates of the surface vertices (m); ``pressure`` (steps, n) and ``shear`` (steps, n, 2) the
     contact tractions on the plate at those vertices (Pa, linear between them); ``sticking`` (steps, n) the
-    vertices in stick; ``residual_depth`` (n) the
+    vertices in stick; ``slip`` (steps, n, 2) the ball's slip (x, y) over each vertex in contact in the step that
+    ends there, Δξ e_x − Δu_t (m; zero in stick and out of contact); ``residual_depth`` (n) the
     surface vertices' u_z after the last step, positive into the plate (m); ``stats`` the solver's work.
     """
 
@@ -59,6 +60,7 @@ class SolidIndentation:
     pressure: np.ndarray
     shear: np.ndarray
     sticking: np.ndarray
+    slip: np.ndarray
     residual_depth: np.ndarray
     stats: SolidStats
     final: SolidState = field(repr=False)
@@ -129,12 +131,15 @@ class SolidRecorder:
     def __init__(self, solver: SolidSolver) -> None:
         self.solver = solver
         self.vertex_rows = solver.node_vertices[solver.is_vertex, 0]
-        self.records: dict[str, list] = {k: [] for k in ("P", "Q", "a", "c", "pmax", "eps", "it", "p", "tau", "st")}
+        self.records: dict[str, list] = {
+            k: [] for k in ("P", "Q", "a", "c", "pmax", "eps", "it", "p", "tau", "st", "slip")
+        }
         self.states: list[SolidState] = []
 
     def measure(self, state: SolidState) -> dict[str, float | int | np.ndarray]:
         """One step's numbers: forces on the whole plate (N), contact and stick radii (m), peak pressure (Pa),
-        largest equivalent plastic strain, Newton iterations, vertex pressure and shear (Pa), stick mask."""
+        largest equivalent plastic strain, Newton iterations, vertex pressure and shear (Pa), stick mask, and the
+        slip (m) over each vertex in contact since the last recorded step (the first: since the unloaded plate)."""
         solver, d = self.solver, self.solver.disc
         normal, shear = solver.surface_forces(state)
         pressure = solver.vertex_field(normal)
@@ -143,6 +148,10 @@ class SolidRecorder:
         in_contact[self.vertex_rows] = state.contact[solver.is_vertex]
         sticking = np.zeros(pressure.size, bool)
         sticking[self.vertex_rows] = state.stick[solver.is_vertex]
+        before = self.states[-1] if self.states else solver.initial_state()
+        nodes = d.surface_vertex_nodes
+        moved = (state.u - before.u).reshape(-1, 3)[nodes, :2]
+        slip = np.column_stack([np.full(nodes.size, state.slide - before.slide), np.zeros(nodes.size)]) - moved
         return {
             "P": 2.0 * float(normal[state.contact].sum()),
             "Q": 2.0 * float(shear[:, 0].sum()),
@@ -154,6 +163,7 @@ class SolidRecorder:
             "p": np.where(in_contact, pressure, 0.0),
             "tau": np.where(in_contact[:, None], traction, 0.0),
             "st": sticking & in_contact,
+            "slip": np.where((in_contact & ~sticking)[:, None], slip, 0.0),
         }
 
     def add(self, state: SolidState) -> None:
@@ -180,6 +190,7 @@ class SolidRecorder:
             pressure=np.array(r["p"]),
             shear=np.array(r["tau"]),
             sticking=np.array(r["st"]),
+            slip=np.array(r["slip"]),
             residual_depth=-state.u[3 * d.surface_vertex_nodes + 2],
             stats=self.solver.stats,
             final=state,

@@ -6,20 +6,31 @@ velocity of the impact model). The plate's surface nodes obey
 
 * **contact** (node by node): u_z,i ≤ z_s(ρ_i) − z_i with ρ_i = √((x_i − c)² + y_i²) and z_s the sphere's surface
   (:func:`fem.sphere_contact.sphere_surface`); a node in contact has u_z prescribed there;
-* **stick** (weakly, on each sticking vertex's hat ψ_j): Σ_i G_ij (u_t,i − u_t,i(start) − Δξ e_x) = 0, with G the
-  consistent loads of a linear traction on the quadratic nodes (:mod:`fem.forms3d`) — the mortar pairing, whose
-  multipliers are the shear traction at the stick vertices;
-* **slip**: elsewhere in contact the traction is τ = μ p ŝ, with ŝ the direction of the ball's slip over the
-  vertex in the increment, Δξ e_x − Δu_t.
+* **stick** (weakly, on each sticking vertex j): Σ_i G̃_ij (u_t,i − u_t,i(start) − Δξ e_x) = 0, with G̃ the
+  loads of the vertices' dual functions on the quadratic nodes (:mod:`fem.forms3d`; a dual mortar: Wohlmuth 2000),
+  whose multipliers are the stick tractions; the hat moment of a multiplier's loads is its own vertex's only;
+* **slip**: at every other vertex the ball's tangential force is μ times its normal force, on the vertices' hat
+  moments (the forces each vertex's share of the surface carries):
 
-The pressure p and the shear τ are the fields linear between the surface vertices (the hat moments of the nodal
-forces, as on the axisymmetric plate); the Coulomb cone ‖τ‖ ≤ μ p is checked on them, vertex by vertex. Nodes that
-penetrate join the contact, nodes where the pressure is negative leave it; stick vertices outside the cone slip,
-slip vertices whose slip reverses stick; where the ball's slide reverses, the whole contact sticks first
-(Mindlin's unloading). Newton linearises the slip traction with the pressure it follows (a nonsymmetric tangent;
-lagged, it made Newton a fixed-point iteration of 14–19 iterations an increment). A stick constraint
-on the quadratic nodes themselves (node by node) would leave the mid-edge nodes between a stick and a slip vertex to
-one side or the other: ±6–7% on the tangential compliance of a Cattaneo–Mindlin contact on the default mesh.
+  .. math:: (H f_t)_j = \mu\,\max\bigl((H f_n)_j, 0\bigr)\,\hat s_j,
+
+  laid down as the linear traction field with those moments, τ = M⁻¹ μ (H f_n)⁺ ŝ (its loads' moments are zero at
+  the stick vertices), ŝ_j the vertex's slip direction. Where the whole contact slides, the tangential force is then
+  μ times the normal force exactly (Σ_j (H f_n)_j = P); the same traction on the projected pressure field, μ p⁺ ŝ,
+  exceeded μP by the negative lobes of the projection just outside the contact (∫p⁺/∫p = 1.03 on the default mesh).
+
+The pressure p and the shear τ reported are the fields linear between the surface vertices with those hat moments
+(as on the axisymmetric plate). Nodes that penetrate join the contact, nodes where the pressure is negative leave
+it. The stick set follows Coulomb's law returned vertex by vertex on the trial traction τ + c s (the active set of a
+semi-smooth Newton method; Hüeber, Stadler & Wohlmuth 2008): a stick vertex slips where its traction leaves the
+cone ‖τ‖ ≤ μp, along that traction; a slipping one sticks where its trial traction falls inside the cone (its slip
+turns back against the traction). Releasing a vertex on the cone alone and sending it along the ball's slide set off
+a cascade to full reverse slip where the slide turned (an elastic impact's plate slid at −1.04 μP where
+Mindlin–Deresiewicz gives −0.07 μP). Where the ball's slide reverses, the whole contact sticks first (Mindlin's
+unloading). Newton linearises the slip traction with the normal force it follows (a nonsymmetric tangent; lagged,
+it made Newton a fixed-point iteration of 14–19 iterations an increment). A stick constraint on the quadratic nodes
+themselves (node by node) would leave the mid-edge nodes between a stick and a slip vertex to one side or the other:
+±6–7% on the tangential compliance of a Cattaneo–Mindlin contact on the default mesh.
 
 Plasticity is the same J2 radial return as the axisymmetric plate (:mod:`fem.plasticity`, 6 Mandel components).
 Linear solves: the constrained rows become s·I, the stick rows enter as an augmented Lagrangian (one multiplier
@@ -136,6 +147,7 @@ class SolidSolver:
         self.is_vertex = d.surface_nodes < nvert
         self.on_symmetry = np.abs(d.surface_xy[:, 1]) <= 1e-9 * float(np.ptp(d.nodes[0]))
         self.mass_lu = spla.splu(d.surface_hat_mass.tocsc())
+        self.area = np.maximum(d.surface_area, 1e-300)
         self.linear = KeptFactor(self.stats, max_krylov=15)
         nel, nq = d.weight.shape
         self._zero_plastic = np.zeros((nel, nq, 6))
@@ -179,6 +191,11 @@ class SolidSolver:
         return radial_return(self.material, strain(self.disc, state.u), ref.plastic_strain, ref.alpha)
 
     # -- one increment
+    def _moment_loads(self, moments: np.ndarray) -> np.ndarray:
+        """Nodal loads (N, all DOFs) of the linear shear traction field whose hat moments are ``moments``
+        (surface vertices, 2) in N."""
+        return self._shear_loads(self.mass_lu.solve(np.ascontiguousarray(moments)))
+
     def _shear_loads(self, tau: np.ndarray) -> np.ndarray:
         """Consistent nodal loads (N, all DOFs) of a shear traction field ``tau`` (surface vertices, 2) in Pa."""
         loads = self.disc.surface_loads @ tau
@@ -204,7 +221,7 @@ class SolidSolver:
         values = values[constrained]
         free = np.ones(d.ndofs, bool)
         free[constrained] = False
-        slip_vertices = self._slip_vertices(contact, stick) if mu > 0.0 else None
+        slip_vertices = self._slip_vertices(stick) if mu > 0.0 else None
         rows, targets, row_ids = self._stick_rows(start, slide, contact, stick, free) if mu > 0.0 else (None,) * 3
         if rows is not None and rows.shape[0] == 0:
             rows = None
@@ -216,9 +233,9 @@ class SolidSolver:
             slipping = slip_vertices is not None and slip_vertices.any()
             f_ext = np.zeros(d.ndofs)
             if slipping:
-                # τ = μ p ŝ over the slipping vertices
-                pressure = self.vertex_field(-f[self.uz])
-                f_ext = self._shear_loads((mu * np.maximum(pressure, 0.0) * slip_vertices)[:, None] * direction)
+                # (H f_t)_j = μ (H f_n)_j⁺ ŝ_j at the slipping vertices
+                normal_moments = np.asarray(d.surface_hats @ (-f[self.uz]))
+                f_ext = self._moment_loads((mu * np.maximum(normal_moments, 0.0) * slip_vertices)[:, None] * direction)
             residual_vector = f_ext - f
             # the stick tractions (the multipliers of the last solve) balance the residual on the stick zone
             balanced = residual_vector if rows is None else residual_vector - rows.T @ multipliers
@@ -250,7 +267,7 @@ class SolidSolver:
             key = constrained.tobytes() + (b"elastic" if elastic else b"")
             coupling = None
             if slipping:
-                coupling = self._slip_linearisation(K, pressure, direction, slip_vertices, mu, keep)
+                coupling = self._slip_linearisation(K, normal_moments, direction, slip_vertices, mu, keep)
             try:
                 if rows is None:
                     du = self.linear.solve(K_mod, rhs, tolerance, key, coupling)
@@ -268,21 +285,22 @@ class SolidSolver:
                 u = u + du
         raise _NotConverged(residual)
 
-    def _slip_linearisation(self, K, pressure, direction, slip_vertices, mu: float, keep: np.ndarray):
+    def _slip_linearisation(self, K, normal_moments, direction, slip_vertices, mu: float, keep: np.ndarray):
         r"""The change of the slip tractions' nodal loads with the displacement, as a function of a displacement
-        change v (m) to loads (N) on the free DOFs ``keep``: the slip traction τ = μ p ŝ follows the pressure, whose
+        change v (m) to loads (N) on the free DOFs ``keep``: the slip traction follows the normal hat moments, whose
         nodal forces are the normal rows of K v,
 
-        .. math:: \delta f_t = L\,\mu\,\hat s\;M^{-1} H\,(-K v)_z
+        .. math:: \delta f_t = L\,M^{-1}\,\mu\,\hat s\;H\,(-K v)_z
 
-        (L the traction's consistent loads, M⁻¹H the hat moments to the linear pressure field; ŝ held at the set's
-        direction; ``pressure`` the iterate's pressure field (Pa), whose positive part the traction follows). It
-        makes Newton's tangent the consistent, nonsymmetric one, K − ∂f_t/∂u: the lagged slip traction made Newton a
+        (L the linear traction's consistent loads, M⁻¹ the hat moments to the linear field; ŝ held at the set's
+        direction; ``normal_moments`` the iterate's (N), whose positive part the traction follows). It makes
+        Newton's tangent the consistent, nonsymmetric one, K − ∂f_t/∂u: the lagged slip traction made Newton a
         fixed-point iteration of 14–19 iterations per frictional increment."""
-        pressed = mu * slip_vertices * (pressure > 0.0)
+        pressed = mu * slip_vertices * (normal_moments > 0.0)
 
         def coupling(v: np.ndarray) -> np.ndarray:
-            return self._shear_loads((pressed * self.vertex_field(-(K @ v)[self.uz]))[:, None] * direction) * keep
+            moments = np.asarray(self.disc.surface_hats @ (-(K @ v)[self.uz]))
+            return self._moment_loads((pressed * moments)[:, None] * direction) * keep
 
         return coupling
 
@@ -305,20 +323,22 @@ class SolidSolver:
         return u + du - (dU + dG) @ gamma
 
     def _stick_rows(self, start: SolidState, slide: float, contact, stick, free) -> tuple[sp.csr_matrix, np.ndarray]:
-        r"""The stick constraints, weak on each sticking vertex's hat (the mortar pairing of the linear traction
-        field with the quadratic displacements):
+        r"""The stick constraints, weak on each sticking vertex's dual function φ̃_j (the dual mortar pairing with
+        the quadratic displacements, :mod:`fem.forms3d`):
 
-        .. math:: \sum_i G_{ij}\,\bigl(u_{t,i} - u_{t,i}^{start} - \Delta\xi\, e_x\bigr) = 0,
+        .. math:: \sum_i \tilde G_{ij}\,\bigl(u_{t,i} - u_{t,i}^{start} - \Delta\xi\, e_x\bigr) = 0,
 
-        x and y rows (no y row on the symmetry plane: there τ_y = 0 by symmetry). Their multipliers are the shear
-        traction at the stick vertices (Pa) times their hats' weights. Returns (rows over all DOFs, each scaled to a
+        x and y rows (no y row on the symmetry plane: there τ_y = 0 by symmetry). Their multipliers, times the rows'
+        scales, are the stick vertices' tangential hat moments (N): a multiplier's loads have no moment at the
+        neighbouring vertices, so the cone of a stick vertex and the slip traction of its slipping neighbours do
+        not share forces. Returns (rows over all DOFs, each scaled to a
         unit sum of absolute values so that its error is a length in m, targets in m, row ids 2·vertex + component).
         """
         d = self.disc
         vertex_rows = self.node_vertices[self.is_vertex, 0]
         sticking = np.zeros(d.surface_vertex_nodes.size, bool)
         sticking[vertex_rows] = (stick & contact)[self.is_vertex]
-        loads = d.surface_loads[:, sticking].T.tocsr()  # (k, surface nodes)
+        loads = d.surface_dual_loads[:, sticking].T.tocsr()  # (k, surface nodes)
         on_plane = np.abs(d.nodes[1, d.surface_vertex_nodes[sticking]]) <= 1e-9 * float(np.ptp(d.nodes[0]))
         blocks, targets, ids = [], [], []
         vertex_ids = np.flatnonzero(sticking)
@@ -364,11 +384,12 @@ class SolidSolver:
         )
         return du, multipliers + rho * (rows @ du - defect)
 
-    def _slip_vertices(self, contact: np.ndarray, stick: np.ndarray) -> np.ndarray:
-        """Surface vertices in contact that do not stick."""
+    def _slip_vertices(self, stick: np.ndarray) -> np.ndarray:
+        """Surface vertices that do not stick: those with a positive normal moment slip (a vertex just outside the
+        contact nodes carries the moments of its edges' mid-edge nodes in contact)."""
         vertex_rows = self.node_vertices[self.is_vertex, 0]
-        slip = np.zeros(self.disc.surface_vertex_nodes.size, bool)
-        slip[vertex_rows] = (contact & ~stick)[self.is_vertex]
+        slip = np.ones(self.disc.surface_vertex_nodes.size, bool)
+        slip[vertex_rows] = ~stick[self.is_vertex]
         return slip
 
     def _tangent(self, upd, elastic: bool = False) -> sp.csr_matrix:
@@ -430,11 +451,14 @@ class SolidSolver:
         raise _NotConverged(float("nan"))
 
     def _update_stick(self, start, target, u, f, stick, direction, new_contact, p_vertex, mu, released):
-        """The stick set and slip directions after one equilibrium: stick vertices outside the cone slip (along
-        their traction), slip vertices whose slip reverses stick (unless they were ``released`` from the stick set
-        in this increment: within one increment the set only shrinks after that, which ends the cycles a coarse
-        stick boundary can set off), the others slip along their slip."""
-        slide = target[2]
+        """The stick set and slip directions after one equilibrium: Coulomb's law returned vertex by vertex (the
+        active set of a semi-smooth Newton method; Hüeber, Stadler & Wohlmuth 2008). With the vertex's traction τ
+        and its slip s in the increment, the trial traction τ + c s (c = G/h, the plate's shear modulus over the
+        size h of the vertex's hat) sticks inside the cone μp and slips along itself outside it. A stick vertex
+        (s = 0) thus slips where its traction leaves the cone, along that traction; a slipping one (τ = μpŝ) goes on
+        where it keeps to its way and sticks where its slip turns back against its traction (unless it was
+        ``released`` from the stick set in this increment: within one increment the set only shrinks after that,
+        which ends the cycles a coarse stick boundary can set off)."""
         vertex_rows = self.node_vertices[self.is_vertex, 0]
         tau = self.vertex_field(self._ball_shear(f))
         sticks = np.zeros(p_vertex.size, bool)
@@ -447,31 +471,25 @@ class SolidSolver:
         # continuum's ‖τ‖/μp → 1 like 1 − √(c − r)); releasing on that overshoot sets off a cascade to gross slip
         floor = 1e-3 * max(float(cone.max(initial=0.0)), 1e-300)
         leave = sticks & (magnitude > (1.0 + self.cone_tolerance) * cone + floor)
-        nodal_slip = np.stack([slide - start.slide - (u[self.ut[:, 0]] - start.u[self.ut[:, 0]]),
+        nodal_slip = np.stack([target[2] - start.slide - (u[self.ut[:, 0]] - start.u[self.ut[:, 0]]),
                                -(u[self.ut[:, 1]] - start.u[self.ut[:, 1]])], axis=1)  # fmt: skip
-        # the slip over each vertex's hat, weighted as the stick constraint weighs it (zero at a stick vertex): the
-        # quadratic field's own vertex values carry the corner/mid-edge alternation of its reactions
-        area = np.maximum(self.disc.surface_area, 1e-300)[:, None]
-        slip = np.asarray(self.disc.surface_loads.T @ nodal_slip) / area
-        length = np.linalg.norm(slip, axis=1)
-        along = np.einsum("ij,ij->i", slip, direction)
-        reach = max(float(length.max(initial=0.0)), 1e-300)
+        # the slip at each vertex as the stick constraint weighs it (zero at a stick vertex): the quadratic field's
+        # own vertex values carry the corner/mid-edge alternation of its reactions
+        area = self.area
+        slip = np.asarray(self.disc.surface_dual_loads.T @ nodal_slip) / area[:, None]
+        # the trial traction: a slipping vertex's traction carries the direction while its slip is small (the
+        # direction of a small slip is noise that turned the slip zone's traction sideways), its slip once large
+        trial = cone[:, None] * direction + (self.material.shear / np.sqrt(area))[:, None] * slip
+        trial_size = np.linalg.norm(trial, axis=1)
         was_released = np.zeros(p_vertex.size, bool)
         was_released[vertex_rows] = released[self.is_vertex]
-        reverse = in_contact & ~sticks & ~was_released & (along < -1e-2 * reach)
-        # The slip direction, leaning towards the ball's own slide: a vertex that has just left the stick zone
-        # slips by little, and the direction of that small slip (or of the discrete stick traction at the zone's
-        # edge) is noise that turned half the slip zone's traction sideways and set off a cascade to gross slip.
-        # The lean, the ball's slide in the increment, leaves a slip larger than that mostly its own way.
-        lean = (slide - start.slide) * np.array([1.0, 0.0])
-        leaned = slip + lean
-        size = np.linalg.norm(leaned, axis=1)
+        restick = in_contact & ~sticks & ~was_released & (trial_size < cone)
         new_direction = direction.copy()
-        moving = ~sticks & (along >= -1e-2 * reach) & (size > 1e-6 * max(reach, float(np.linalg.norm(lean))))
-        new_direction[moving] = leaned[moving] / size[moving, None]
-        released_now = leave & (size > 0.0)
-        new_direction[released_now] = leaned[released_now] / size[released_now, None]
-        vertex_sticks = in_contact & ((sticks & ~leave) | reverse)
+        moving = ~sticks & ~restick & (trial_size > 0.0)
+        new_direction[moving] = trial[moving] / trial_size[moving, None]
+        released_now = leave & (magnitude > 0.0)
+        new_direction[released_now] = tau[released_now] / magnitude[released_now, None]
+        vertex_sticks = in_contact & ((sticks & ~leave) | restick)
         ends = self.node_vertices
         return new_contact & vertex_sticks[ends[:, 0]] & vertex_sticks[ends[:, 1]], new_direction
 

@@ -13,6 +13,7 @@ import pytest
 import fem
 from contact.materials import Material
 from contact.theory import first_yield
+from fem.forms3d import discretise_solid
 from fem.mesh3d import generate_block, scale_block
 from fem.plasticity import J2Material, von_mises
 from fem.solid import indent_solid
@@ -144,9 +145,50 @@ def test_partial_slip_matches_cattaneo_mindlin():
     assert np.all(result.stick_radius[1:][~partial] == 0.0)
 
 
+def test_surface_operators_integrate_exactly():
+    """The surface operators against exact integrals (fem.forms3d): the hats' mass sums to the surface area
+    (Σ_jk ∫ψ_j ψ_k = ∫1), the consistent loads of a linear traction have the hat mass as moments (H G = M, both
+    ∫ψ_j ψ_k), and the dual functions' loads have each vertex's own hat integral only (H G̃ = diag ∫ψ_k;
+    Wohlmuth 2000)."""
+    d = discretise_solid(scale_block(generate_block(3), 1e-4))
+    x, y = d.nodes[0, d.surface_nodes], d.nodes[1, d.surface_nodes]
+    width = float(np.ptp(x)) * float(np.ptp(y))
+    assert d.surface_hat_mass.sum() == pytest.approx(width, rel=1e-12)
+    hats = d.surface_hats
+    np.testing.assert_allclose((hats @ d.surface_loads).toarray(), d.surface_hat_mass.toarray(), atol=1e-12 * width)
+    np.testing.assert_allclose((hats @ d.surface_dual_loads).toarray(), np.diag(d.surface_area), atol=1e-12 * width)
+
+
 def test_mesh_generation_is_quiet(caplog):
     """No scikit-fem log lines reach the user while the block is refined (a performance note per refined mesh)."""
     with caplog.at_level("INFO"):
         mesh = generate_block(4)
     assert mesh.nelements > 1000
     assert not [r for r in caplog.records if r.name.startswith("skfem")]
+
+
+@pytest.mark.slow
+def test_gross_slip_field_matches_cerruti():
+    """Hertz load applied without friction, then the ball slid by ξ = 2 ξ_max at μ = 0.3 in one step: the whole
+    contact slides (Q = μP) under q = μp0 √(1 − r²/a²), whose surface displacement is Cerruti's (Johnson 1985 §3.6
+    and Eq. 7.39): u_x = πq0/(32Ga) [4(2 − ν)a² − (4 − 3ν)x² − (4 − ν)y²], u_y = πq0/(32Ga) 2ν x y. The plate's slip
+    over each vertex in the step, ξ e_x − Δu, within 4% of ξ_max of that (r < 0.8a; the wear's slip field)."""
+    mu = 0.3
+    plate = Material(E=E, nu=NU, density=7800.0)
+    a_max = 1e-4
+    delta = a_max**2 / R
+    shear_modulus = E / (2.0 * (1.0 + NU))
+    xi_max = 3.0 * mu * hertz_force(delta) * (2.0 - NU) / (16.0 * shear_modulus * math.sqrt(R * delta))
+    result = indent_solid(R, plate, [delta, delta], slides=[0.0, 2.0 * xi_max], friction=[0.0, mu])
+    P = result.normal_force[1]
+    assert result.tangential_force[1] / (mu * P) == pytest.approx(1.0, abs=0.01)
+    a = (3.0 * P * R / (4.0 * E_STAR)) ** (1.0 / 3.0)
+    q0 = 3.0 * mu * P / (2.0 * math.pi * a**2)
+    x, y = result.surface_vertices[:, 0], result.surface_vertices[:, 1]
+    inside = np.hypot(x, y) < 0.8 * a
+    scale = math.pi * q0 / (32.0 * shear_modulus * a)
+    u_x = scale * (4.0 * (2.0 - NU) * a**2 - (4.0 - 3.0 * NU) * x**2 - (4.0 - NU) * y**2)
+    u_y = scale * 2.0 * NU * x * y
+    expected = np.column_stack([result.slide[1] - u_x, -u_y])[inside]
+    error = np.abs(result.slip[1][inside] - expected).max() / xi_max
+    assert inside.sum() > 20 and error < 0.04, error

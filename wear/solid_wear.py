@@ -2,20 +2,31 @@ r"""Wear and dent of the 3-D plate: Eq. 15 integrated with the 3-D plate's own p
 its residual surface on the wear grid (SI units: m, s, Pa).
 
 The 3-D plate (:func:`fem.indent_solid`, :func:`fem.couple_solid`) gives, at each of its steps k placed at impact
-time t_k, the contact pressure p_k and the stick set at its surface vertices (half plate, mirrored about the plane
-of incidence y = 0). The wear depth at a plate point x is
+time t_k, the contact pressure p_k at its surface vertices and the ball's slip s_k over each of them in the step
+(zero where the vertex sticks; half plate, mirrored about the plane of incidence y = 0). With the sliding speed
+``"sliding"`` (the default) each point wears at its own slip rate, the plate's:
 
 .. math::
 
-    w(\mathbf{x}) = \int K\, p(\mathbf{x}, t)^{\alpha}\, s(\mathbf{x}, t)\, v(t)^{\beta}\, dt
-    \approx \sum_k W_k\, p_k(\mathbf{x})^{\alpha} s_k(\mathbf{x}),
+    w(\mathbf{x}) = \int K\, p(\mathbf{x}, t)^{\alpha}\, v(\mathbf{x}, t)^{\beta}\, dt
+    \approx \sum_k K\, \frac{p_{k-1}^{\alpha} + p_k^{\alpha}}{2}\,\Delta t_k
+    \left(\frac{\lVert s_k(\mathbf{x})\rVert}{\Delta t_k}\right)^{\beta},
+
+p^α linear in time over a step and the slip at a constant rate through it (t before the first step: the impact's
+first contact, p = 0). A point in the stick zone does not slide and does not wear (β > 0); where the whole contact
+slides the slip rate is the ball's slip speed less the rate of the plate's own shear displacement
+(``tests/test_solid_chain.py`` checks the slip against Cerruti's). With ``"kinematic"`` every point in contact
+moves at the impact's rigid-body slip speed |v_t − Rω| (:func:`wear.sliding_speed`) instead, stuck or not:
+
+.. math::
+
+    w(\mathbf{x}) \approx \sum_k W_k\, p_k(\mathbf{x})^{\alpha},
     \qquad W_k = \int K\, v(t)^{\beta}\, \phi_k(t)\, dt,
 
-with s = 1 where the plate surface slips and 0 where it sticks, v the impact's sliding speed
-(:func:`wear.sliding_speed`) and φ_k the piecewise-linear hat of step k in time: the fields are linear in time between
-the plate's steps at fixed points of the plate (not in the moving frame of the contact, as the axisymmetric
-p(r/a, t) table is), which underestimates p^α where the contact edge grows between two steps; the error falls with
-the number of loading steps.
+φ_k the piecewise-linear hat of step k in time. Either way the fields are linear in time between the plate's steps
+at fixed points of the plate (not in the moving frame of the contact, as the axisymmetric p(r/a, t) table is),
+which underestimates p^α where the contact edge grows between two steps; the error falls with the number of loading
+steps.
 """
 
 from __future__ import annotations
@@ -78,13 +89,21 @@ def _on_grid(points: np.ndarray, values: np.ndarray, x: np.ndarray, y: np.ndarra
 def solid_wear_depth(solid: SolidIndentation, times: np.ndarray, speed: SlidingSpeed, law: WearLaw, x: np.ndarray,
                      y: np.ndarray) -> np.ndarray:  # fmt: skip
     """Wear depth (m, (ny, nx), positive into the plate) on the grid ``x``, ``y`` (m) of the 3-D plate's steps
-    placed at impact ``times`` (s), with the impact's sliding ``speed`` and the local wear ``law`` (module
-    docstring)."""
+    placed at impact ``times`` (s), with the local wear ``law``: at each point's own slip rate on the plate where
+    ``speed.model`` is ``"sliding"``, at the impact's rigid-body slip ``speed`` (m/s) where it is ``"kinematic"``
+    (module docstring)."""
     points, source = mirrored_surface(solid)
-    slipping = ~solid.sticking
-    rate = np.maximum(solid.pressure, 0.0) ** law.alpha * slipping
-    weights = step_weights(np.asarray(times, float), speed, law)
-    return np.maximum(_on_grid(points, (rate[:, source] * weights[:, None]).sum(axis=0), x, y), 0.0)
+    times = np.asarray(times, float)
+    pressed = np.maximum(solid.pressure, 0.0) ** law.alpha
+    if speed.model == "sliding":
+        start = min(float(speed.time[0]), float(times[0]))
+        step = np.diff(np.r_[start, times])
+        before = np.vstack([np.zeros_like(pressed[:1]), pressed[:-1]])
+        rate = np.linalg.norm(solid.slip, axis=2) / np.maximum(step, 1e-300)[:, None]
+        worn = law.K * 0.5 * (before + pressed) * step[:, None] * rate**law.beta
+    else:
+        worn = pressed * step_weights(times, speed, law)[:, None]
+    return np.maximum(_on_grid(points, worn[:, source].sum(axis=0), x, y), 0.0)
 
 
 def solid_dent_depth(solid: SolidIndentation, x: np.ndarray, y: np.ndarray) -> np.ndarray:
