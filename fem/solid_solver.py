@@ -247,7 +247,10 @@ class SolidSolver:
             if (np.max(np.abs(du_c), initial=0.0) <= self.gap_tol and stick_error <= self.gap_tol
                     and residual <= self.rtol * scale):  # fmt: skip
                 return u, upd, f, it
-            if it > 0 and residual > 1e6 * scale:
+            if it == 0:
+                start_size = max(residual, scale)
+            elif not residual <= 1e6 * max(min(scale, start_size), 1e3 * self.atol / self.rtol):
+                # diverging: the contact forces grow with the residual, so the bound is the increment's first size
                 break
             K = self._tangent(upd, elastic)
             rhs = residual_vector

@@ -172,7 +172,8 @@ def test_gross_slip_field_matches_cerruti():
     """Hertz load applied without friction, then the ball slid by ξ = 2 ξ_max at μ = 0.3 in one step: the whole
     contact slides (Q = μP) under q = μp0 √(1 − r²/a²), whose surface displacement is Cerruti's (Johnson 1985 §3.6
     and Eq. 7.39): u_x = πq0/(32Ga) [4(2 − ν)a² − (4 − 3ν)x² − (4 − ν)y²], u_y = πq0/(32Ga) 2ν x y. The plate's slip
-    over each vertex in the step, ξ e_x − Δu, within 4% of ξ_max of that (r < 0.8a; the wear's slip field)."""
+    over each vertex in the step, ξ e_x − Δu, within 5% of ξ_max of that (r < 0.8a; the wear's slip field), the
+    bound of the Cattaneo–Mindlin check (measured: 3.9%)."""
     mu = 0.3
     plate = Material(E=E, nu=NU, density=7800.0)
     a_max = 1e-4
@@ -191,4 +192,4 @@ def test_gross_slip_field_matches_cerruti():
     u_y = scale * 2.0 * NU * x * y
     expected = np.column_stack([result.slide[1] - u_x, -u_y])[inside]
     error = np.abs(result.slip[1][inside] - expected).max() / xi_max
-    assert inside.sum() > 20 and error < 0.04, error
+    assert inside.sum() > 20 and error < 0.05, error

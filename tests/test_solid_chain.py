@@ -63,6 +63,10 @@ def test_3d_outputs(frictionless, tmp_path):
     assert y.min() == pytest.approx(-y.max())
     assert np.max(mesh.cell_data["equivalent_plastic_strain"][0]) > 0.0
     assert (tmp_path / "out" / "plastic_zone.png").is_file()
+    with np.load(tmp_path / "out" / "pressure.npz") as fields:
+        # the slip field beside the pressure: one (x, y) slip per step and surface vertex
+        steps, vertices = fields["fe3d_pressure_Pa"].shape
+        assert fields["fe3d_slip_m"].shape == (steps, vertices, 2)
     saved = json.loads((tmp_path / "out" / "summary.json").read_text())
     assert saved["plate_3d"]["increments"] == summary["plate_3d"]["increments"] > 0
     # the impact ran on the plate's tangential law, and the case written with the run says so

@@ -36,7 +36,8 @@ PRESSURE_ABOUT = (
     "fe_surface_r_m and fe_pressure_Pa[i, j]: the FE plate's contact pressure at its surface nodes. With the 3-D "
     "plate (fem.model = '3d') the pressure above is its profile across the track, and fe3d_time_s[i], "
     "fe3d_surface_xy_m[j] (surface vertices of the half plate y >= 0), fe3d_pressure_Pa[i, j], fe3d_shear_Pa[i, j, 2] "
-    "(traction on the plate, x and y) and fe3d_sticking[i, j] are its fields."
+    "(traction on the plate, x and y), fe3d_sticking[i, j] and fe3d_slip_m[i, j, 2] (the ball's slip over the "
+    "vertex in the step ending at i, x and y) are its fields."
 )
 
 #: history.csv columns: :class:`contact.History` field → column name with units.
@@ -87,7 +88,8 @@ def write_run(result: RunResult, out: str | os.PathLike, progress: Callable[[str
         if result.solid is not None:
             s = result.solid.solid
             arrays.update(fe3d_time_s=result.solid.times, fe3d_surface_xy_m=s.surface_vertices[:, :2],
-                          fe3d_pressure_Pa=s.pressure, fe3d_shear_Pa=s.shear, fe3d_sticking=s.sticking)  # fmt: skip
+                          fe3d_pressure_Pa=s.pressure, fe3d_shear_Pa=s.shear, fe3d_sticking=s.sticking,
+                          fe3d_slip_m=s.slip)  # fmt: skip
         write_npz(tmp / "pressure.npz", arrays)
         surf_mesh = surface_mesh(result.surface)
         write_mesh(tmp / "surface.vtu", surf_mesh)
