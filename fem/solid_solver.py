@@ -334,8 +334,8 @@ class SolidSolver:
         x and y rows (no y row on the symmetry plane: there τ_y = 0 by symmetry). Their multipliers, times the rows'
         scales, are the stick vertices' tangential hat moments (N): a multiplier's loads have no moment at the
         neighbouring vertices, so the cone of a stick vertex and the slip traction of its slipping neighbours do
-        not share forces. Returns (rows over all DOFs, each scaled to a
-        unit sum of absolute values so that its error is a length in m, targets in m, row ids 2·vertex + component).
+        not share forces. Returns (rows over all DOFs, each scaled to a unit sum of absolute values so that its error
+        is a length in m, targets in m, row ids 2·vertex + component).
         """
         d = self.disc
         vertex_rows = self.node_vertices[self.is_vertex, 0]

@@ -15,7 +15,7 @@ time t_k, the contact pressure p_k at its surface vertices and the ball's slip s
 p^α linear in time over a step and the slip at a constant rate through it (t before the first step: the impact's
 first contact, p = 0). A point in the stick zone does not slide and does not wear (β > 0); where the whole contact
 slides the slip rate is the ball's slip speed less the rate of the plate's own shear displacement
-(``tests/test_solid_chain.py`` checks the slip against Cerruti's). With ``"kinematic"`` every point in contact
+(``tests/test_fem_solid.py`` checks the slip against Cerruti's). With ``"kinematic"`` every point in contact
 moves at the impact's rigid-body slip speed ``|v_t − Rω|`` (:func:`wear.sliding_speed`) instead, stuck or not:
 
 .. math::
