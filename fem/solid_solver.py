@@ -233,8 +233,9 @@ class SolidSolver:
             slipping = slip_vertices is not None and slip_vertices.any()
             f_ext = np.zeros(d.ndofs)
             if slipping:
-                # (H f_t)_j = μ (H f_n)_j⁺ ŝ_j at the slipping vertices
-                normal_moments = np.asarray(d.surface_hats @ (-f[self.uz]))
+                # (H f_t)_j = μ (H f_n)_j⁺ ŝ_j at the slipping vertices; the ball presses the contact nodes only
+                # (elsewhere f_n is the equilibrium residual, which would enter the tangent)
+                normal_moments = np.asarray(d.surface_hats @ (-f[self.uz] * contact))
                 f_ext = self._moment_loads((mu * np.maximum(normal_moments, 0.0) * slip_vertices)[:, None] * direction)
             residual_vector = f_ext - f
             # the stick tractions (the multipliers of the last solve) balance the residual on the stick zone
@@ -270,7 +271,7 @@ class SolidSolver:
             key = constrained.tobytes() + (b"elastic" if elastic else b"")
             coupling = None
             if slipping:
-                coupling = self._slip_linearisation(K, normal_moments, direction, slip_vertices, mu, keep)
+                coupling = self._slip_linearisation(K, normal_moments, direction, slip_vertices, mu, keep, contact)
             try:
                 if rows is None:
                     du = self.linear.solve(K_mod, rhs, tolerance, key, coupling)
@@ -288,21 +289,23 @@ class SolidSolver:
                 u = u + du
         raise _NotConverged(residual)
 
-    def _slip_linearisation(self, K, normal_moments, direction, slip_vertices, mu: float, keep: np.ndarray):
+    def _slip_linearisation(
+        self, K, normal_moments, direction, slip_vertices, mu: float, keep: np.ndarray, contact: np.ndarray
+    ):
         r"""The change of the slip tractions' nodal loads with the displacement, as a function of a displacement
         change v (m) to loads (N) on the free DOFs ``keep``: the slip traction follows the normal hat moments, whose
         nodal forces are the normal rows of K v,
 
-        .. math:: \delta f_t = L\,M^{-1}\,\mu\,\hat s\;H\,(-K v)_z
+        .. math:: \delta f_t = L\,M^{-1}\,\mu\,\hat s\;H\,(-K v)_z\big|_{contact}
 
         (L the linear traction's consistent loads, M⁻¹ the hat moments to the linear field; ŝ held at the set's
-        direction; ``normal_moments`` the iterate's (N), whose positive part the traction follows). It makes
-        Newton's tangent the consistent, nonsymmetric one, K − ∂f_t/∂u: the lagged slip traction made Newton a
-        fixed-point iteration of 14–19 iterations per frictional increment."""
+        direction; ``normal_moments`` the iterate's (N) of the forces on the ``contact`` nodes, whose positive part
+        the traction follows). It makes Newton's tangent the consistent, nonsymmetric one, K − ∂f_t/∂u: the lagged
+        slip traction made Newton a fixed-point iteration of 14–19 iterations per frictional increment."""
         pressed = mu * slip_vertices * (normal_moments > 0.0)
 
         def coupling(v: np.ndarray) -> np.ndarray:
-            moments = np.asarray(self.disc.surface_hats @ (-(K @ v)[self.uz]))
+            moments = np.asarray(self.disc.surface_hats @ (-(K @ v)[self.uz] * contact))
             return self._moment_loads((pressed * moments)[:, None] * direction) * keep
 
         return coupling
