@@ -130,7 +130,6 @@ class SolidRecorder:
 
     def __init__(self, solver: SolidSolver) -> None:
         self.solver = solver
-        self.vertex_rows = solver.node_vertices[solver.is_vertex, 0]
         self.records: dict[str, list] = {
             k: [] for k in ("P", "Q", "a", "c", "pmax", "eps", "it", "p", "tau", "st", "slip")
         }
@@ -142,12 +141,11 @@ class SolidRecorder:
         slip (m) over each vertex in contact since the last recorded step (the first: since the unloaded plate)."""
         solver, d = self.solver, self.solver.disc
         normal, shear = solver.surface_forces(state)
-        pressure = solver.vertex_field(normal)
-        traction = solver.vertex_field(shear)
-        in_contact = np.zeros(pressure.size, bool)
-        in_contact[self.vertex_rows] = state.contact[solver.is_vertex]
-        sticking = np.zeros(pressure.size, bool)
-        sticking[self.vertex_rows] = state.stick[solver.is_vertex]
+        surface = solver.surface
+        pressure = surface.vertex_field(normal)
+        traction = surface.vertex_field(shear)
+        in_contact = surface.vertex_mask(state.contact)
+        sticking = surface.vertex_mask(state.stick)
         before = self.states[-1] if self.states else solver.initial_state()
         nodes = d.surface_vertex_nodes
         moved = (state.u - before.u).reshape(-1, 3)[nodes, :2]

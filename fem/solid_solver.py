@@ -6,31 +6,14 @@ velocity of the impact model). The plate's surface nodes obey
 
 * **contact** (node by node): u_z,i ≤ z_s(ρ_i) − z_i with ρ_i = √((x_i − c)² + y_i²) and z_s the sphere's surface
   (:func:`fem.sphere_contact.sphere_surface`); a node in contact has u_z prescribed there;
-* **stick** (weakly, on each sticking vertex j): Σ_i G̃_ij (u_t,i − u_t,i(start) − Δξ e_x) = 0, with G̃ the
-  loads of the vertices' dual functions on the quadratic nodes (:mod:`fem.forms3d`; a dual mortar: Wohlmuth 2000),
-  whose multipliers are the stick tractions; the hat moment of a multiplier's loads is its own vertex's only;
-* **slip**: at every other vertex the ball's tangential force is μ times its normal force, on the vertices' hat
-  moments (the forces each vertex's share of the surface carries):
+* **friction**: the discrete Coulomb law on the surface vertices (:mod:`fem.coulomb3d`): weak stick constraints on
+  the sticking vertices' dual functions, whose multipliers are the stick tractions, and at every other vertex the
+  ball's tangential hat moment μ times its normal one, a load that follows the normal force.
 
-  .. math:: (H f_t)_j = \mu\,\max\bigl((H f_n)_j, 0\bigr)\,\hat s_j,
-
-  laid down as the linear traction field with those moments, τ = M⁻¹ μ (H f_n)⁺ ŝ (its loads' moments are zero at
-  the stick vertices), ŝ_j the vertex's slip direction. Where the whole contact slides, the tangential force is then
-  μ times the normal force exactly (Σ_j (H f_n)_j = P); the same traction on the projected pressure field, μ p⁺ ŝ,
-  exceeded μP by the negative lobes of the projection just outside the contact (∫p⁺/∫p = 1.03 on the default mesh).
-
-The pressure p and the shear τ reported are the fields linear between the surface vertices with those hat moments
-(as on the axisymmetric plate). Nodes that penetrate join the contact, nodes where the pressure is negative leave
-it. The stick set follows Coulomb's law returned vertex by vertex on the trial traction τ + c s (the active set of a
-semi-smooth Newton method; Hüeber, Stadler & Wohlmuth 2008): a stick vertex slips where its traction leaves the
-cone ‖τ‖ ≤ μp, along that traction; a slipping one sticks where its trial traction falls inside the cone (its slip
-turns back against the traction). Releasing a vertex on the cone alone and sending it along the ball's slide set off
-a cascade to full reverse slip where the slide turned (an elastic impact's plate slid at −1.04 μP where
-Mindlin–Deresiewicz gives −0.07 μP). Where the ball's slide reverses, the whole contact sticks first (Mindlin's
-unloading). Newton linearises the slip traction with the normal force it follows (a nonsymmetric tangent; lagged,
-it made Newton a fixed-point iteration of 14–19 iterations an increment). A stick constraint on the quadratic nodes
-themselves (node by node) would leave the mid-edge nodes between a stick and a slip vertex to one side or the other:
-±6–7% on the tangential compliance of a Cattaneo–Mindlin contact on the default mesh.
+Nodes that penetrate join the contact, nodes where the pressure is negative leave it; the stick set is Coulomb's law
+returned vertex by vertex (:meth:`fem.coulomb3d.SurfaceFriction.update_stick`). Each contact and stick set is solved
+by Newton with the consistent tangent (the slip traction's linearisation makes it nonsymmetric), backtracking along
+a step that would raise the residual; an increment whose sets do not settle in a few rounds is cut in halves.
 
 Plasticity is the same J2 radial return as the axisymmetric plate (:mod:`fem.plasticity`, 6 Mandel components).
 Linear solves: the constrained rows become s·I, the stick rows enter as an augmented Lagrangian (one multiplier
@@ -47,9 +30,9 @@ from functools import partial
 
 import numpy as np
 import scipy.sparse as sp
-import scipy.sparse.linalg as spla
 from skfem import MeshTet
 
+from fem.coulomb3d import SurfaceFriction
 from fem.forms import assemble, element_matrices, internal_force, strain
 from fem.forms3d import discretise_solid
 from fem.kept_factor import KeptFactor, SolveCounters
@@ -138,22 +121,11 @@ class SolidSolver:
         # slide on a plastic dent (μ = 0.5, 30°) the rounds of a whole increment released ring after ring towards
         # gross slip and failed after 9 rounds, where its halves settled in 3 rounds each
         self.max_set_updates = 6
-        self.cone_tolerance = 0.05
         self.stats = SolidStats()
         self.tangent_elastic = material.elastic_tangent_of(6)
         self.elastic_element_matrices = element_matrices(d, self.tangent_elastic)
-        self.uz = d.surface_dofs(2)
-        self.ut = np.stack([d.surface_dofs(0), d.surface_dofs(1)], axis=1)
-        nvert = mesh.p.shape[1]
-        # the two end vertices (rows of the hats) of every surface node: a vertex twice
-        rows = d.surface_hats.tocsc()
-        self.node_vertices = np.array(
-            [rows.indices[rows.indptr[i] : rows.indptr[i + 1]][[0, -1]] for i in range(d.surface_nodes.size)]
-        )
-        self.is_vertex = d.surface_nodes < nvert
-        self.on_symmetry = np.abs(d.surface_xy[:, 1]) <= 1e-9 * float(np.ptp(d.nodes[0]))
-        self.mass_lu = spla.splu(d.surface_hat_mass.tocsc())
-        self.area = np.maximum(d.surface_area, 1e-300)
+        self.surface = SurfaceFriction(d, mesh.p.shape[1], material.shear, material.nu)
+        self.uz, self.ut = self.surface.uz, self.surface.ut
         self.linear = KeptFactor(self.stats, max_krylov=15)
         nel, nq = d.weight.shape
         self._zero_plastic = np.zeros((nel, nq, 6))
@@ -174,22 +146,10 @@ class SolidSolver:
         rho = np.hypot(xy[:, 0] - centre, xy[:, 1])
         return sphere_surface(rho, overlap, self.radius) - self.disc.nodes[2, self.disc.surface_nodes]
 
-    def vertex_field(self, nodal: np.ndarray) -> np.ndarray:
-        """The linear field (per surface vertex) whose hat moments are those of the nodal forces ``nodal``
-        (surface nodes, ...) in N: a traction in Pa."""
-        return self.mass_lu.solve(np.asarray(self.disc.surface_hats @ nodal, dtype=float))
-
     def surface_forces(self, state: SolidState) -> tuple[np.ndarray, np.ndarray]:
         """The ball's forces on the surface nodes (N): normal (positive pressing) and tangential (x, y)."""
         f = internal_force(self.disc, self.stress_update(state).stress)
-        return -f[self.uz], self._ball_shear(f)
-
-    def _ball_shear(self, f: np.ndarray) -> np.ndarray:
-        """Tangential nodal forces (surface nodes, 2) of the ball from the internal force ``f`` (N): on the
-        symmetry plane the y force is the mirror half's reaction, not the ball's."""
-        shear = f[self.ut]
-        shear[self.on_symmetry, 1] = 0.0
-        return shear
+        return -f[self.uz], self.surface.ball_shear(f)
 
     def stress_update(self, state: SolidState, reference: SolidState | None = None):
         """Stress update of ``state.u`` from ``reference`` (default: the state itself, i.e. its stresses)."""
@@ -197,19 +157,6 @@ class SolidSolver:
         return radial_return(self.material, strain(self.disc, state.u), ref.plastic_strain, ref.alpha)
 
     # -- one increment
-    def _moment_loads(self, moments: np.ndarray) -> np.ndarray:
-        """Nodal loads (N, all DOFs) of the linear shear traction field whose hat moments are ``moments``
-        (surface vertices, 2) in N."""
-        return self._shear_loads(self.mass_lu.solve(np.ascontiguousarray(moments)))
-
-    def _shear_loads(self, tau: np.ndarray) -> np.ndarray:
-        """Consistent nodal loads (N, all DOFs) of a shear traction field ``tau`` (surface vertices, 2) in Pa."""
-        loads = self.disc.surface_loads @ tau
-        out = np.zeros(self.disc.ndofs)
-        out[self.ut[:, 0]] = loads[:, 0]
-        out[self.ut[:, 1]] = loads[:, 1]
-        return out
-
     def _equilibrate(
         self, start: SolidState, target: tuple[float, float, float], u, contact, stick, direction, mu, elastic=False
     ):
@@ -227,8 +174,9 @@ class SolidSolver:
         values = values[constrained]
         free = np.ones(d.ndofs, bool)
         free[constrained] = False
-        slip_vertices = self._slip_vertices(stick) if mu > 0.0 else None
-        rows, targets, row_ids = self._stick_rows(start, slide, contact, stick, free) if mu > 0.0 else (None,) * 3
+        friction = self.surface
+        slip_vertices = friction.slip_vertices(stick) if mu > 0.0 else None
+        rows, targets, row_ids = friction.stick_rows(start, slide, contact, stick, free) if mu > 0.0 else (None,) * 3
         if rows is not None and rows.shape[0] == 0:
             rows = None
         multipliers = np.zeros(0 if rows is None else rows.shape[0])
@@ -268,7 +216,7 @@ class SolidSolver:
             key = constrained.tobytes() + (b"elastic" if elastic else b"")
             coupling = None
             if slipping:
-                coupling = self._slip_linearisation(K, normal_moments, direction, slip_vertices, mu, keep, contact)
+                coupling = friction.slip_linearisation(K, normal_moments, direction, slip_vertices, mu, keep, contact)
             try:
                 if rows is None:
                     du, new_multipliers = self.linear.solve(K_mod, rhs, tolerance, key, coupling), multipliers
@@ -303,10 +251,8 @@ class SolidSolver:
         f = internal_force(d, upd.stress)
         residual_vector, normal_moments = -f, None
         if slip_vertices is not None:
-            # the ball presses the contact nodes only (elsewhere f_n is the equilibrium residual)
-            normal_moments = np.asarray(d.surface_hats @ (-f[self.uz] * contact))
-            moments = mu * np.maximum(normal_moments, 0.0) * slip_vertices
-            residual_vector = residual_vector + self._moment_loads(moments[:, None] * direction)
+            slip_loads, normal_moments = self.surface.slip_loads(f, contact, slip_vertices, direction, mu)
+            residual_vector = residual_vector + slip_loads
         # the stick tractions (the multipliers of the last solve) balance the residual on the stick zone
         balanced = residual_vector if rows is None else residual_vector - rows.T @ multipliers
         return upd, f, normal_moments, residual_vector, balanced
@@ -331,27 +277,6 @@ class SolidSolver:
             fraction *= 0.5
         return None
 
-    def _slip_linearisation(
-        self, K, normal_moments, direction, slip_vertices, mu: float, keep: np.ndarray, contact: np.ndarray
-    ):
-        r"""The change of the slip tractions' nodal loads with the displacement, as a function of a displacement
-        change v (m) to loads (N) on the free DOFs ``keep``: the slip traction follows the normal hat moments, whose
-        nodal forces are the normal rows of K v,
-
-        .. math:: \delta f_t = L\,M^{-1}\,\mu\,\hat s\;H\,(-K v)_z\big|_{contact}
-
-        (L the linear traction's consistent loads, M⁻¹ the hat moments to the linear field; ŝ held at the set's
-        direction; ``normal_moments`` the iterate's (N) of the forces on the ``contact`` nodes, whose positive part
-        the traction follows). It makes Newton's tangent the consistent, nonsymmetric one, K − ∂f_t/∂u: the lagged
-        slip traction made Newton a fixed-point iteration of 14–19 iterations per frictional increment."""
-        pressed = mu * slip_vertices * (normal_moments > 0.0)
-
-        def coupling(v: np.ndarray) -> np.ndarray:
-            moments = np.asarray(self.disc.surface_hats @ (-(K @ v)[self.uz] * contact))
-            return self._moment_loads((pressed * moments)[:, None] * direction) * keep
-
-        return coupling
-
     def _accelerate(self, history: list, u: np.ndarray, du: np.ndarray, depth: int = 6) -> np.ndarray:
         r"""Anderson acceleration (type II, Walker & Ni 2011) of the initial-stiffness iteration u ← u + K_e⁻¹ r(u):
         with the last ``depth`` iterates' differences ΔU, ΔG of u and of the steps du,
@@ -369,42 +294,6 @@ class SolidSolver:
         dG = np.stack([b[1] - a[1] for a, b in zip(history[:-1], history[1:], strict=True)], axis=1)
         gamma = np.linalg.lstsq(dG, du, rcond=None)[0]
         return u + du - (dU + dG) @ gamma
-
-    def _stick_rows(self, start: SolidState, slide: float, contact, stick, free) -> tuple[sp.csr_matrix, np.ndarray]:
-        r"""The stick constraints, weak on each sticking vertex's dual function φ̃_j (the dual mortar pairing with
-        the quadratic displacements, :mod:`fem.forms3d`):
-
-        .. math:: \sum_i \tilde G_{ij}\,\bigl(u_{t,i} - u_{t,i}^{start} - \Delta\xi\, e_x\bigr) = 0,
-
-        x and y rows (no y row on the symmetry plane: there τ_y = 0 by symmetry). Their multipliers, times the rows'
-        scales, are the stick vertices' tangential hat moments (N): a multiplier's loads have no moment at the
-        neighbouring vertices, so the cone of a stick vertex and the slip traction of its slipping neighbours do
-        not share forces. Returns (rows over all DOFs, each scaled to a unit sum of absolute values so that its error
-        is a length in m, targets in m, row ids 2·vertex + component).
-        """
-        d = self.disc
-        vertex_rows = self.node_vertices[self.is_vertex, 0]
-        sticking = np.zeros(d.surface_vertex_nodes.size, bool)
-        sticking[vertex_rows] = (stick & contact)[self.is_vertex]
-        loads = d.surface_dual_loads[:, sticking].T.tocsr()  # (k, surface nodes)
-        on_plane = np.abs(d.nodes[1, d.surface_vertex_nodes[sticking]]) <= 1e-9 * float(np.ptp(d.nodes[0]))
-        blocks, targets, ids = [], [], []
-        vertex_ids = np.flatnonzero(sticking)
-        for component, keep_rows in ((0, slice(None)), (1, ~on_plane)):
-            ids.append(2 * vertex_ids[keep_rows] + component)
-            block = loads[keep_rows]
-            dofs = self.ut[:, component]
-            coo = block.tocoo()
-            columns = dofs[coo.col]
-            mask = free[columns]
-            blocks.append(sp.csr_matrix((coo.data[mask], (coo.row[mask], columns[mask])),
-                                        shape=(block.shape[0], d.ndofs)))  # fmt: skip
-            moved = start.u[dofs] + ((slide - start.slide) if component == 0 else 0.0)
-            targets.append(block @ moved)
-        rows, targets = sp.vstack(blocks).tocsr(), np.concatenate(targets)
-        sums = np.asarray(abs(rows).sum(axis=1)).ravel()
-        sums[sums == 0.0] = 1.0
-        return (sp.diags(1.0 / sums) @ rows).tocsr(), targets / sums, np.concatenate(ids)
 
     def _augmented_step(self, K_mod, rhs, rows, row_ids, defect, multipliers, key: bytes, tolerance: float, coupling):
         r"""One Newton step of the stuck system [[K_mod, Cᵀ], [C, 0]] [du; λ] = [rhs; defect] as an augmented
@@ -431,14 +320,6 @@ class SolidSolver:
             augmented, rhs - rows.T @ multipliers + rho * (rows.T @ defect), tolerance, full_key, coupling
         )
         return du, multipliers + rho * (rows @ du - defect)
-
-    def _slip_vertices(self, stick: np.ndarray) -> np.ndarray:
-        """Surface vertices that do not stick: those with a positive normal moment slip (a vertex just outside the
-        contact nodes carries the moments of its edges' mid-edge nodes in contact)."""
-        vertex_rows = self.node_vertices[self.is_vertex, 0]
-        slip = np.ones(self.disc.surface_vertex_nodes.size, bool)
-        slip[vertex_rows] = ~stick[self.is_vertex]
-        return slip
 
     def _tangent(self, upd, elastic: bool = False) -> sp.csr_matrix:
         d = self.disc
@@ -471,7 +352,7 @@ class SolidSolver:
                 self.stats.elastic_retries += 1
             spent += it
             normal = -f[self.uz]
-            p_vertex = self.vertex_field(normal)
+            p_vertex = self.surface.vertex_field(normal)
             p_node = self.disc.surface_hats.T @ p_vertex
             p_scale = max(float(np.max(np.abs(p_vertex), initial=0.0)), 1e-300)
             gap = obstacle - u[self.uz]
@@ -480,7 +361,7 @@ class SolidSolver:
             new_contact = (contact & ~pulling) | penetrating
             new_stick, new_direction = stick & new_contact, direction
             if mu > 0.0:
-                new_stick, new_direction = self._update_stick(start, target, u, f, stick, direction, new_contact,
+                new_stick, new_direction = self.surface.update_stick(start, target, u, f, stick, direction, new_contact,
                                                               p_vertex, mu, released)  # fmt: skip
                 released |= stick & ~new_stick
             key = new_contact.tobytes() + new_stick.tobytes()
@@ -498,49 +379,6 @@ class SolidSolver:
             contact, stick, direction = new_contact, new_stick, new_direction
         raise _NotConverged(float("nan"))
 
-    def _update_stick(self, start, target, u, f, stick, direction, new_contact, p_vertex, mu, released):
-        """The stick set and slip directions after one equilibrium: Coulomb's law returned vertex by vertex (the
-        active set of a semi-smooth Newton method; Hüeber, Stadler & Wohlmuth 2008). With the vertex's traction τ
-        and its slip s in the increment, the trial traction τ + c s (c = G/h, the plate's shear modulus over the
-        size h of the vertex's hat) sticks inside the cone μp and slips along itself outside it. A stick vertex
-        (s = 0) thus slips where its traction leaves the cone, along that traction; a slipping one (τ = μpŝ) goes on
-        where it keeps to its way and sticks where its slip turns back against its traction (unless it was
-        ``released`` from the stick set in this increment: within one increment the set only shrinks after that,
-        which ends the cycles a coarse stick boundary can set off)."""
-        vertex_rows = self.node_vertices[self.is_vertex, 0]
-        tau = self.vertex_field(self._ball_shear(f))
-        sticks = np.zeros(p_vertex.size, bool)
-        sticks[vertex_rows] = stick[self.is_vertex]
-        in_contact = np.zeros(p_vertex.size, bool)
-        in_contact[vertex_rows] = new_contact[self.is_vertex]
-        magnitude = np.linalg.norm(tau, axis=1)
-        cone = mu * np.maximum(p_vertex, 0.0)
-        # the projected traction overshoots the cone by a few per cent at a discrete stick edge (where the
-        # continuum's ‖τ‖/μp → 1 like 1 − √(c − r)); releasing on that overshoot sets off a cascade to gross slip
-        floor = 1e-3 * max(float(cone.max(initial=0.0)), 1e-300)
-        leave = sticks & (magnitude > (1.0 + self.cone_tolerance) * cone + floor)
-        nodal_slip = np.stack([target[2] - start.slide - (u[self.ut[:, 0]] - start.u[self.ut[:, 0]]),
-                               -(u[self.ut[:, 1]] - start.u[self.ut[:, 1]])], axis=1)  # fmt: skip
-        # the slip at each vertex as the stick constraint weighs it (zero at a stick vertex): the quadratic field's
-        # own vertex values carry the corner/mid-edge alternation of its reactions
-        area = self.area
-        slip = np.asarray(self.disc.surface_dual_loads.T @ nodal_slip) / area[:, None]
-        # the trial traction: a slipping vertex's traction carries the direction while its slip is small (the
-        # direction of a small slip is noise that turned the slip zone's traction sideways), its slip once large
-        trial = cone[:, None] * direction + (self.material.shear / np.sqrt(area))[:, None] * slip
-        trial_size = np.linalg.norm(trial, axis=1)
-        was_released = np.zeros(p_vertex.size, bool)
-        was_released[vertex_rows] = released[self.is_vertex]
-        restick = in_contact & ~sticks & ~was_released & (trial_size < cone)
-        new_direction = direction.copy()
-        moving = ~sticks & ~restick & (trial_size > 0.0)
-        new_direction[moving] = trial[moving] / trial_size[moving, None]
-        released_now = leave & (magnitude > 0.0)
-        new_direction[released_now] = tau[released_now] / magnitude[released_now, None]
-        vertex_sticks = in_contact & ((sticks & ~leave) | restick)
-        ends = self.node_vertices
-        return new_contact & vertex_sticks[ends[:, 0]] & vertex_sticks[ends[:, 1]], new_direction
-
     def _guess(self, state: SolidState, previous: SolidState | None, target, mu: float):
         overlap, centre, slide = target
         obstacle = self.obstacle(overlap, centre)
@@ -553,33 +391,7 @@ class SolidSolver:
             rho = np.hypot(self.disc.surface_xy[:, 0] - centre, self.disc.surface_xy[:, 1])
             contact = rho < np.sqrt(self.radius * max(overlap, 0.0))
         last_step = 0.0 if previous is None else state.slide - previous.slide
-        return u0, contact, self._stick_guess(state, target, contact, mu, last_step), state.direction
-
-    def _stick_guess(self, state: SolidState, target, contact: np.ndarray, mu: float, last_step: float = 0.0):
-        """The stick set an increment starts from. Where the slide reverses against ``last_step`` (m, the slide of
-        the increment before), the whole contact sticks and releases from the edge where the cone is exceeded
-        (Mindlin's unloading, Johnson §7.3). In partial slip a node that comes into contact sticks first;
-        after a frictionless history the whole contact does (and releases where the cone is exceeded). After gross
-        sliding the contact slips on while the slide goes on the same way, and sticks when it reverses. At first
-        contact (normal and tangential loads applied together) it all slips if the slide reaches Mindlin's
-        gross-slip slide of the target overlap, μδ(2 − ν)/(2(1 − ν)) for a rigid sphere on a Hertzian plate
-        (Johnson Eq. 7.42 with Hertz's P and a), else it sticks. A start on the wrong side costs a release (or
-        stick) round per ring of vertices, each with its own stick factor."""
-        if mu <= 0.0:
-            return np.zeros_like(contact)
-        step = target[2] - state.slide
-        if step * last_step < 0.0:
-            return contact.copy()
-        if state.stick.any():
-            return (state.stick | ~state.contact) & contact
-        if state.friction > 0.0 and state.contact.any():
-            previous = float(np.mean(state.direction[:, 0]))
-            return contact if step * previous <= 0.0 else np.zeros_like(contact)
-        if state.contact.any():
-            return contact
-        nu = self.material.nu
-        gross = mu * target[0] * (2.0 - nu) / (2.0 * (1.0 - nu))
-        return np.zeros_like(contact) if abs(step) >= gross else contact
+        return u0, contact, self.surface.stick_guess(state, target, contact, mu, last_step), state.direction
 
     def advance(
         self, state: SolidState, previous: SolidState | None, target: tuple[float, float, float],
