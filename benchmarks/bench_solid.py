@@ -76,6 +76,8 @@ def main() -> None:
     print(f"  Newton iterations:                     {stats.iterations:8d}")
     print(f"  factorisations / factor applications:  {stats.factorisations:8d} / {stats.solves}")
     print(f"  factorisation time:                    {stats.factor_time:8.1f} s")
+    print(f"  set rounds / cut increments:           {stats.set_updates:8d} / {stats.cuts}")
+    print(f"  line-search backtracks / elastic retries: {stats.backtracks:5d} / {stats.elastic_retries}")
     print(f"  one linear elastic solve, same mesh:   {solve:8.2f} s")
     print(f"  cost per increment:                    {per_increment:8.2f} s = {per_increment / solve:.1f} "
           "solve-equivalents (goal <= 5)")  # fmt: skip
