@@ -174,9 +174,9 @@ class SolidSolver:
         values = values[constrained]
         free = np.ones(d.ndofs, bool)
         free[constrained] = False
-        friction = self.surface
-        slip_vertices = friction.slip_vertices(stick) if mu > 0.0 else None
-        rows, targets, row_ids = friction.stick_rows(start, slide, contact, stick, free) if mu > 0.0 else (None,) * 3
+        surface = self.surface
+        slip_vertices = surface.slip_vertices(stick) if mu > 0.0 else None
+        rows, targets, row_ids = surface.stick_rows(start, slide, contact, stick, free) if mu > 0.0 else (None,) * 3
         if rows is not None and rows.shape[0] == 0:
             rows = None
         multipliers = np.zeros(0 if rows is None else rows.shape[0])
@@ -216,7 +216,7 @@ class SolidSolver:
             key = constrained.tobytes() + (b"elastic" if elastic else b"")
             coupling = None
             if slipping:
-                coupling = friction.slip_linearisation(K, normal_moments, direction, slip_vertices, mu, keep, contact)
+                coupling = surface.slip_linearisation(K, normal_moments, direction, slip_vertices, mu, keep, contact)
             try:
                 if rows is None:
                     du, new_multipliers = self.linear.solve(K_mod, rhs, tolerance, key, coupling), multipliers
@@ -229,10 +229,12 @@ class SolidSolver:
             self.stats.iterations += 1
             if elastic:
                 # the initial-stiffness iteration is no Newton method: its steps are taken whole
-                u = self._accelerate(history, u, du) if not du_c.any() else u + du
-                multipliers = new_multipliers
                 if du_c.any():
                     history.clear()
+                    u = u + du
+                else:
+                    u = self._accelerate(history, u, du)
+                multipliers = new_multipliers
             else:
                 searched = self._line_search(balance, free, u, step, du, multipliers, new_multipliers, residual)
                 if searched is None:
