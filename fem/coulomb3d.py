@@ -41,6 +41,7 @@ import scipy.sparse.linalg as spla
 from fem.forms3d import SolidDiscretisation
 
 if TYPE_CHECKING:
+    # the solver's state, for the annotations only (fem.solid_solver imports this module)
     from fem.solid_solver import SolidState
 
 __all__ = ["SurfaceFriction"]
