@@ -69,6 +69,7 @@ class SurfaceFriction:
         )
         self.is_vertex = d.surface_nodes < vertex_count
         self.on_symmetry = np.abs(d.surface_xy[:, 1]) <= 1e-9 * float(np.ptp(d.nodes[0]))
+        self.vertex_on_symmetry = self.vertex_mask(self.on_symmetry)
         self.mass_lu = spla.splu(d.surface_hat_mass.tocsc())
         self.area = np.maximum(d.surface_area, 1e-300)
 
@@ -149,7 +150,7 @@ class SurfaceFriction:
         d = self.disc
         sticking = self.vertex_mask(stick & contact)
         loads = d.surface_dual_loads[:, sticking].T.tocsr()  # (k, surface nodes)
-        on_plane = np.abs(d.nodes[1, d.surface_vertex_nodes[sticking]]) <= 1e-9 * float(np.ptp(d.nodes[0]))
+        on_plane = self.vertex_on_symmetry[sticking]
         blocks, targets, ids = [], [], []
         vertex_ids = np.flatnonzero(sticking)
         for component, keep_rows in ((0, slice(None)), (1, ~on_plane)):

@@ -235,12 +235,12 @@ class SolidSolver:
                 else:
                     u = self._accelerate(history, u, du)
                 multipliers = new_multipliers
+                upd, f, normal_moments, residual_vector, balanced = balance(u, multipliers)
             else:
                 searched = self._line_search(balance, free, u, step, du, multipliers, new_multipliers, residual)
                 if searched is None:
                     break
-                u, multipliers = searched
-            upd, f, normal_moments, residual_vector, balanced = balance(u, multipliers)
+                u, multipliers, (upd, f, normal_moments, residual_vector, balanced) = searched
         raise _NotConverged(residual)
 
     def _balance(self, start: SolidState, contact, rows, slip_vertices, direction, mu: float, u, multipliers):
@@ -265,17 +265,20 @@ class SolidSolver:
         yielding points grow tenfold and the residual by 10⁷ within ten full steps) where a fraction of the step
         converges. The contact's gap closure ``step`` (m, on the constrained DOFs) is taken whole and the fraction
         applies to the rest of ``du``; the reference is the residual after the gap closure (``residual``, N, when
-        the step closes no gap). Halves up to 5 times. Returns (u, λ), or None where no fraction lowers the
-        residual: the tangent does not point downhill and the increment falls back to the elastic stiffness."""
+        the step closes no gap). Halves up to 5 times. Returns (u, λ, the ``balance`` of u), or None where no
+        fraction lowers the residual: the tangent does not point downhill and the increment falls back to the
+        elastic stiffness."""
         if step.any():
             residual = float(np.linalg.norm(balance(u + step, multipliers)[4][free]))
         rest = du - step
         fraction = 1.0
         for _ in range(6):
-            trial = balance(u + step + fraction * rest, multipliers + fraction * (new_multipliers - multipliers))[4]
-            if np.linalg.norm(trial[free]) <= (1.0 - 1e-4 * fraction) * residual:
+            trial_u = u + step + fraction * rest
+            trial_multipliers = multipliers + fraction * (new_multipliers - multipliers)
+            trial = balance(trial_u, trial_multipliers)
+            if np.linalg.norm(trial[4][free]) <= (1.0 - 1e-4 * fraction) * residual:
                 self.stats.backtracks += int(fraction < 1.0)
-                return u + step + fraction * rest, multipliers + fraction * (new_multipliers - multipliers)
+                return trial_u, trial_multipliers, trial
             fraction *= 0.5
         return None
 
