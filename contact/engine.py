@@ -36,6 +36,7 @@ from contact.laws import (
     P_INERTIA,
     P_MASS,
     P_RADIUS,
+    P_SHEAR,
     SPRING,
     SPRINGS,
     memory_tangential_law,
@@ -170,7 +171,9 @@ def _step(
         model, delta_new, rate, dmax_new, prm, tab[0], tab[1], tab[2], tab[3], tab[4], tab[5]
     )
     if tangential == MEMORY:
-        ft_new, sliding, e = memory_tangential_law(springs, pitch, xi_trial - xi, a, fn_new, friction, prm[P_GSTAR])
+        ft_new, sliding, e = memory_tangential_law(
+            springs, pitch, xi_trial - xi, a, fn_new, friction, prm[P_GSTAR], prm[P_SHEAR]
+        )
         xi_new = xi_trial
         err = err if err != OK else e
     else:

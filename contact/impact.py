@@ -116,6 +116,7 @@ def _setup(radius, ball, plate, restitution, normal_model, tangential_model, lim
     prm[laws.P_GSTAR] = g_star
     prm[laws.P_MASS] = mass
     prm[laws.P_INERTIA] = 0.4 * mass * radius**2
+    prm[laws.P_SHEAR] = force_law.shear_strength if model == "tabulated" else math.inf
     prm[laws.P_DAMP] = laws.dashpot_coefficient(restitution) * math.sqrt(2.0 * e_star * math.sqrt(radius) * mass)
     p_y = None
     if model == "thornton":

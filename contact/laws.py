@@ -17,7 +17,9 @@ Normal laws (errata Eqs. 4, 6; Thornton 1997):
 
 Tangential laws (errata Eqs. 3, 8): :math:`F_t = -f k_t \xi`, :math:`k_t = 8G^*a`, f = 2/3 (``hdd``) or 1
 (``mindlin``); Coulomb truncation :math:`|F_t| \le \mu F_n` with :math:`\xi` cut back to :math:`\mu F_n/(f k_t)`.
-``mindlin_deresiewicz``: partial slip with memory (:func:`memory_tangential_law`).
+``mindlin_deresiewicz``: partial slip with memory (:func:`memory_tangential_law`), whose slip traction is
+limited by the plate surface's shear strength k where the tabulated law carries one (Orowan's friction,
+:math:`\tau = \min(\mu p, k)`: :func:`slip_line_load`).
 """
 
 from __future__ import annotations
@@ -42,6 +44,7 @@ __all__ = [
     "normal_law",
     "tangential_law",
     "memory_tangential_law",
+    "slip_line_load",
     "SPRING",
     "MEMORY",
     "SPRINGS",
@@ -50,8 +53,8 @@ __all__ = [
 HERTZ, THORNTON, TABULATED = 0, 1, 2
 
 # Indices into the parameter vector ``prm`` shared by the kernels.
-P_RADIUS, P_HERTZ_K, P_ESTAR, P_DAMP, P_PY, P_DY, P_FY, P_GSTAR, P_MASS, P_INERTIA = range(10)
-N_PARAMS = 10
+P_RADIUS, P_HERTZ_K, P_ESTAR, P_DAMP, P_PY, P_DY, P_FY, P_GSTAR, P_MASS, P_INERTIA, P_SHEAR = range(11)
+N_PARAMS = 11
 
 # Error codes a kernel can report per impact.
 OK, ERR_LOADING_TABLE, ERR_UNLOADING_TABLE, ERR_MAX_STEPS, ERR_SPRINGS = 0, 1, 2, 3, 4
@@ -263,7 +266,33 @@ def normal_law(model, delta, rate, dmax, prm, load, umax, ures, s_tab, f_tab, a_
 
 
 @njit(cache=True, error_model="numpy")
-def memory_tangential_law(springs, pitch, slide_increment, contact_radius, normal_force, friction, gstar):
+def slip_line_load(x, contact_radius, peak_pressure, friction, shear_strength):
+    r"""The slip traction's line load (N/m) at x (m) of a Hertzian contact of radius a (m) and peak pressure
+    p₀ (Pa) whose slip traction is Orowan's, τ = min(μp, k) (k = ``shear_strength`` in Pa; ∞ for Coulomb's
+    μp): the method of dimensionality reduction's transform of the traction (Popov & Heß 2015, ch. 3),
+
+    .. math:: q_t(x) = 2\int_0^{b} \min\bigl(\mu p_0\sqrt{b^2 - s^2}/a,\ k\bigr)\,ds,\qquad
+              b^2 = a^2 - x^2,
+
+    in closed form: with h = ka/(μp₀), q_t = μp₀πb²/(2a) where b ≤ h (Coulomb's μq(x)), else
+    2ks₁ + (μp₀/a)(πb²/2 − s₁h − b² asin(s₁/b)), s₁ = √(b² − h²). Its integral over the contact is the tangential
+    force of gross sliding, ∫min(μp, k) dA."""
+    b2 = contact_radius * contact_radius - x * x
+    if b2 <= 0.0 or friction <= 0.0:
+        return 0.0
+    coulomb = friction * peak_pressure / contact_radius
+    if not shear_strength < coulomb * math.sqrt(b2):
+        return 0.5 * math.pi * coulomb * b2
+    h = shear_strength / coulomb
+    b = math.sqrt(b2)
+    s1 = math.sqrt(b2 - h * h)
+    return 2.0 * shear_strength * s1 + coulomb * (0.5 * math.pi * b2 - s1 * h - b2 * math.asin(s1 / b))
+
+
+@njit(cache=True, error_model="numpy")
+def memory_tangential_law(
+    springs, pitch, slide_increment, contact_radius, normal_force, friction, gstar, shear_strength=math.inf
+):
     r"""Mindlin–Deresiewicz tangential force with memory, for any history of the normal force and the slide.
 
     The method of dimensionality reduction (Popov & Heß 2015, ch. 5: exact, in the Cattaneo–Mindlin approximation,
@@ -274,7 +303,10 @@ def memory_tangential_law(springs, pitch, slide_increment, contact_radius, norma
     .. math:: q(x) = \frac{3F}{4a}\Bigl(1 - \frac{x^2}{a^2}\Bigr),\qquad
               |u_i| \le \frac{\mu\, q(x_i)}{4G^*} = \frac{3\mu F}{16 G^* a}\Bigl(1 - \frac{x_i^2}{a^2}\Bigr).
 
-    (the line load's sum over the springs is made F exactly, so gross sliding is at μF). Each spring in contact
+    (the line load's sum over the springs is made F exactly, so gross sliding is at μF). With a finite
+    ``shear_strength`` k (Pa) the limits are the line load of Orowan's slip traction min(μp, k) on the Hertz
+    pressure of F and a, :func:`slip_line_load` (scaled by the same discrete normalisation), and gross sliding is
+    at ∫min(μp, k) dA. Each spring in contact
     (x_i < a) takes the ball surface's ``slide_increment`` dξ (m) and slips at its Coulomb
     limit; a spring outside the contact is unloaded (it enters the contact at zero). The force on the ball is
     F_t = −8G*·Δx·Σ u_i (N): at constant F this is Cattaneo–Mindlin's F_t = −μF[1 − (1 − ξ/ξ_max)^{3/2}],
@@ -296,6 +328,9 @@ def memory_tangential_law(springs, pitch, slide_increment, contact_radius, norma
         x = (i + 0.5) * pitch
         shape += 1.0 - (x / contact_radius) ** 2
     peak = friction * normal_force / (8.0 * gstar * pitch * shape) if shape > 0.0 else 0.0
+    scale = normal_force / (8.0 * gstar * pitch * shape) if shape > 0.0 else 0.0
+    peak_pressure = 1.5 * normal_force / (math.pi * contact_radius * contact_radius)
+    line_load = 0.75 * normal_force / contact_radius  # q(0) of the Hertz line load, N/m
     total = 0.0
     sliding = True
     for i in range(n):
@@ -308,7 +343,10 @@ def memory_tangential_law(springs, pitch, slide_increment, contact_radius, norma
             continue
         u = springs[i] + slide_increment
         x = (i + 0.5) * pitch
-        limit = peak * (1.0 - (x / contact_radius) ** 2)
+        if shear_strength < math.inf:
+            limit = scale * slip_line_load(x, contact_radius, peak_pressure, friction, shear_strength) / line_load
+        else:
+            limit = peak * (1.0 - (x / contact_radius) ** 2)
         if u > limit:
             u = limit
         elif u < -limit:

@@ -10,6 +10,7 @@ SI units: overlaps and radii in m, forces in N.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -40,6 +41,10 @@ class TabulatedLaw:
         Row j: force along unloading curve j, from the loading force at δ_max down to 0.
     unloading_contact_radius : (k, m) array, m
         Row j: contact radius along unloading curve j.
+    shear_strength : float, Pa
+        The largest shear traction the plate's surface carries, k (Orowan's friction τ = min(μp, k) in the
+        ``mindlin_deresiewicz`` tangential law, :func:`contact.laws.memory_tangential_law`); ∞ (default): Coulomb's
+        τ = μp. A perfectly plastic plate's surface layer yields in shear at k = Y/√3.
     """
 
     loading_overlap: np.ndarray
@@ -49,6 +54,7 @@ class TabulatedLaw:
     unloading_overlap: np.ndarray
     unloading_force: np.ndarray
     unloading_contact_radius: np.ndarray
+    shear_strength: float = math.inf
 
     def __post_init__(self) -> None:
         lo = check_array("loading_overlap", self.loading_overlap, low=0.0, units="m", min_size=2)
@@ -70,6 +76,8 @@ class TabulatedLaw:
                 f"unloading_overlap, unloading_force, unloading_contact_radius have shapes {uo.shape}, "
                 f"{uf.shape}, {ua.shape}: must all be (len(unloading_max_overlap)={um.size}, m >= 2)"
             )
+        if not self.shear_strength > 0.0:
+            raise ValueError(f"shear_strength={self.shear_strength!r} must be > 0 (Pa; inf for Coulomb friction)")
         if np.any(np.diff(um) <= 0.0):
             raise ValueError("unloading_max_overlap must increase strictly (m)")
         if np.any(np.diff(uo, axis=1) >= 0.0):

@@ -23,6 +23,7 @@ with n̂ = s_tr/‖s_tr‖. ᾱ is the equivalent plastic strain (dimensionless)
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -57,6 +58,15 @@ class J2Material:
     @property
     def shear(self) -> float:
         return self.E / (2.0 * (1.0 + self.nu))
+
+    @property
+    def surface_shear_strength(self) -> float:
+        """The largest shear traction (Pa) the surface of a perfectly plastic plate carries, k = Y/√3 (von Mises
+        in pure shear; the limit of the contact's slip traction, :mod:`fem.coulomb3d`); ∞ for an elastic or a
+        hardening plate, whose surface hardens as it flows."""
+        if self.yield_strength is None or self.hardening > 0.0:
+            return math.inf
+        return self.yield_strength / math.sqrt(3.0)
 
     @property
     def bulk(self) -> float:

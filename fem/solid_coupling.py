@@ -20,8 +20,10 @@ the moving centre), so every iteration runs the whole path. Started from the axi
 normal law is the 3-D one's within about 1 %), one or two iterations normally suffice.
 
 The impact's tangential law is the one ``impact_on_law`` runs: in the chain the plate's own, Mindlin–Deresiewicz
-partial slip with memory (``wear.chain.solid.solid_case``), fed by the 3-D plate's normal force and contact radius.
-The 3-D plate's tangential force along the path (``solid.tangential_force``) is compared with the impact's
+partial slip with memory (``wear.chain.solid.solid_case``), fed by the 3-D plate's normal force and contact radius
+and limited, like the plate's slip traction, by the plate surface's shear strength (Orowan's τ = min(μp, k),
+:mod:`fem.coulomb3d`; the law carries it as ``TabulatedLaw.shear_strength``). The 3-D plate's tangential force
+along the path (``solid.tangential_force``) is compared with the impact's
 (:attr:`SolidCoupledImpact.tangential_mismatch`), the measure of what the law misses.
 """
 
@@ -189,12 +191,17 @@ def solid_cycle(
                       np.r_[solid.contact_radius[:upto], probe["a"]])  # fmt: skip
     unloading = _Branch(solid.overlap[path.peak :], solid.normal_force[path.peak :],
                         solid.contact_radius[path.peak :])  # fmt: skip
-    return solid, _with_probe_unloading(force_law(loading, unloading), probe_overlap, probe["P"], probe["a"])
+    law = _with_probe_unloading(force_law(loading, unloading), probe_overlap, probe["P"], probe["a"],
+                                solver.surface.shear_strength)  # fmt: skip
+    return solid, law
 
 
-def _with_probe_unloading(law: TabulatedLaw, overlap: float, force: float, radius: float) -> TabulatedLaw:
+def _with_probe_unloading(
+    law: TabulatedLaw, overlap: float, force: float, radius: float, shear_strength: float
+) -> TabulatedLaw:
     """``law`` with a second unloading curve from the probe's ``overlap`` (m): the computed curve moved up by the
-    probe's extra overlap and scaled to its ``force`` (N) and ``radius`` (m). An impact that goes past the path's
+    probe's extra overlap and scaled to its ``force`` (N) and ``radius`` (m), and the plate surface's
+    ``shear_strength`` (Pa) for the impact's tangential law. An impact that goes past the path's
     δ_max (by less than the coupling's tolerance once converged) unloads between the two, where the engine
     interpolates; the next cycle computes its own."""
     top = float(law.unloading_max_overlap[-1])
@@ -203,7 +210,7 @@ def _with_probe_unloading(law: TabulatedLaw, overlap: float, force: float, radiu
         law.loading_overlap, law.loading_force, law.loading_contact_radius,
         np.r_[law.unloading_max_overlap, overlap], np.vstack([law.unloading_overlap, grid + (overlap - top)]),
         np.vstack([law.unloading_force, f * (force / f[0])]),
-        np.vstack([law.unloading_contact_radius, a * (radius / max(a[0], 1e-300))]),
+        np.vstack([law.unloading_contact_radius, a * (radius / max(a[0], 1e-300))]), shear_strength,
     )  # fmt: skip
 
 

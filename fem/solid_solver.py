@@ -93,8 +93,9 @@ class _NotConverged(Exception):
 
 class SolidSolver:
     """3-D half plate on ``mesh`` (m) of ``material`` pressed by a rigid sphere of ``radius`` (m) with friction
-    coefficient ``friction``. ``force_scale`` (N) and ``gap_scale`` (m) set the tolerances (1e-12 and 1e-7 of
-    them)."""
+    coefficient ``friction``, its slip traction limited by the surface's ``shear_strength`` k (Pa; default: Y/√3 of
+    a perfectly plastic ``material``, else none; :mod:`fem.coulomb3d`). ``force_scale`` (N) and ``gap_scale`` (m)
+    set the tolerances (1e-12 and 1e-7 of them)."""
 
     def __init__(
         self,
@@ -107,6 +108,7 @@ class SolidSolver:
         rtol: float = 1e-6,
         max_iterations: int = 30,
         max_cuts: int = 5,
+        shear_strength: float | None = None,
     ) -> None:
         self.disc = d = discretise_solid(mesh)
         self.material = material
@@ -124,7 +126,9 @@ class SolidSolver:
         self.stats = SolidStats()
         self.tangent_elastic = material.elastic_tangent_of(6)
         self.elastic_element_matrices = element_matrices(d, self.tangent_elastic)
-        self.surface = SurfaceFriction(d, mesh.p.shape[1], material.shear, material.nu)
+        if shear_strength is None:
+            shear_strength = material.surface_shear_strength
+        self.surface = SurfaceFriction(d, mesh.p.shape[1], material.shear, material.nu, shear_strength)
         self.uz, self.ut = self.surface.uz, self.surface.ut
         self.linear = KeptFactor(self.stats, max_krylov=15)
         nel, nq = d.weight.shape

@@ -6,9 +6,10 @@ import math
 
 import numpy as np
 import pytest
+from scipy.integrate import quad
 
 from contact import Material, simulate_impact, theory
-from contact.laws import SPRINGS, memory_tangential_law
+from contact.laws import SPRINGS, memory_tangential_law, slip_line_load
 from wear.app.validation.references import kharaz_rms
 
 E_STAR, G_STAR, R, MU = 115e9, 45e9, 0.01, 0.3
@@ -17,12 +18,14 @@ A = (3.0 * P * R / (4.0 * E_STAR)) ** (1.0 / 3.0)
 SLIDE_MAX = 3.0 * MU * P / (16.0 * G_STAR * A)  # Cattaneo–Mindlin's slide of gross sliding, Johnson Eq. 7.42
 
 
-def _drive(slides, forces, radii, pitch=3.0 * A / SPRINGS):
+def _drive(slides, forces, radii, pitch=3.0 * A / SPRINGS, shear_strength=math.inf):
     """The law along a path of slides (m), normal forces (N) and contact radii (m): the forces on the plate (N)."""
     springs = np.zeros(SPRINGS)
     out, previous = [], 0.0
     for slide, force, radius in zip(slides, forces, radii, strict=True):
-        ft, _, error = memory_tangential_law(springs, pitch, slide - previous, radius, force, MU, G_STAR)
+        ft, _, error = memory_tangential_law(
+            springs, pitch, slide - previous, radius, force, MU, G_STAR, shear_strength
+        )
         assert error == 0
         out.append(-ft)
         previous = slide
@@ -99,3 +102,45 @@ def test_kharaz_measurements_closer_with_memory():
     assert memory["tangential_restitution"] < 0.06
     assert memory["tangential_restitution"] < spring["tangential_restitution"]
     assert memory["spin_rad_per_s"] < spring["spin_rad_per_s"]
+
+
+P0 = 3.0 * P / (2.0 * math.pi * A**2)  # Hertz's peak pressure
+
+
+def _orowan_gross_force(shear_strength):
+    """∫min(μp, k) dA over the Hertz pressure p = p0√(1 − r²/a²) (N): k inside r < c, c² = a²(1 − (k/μp0)²),
+    μp outside, kπc² + (2π/3) μp0 a² (1 − c²/a²)^{3/2} (integrated by hand)."""
+    if shear_strength >= MU * P0:
+        return MU * P
+    c2 = A**2 * (1.0 - (shear_strength / (MU * P0)) ** 2)
+    return shear_strength * math.pi * c2 + 2.0 * math.pi / 3.0 * MU * P0 * A**2 * (1.0 - c2 / A**2) ** 1.5
+
+
+@pytest.mark.parametrize("fraction", [0.3, 0.6, 0.9, 2.0])
+def test_shear_limited_gross_sliding_force_is_orowans_integral(fraction):
+    """Orowan's friction τ = min(μp, k) on the Hertz pressure: gross sliding at ∫min(μp, k) dA (closed form above;
+    k = fraction × μp0, 2.0: Coulomb's μP) within 0.1%, the discrete springs the only approximation."""
+    k = fraction * MU * P0
+    slides = np.linspace(0.0, 3.0 * SLIDE_MAX, 60)
+    q = _drive(slides, np.full(slides.size, P), np.full(slides.size, A), shear_strength=k)
+    assert q[-1] / _orowan_gross_force(k) == pytest.approx(1.0, abs=0.001), q[-1] / (MU * P)
+
+
+def test_shear_limit_leaves_the_edge_slip_of_a_small_slide():
+    """A small slide slips at the contact's edge only, where μp < k: the same force as Coulomb's law (which follows
+    Cattaneo–Mindlin, above), though k = 0.5 μp0 caps the centre."""
+    slides = np.linspace(0.0, 0.05 * SLIDE_MAX, 20)
+    forces, radii = np.full(slides.size, P), np.full(slides.size, A)
+    coulomb = _drive(slides, forces, radii)
+    limited = _drive(slides, forces, radii, shear_strength=0.5 * MU * P0)
+    assert np.abs(limited - coulomb).max() <= 1e-9 * MU * P
+
+
+def test_slip_line_load_is_the_transform_of_the_limited_traction():
+    """The closed form of the line load against its definition integrated numerically (scipy quad):
+    q_t(x) = 2∫_0^b min(μp0√(b² − s²)/a, k) ds, b² = a² − x²."""
+    k = 0.6 * MU * P0
+    for x in np.linspace(0.0, 0.99 * A, 12):
+        b = math.sqrt(A**2 - x**2)
+        reference = 2.0 * quad(lambda s, b=b: min(MU * P0 * math.sqrt(b * b - s * s) / A, k), 0.0, b, limit=200)[0]
+        assert slip_line_load(x, A, P0, MU, k) == pytest.approx(reference, rel=1e-6)
