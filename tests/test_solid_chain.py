@@ -72,6 +72,9 @@ def test_3d_outputs(frictionless, tmp_path):
     # the impact ran on the plate's tangential law, and the case written with the run says so
     assert saved["plate_3d"]["tangential_model"] == "mindlin_deresiewicz"
     assert frictionless.case.impact.tangential_model == "mindlin_deresiewicz"
+    # the slip traction's limit is the shear yield stress of the perfectly plastic plate's surface, Y/√3 (von Mises)
+    plate_yield = frictionless.case.plate.material().yield_strength
+    assert saved["plate_3d"]["surface_shear_strength_Pa"] == pytest.approx(plate_yield / np.sqrt(3.0), rel=1e-12)
     dent = saved["dent"]
     assert dent["model"] == "3d"
     # the dent is wider than deep by far, and a plastic dent has a lip above the original plane

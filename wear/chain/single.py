@@ -149,6 +149,7 @@ class RunResult:
 def solid_summary(coupled: SolidCoupledImpact) -> dict:
     """The 3-D plate's block of summary.json (SI units)."""
     solid, stats = coupled.solid, coupled.work
+    shear_strength = solid.solver.surface.shear_strength
     yielded = np.flatnonzero(solid.max_equivalent_plastic_strain > 0.0)
     return {
         "iterations": coupled.iterations,
@@ -160,6 +161,7 @@ def solid_summary(coupled: SolidCoupledImpact) -> dict:
         "max_tangential_force_N": float(np.max(np.abs(solid.tangential_force))),
         "tangential_model": coupled.impact.tangential_model,
         "tangential_mismatch": coupled.tangential_mismatch,
+        "surface_shear_strength_Pa": None if math.isinf(shear_strength) else shear_strength,
         "max_contact_radius_m": float(np.max(solid.contact_radius)),
         "max_stick_radius_m": float(np.max(solid.stick_radius)),
         "first_yield_force_N": float(solid.normal_force[yielded[0]]) if yielded.size else None,
