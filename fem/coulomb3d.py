@@ -12,7 +12,7 @@ carries, (H f)_j, and the tractions reported are the linear fields with those mo
 
   .. math:: (H f_t)_j = \min\bigl(\mu\,\max((H f_n)_j, 0),\ k A_j\bigr)\,\hat s_j,
 
-  laid down as the linear traction field with those moments, τ = M⁻¹ μ (H f_n)⁺ ŝ (its loads' moments are zero at
+  laid down as the linear traction field with those moments, τ = M⁻¹ H f_t (its loads' moments are zero at
   the stick vertices), ŝ_j the vertex's slip direction. Where the whole contact slides, the tangential force is then
   μ times the normal force exactly (Σ_j (H f_n)_j = P); the same traction on the projected pressure field, μ p⁺ ŝ,
   exceeded μP by the negative lobes of the projection just outside the contact (∫p⁺/∫p = 1.03 on the default mesh).

@@ -191,17 +191,13 @@ def solid_cycle(
                       np.r_[solid.contact_radius[:upto], probe["a"]])  # fmt: skip
     unloading = _Branch(solid.overlap[path.peak :], solid.normal_force[path.peak :],
                         solid.contact_radius[path.peak :])  # fmt: skip
-    law = _with_probe_unloading(force_law(loading, unloading), probe_overlap, probe["P"], probe["a"],
-                                solver.surface.shear_strength)  # fmt: skip
-    return solid, law
+    law = force_law(loading, unloading, shear_strength=solver.surface.shear_strength)
+    return solid, _with_probe_unloading(law, probe_overlap, probe["P"], probe["a"])
 
 
-def _with_probe_unloading(
-    law: TabulatedLaw, overlap: float, force: float, radius: float, shear_strength: float
-) -> TabulatedLaw:
+def _with_probe_unloading(law: TabulatedLaw, overlap: float, force: float, radius: float) -> TabulatedLaw:
     """``law`` with a second unloading curve from the probe's ``overlap`` (m): the computed curve moved up by the
-    probe's extra overlap and scaled to its ``force`` (N) and ``radius`` (m), and the plate surface's
-    ``shear_strength`` (Pa) for the impact's tangential law. An impact that goes past the path's
+    probe's extra overlap and scaled to its ``force`` (N) and ``radius`` (m). An impact that goes past the path's
     δ_max (by less than the coupling's tolerance once converged) unloads between the two, where the engine
     interpolates; the next cycle computes its own."""
     top = float(law.unloading_max_overlap[-1])
@@ -210,7 +206,7 @@ def _with_probe_unloading(
         law.loading_overlap, law.loading_force, law.loading_contact_radius,
         np.r_[law.unloading_max_overlap, overlap], np.vstack([law.unloading_overlap, grid + (overlap - top)]),
         np.vstack([law.unloading_force, f * (force / f[0])]),
-        np.vstack([law.unloading_contact_radius, a * (radius / max(a[0], 1e-300))]), shear_strength,
+        np.vstack([law.unloading_contact_radius, a * (radius / max(a[0], 1e-300))]), law.shear_strength,
     )  # fmt: skip
 
 
