@@ -1,10 +1,8 @@
 r"""The impact ⇄ plate coupling: an impact on the plate's own force law, for a virgin or a used plate (SI units).
 
 The impact runs on the FE plate's normal law (contact's ``"tabulated"`` model: F(δ) and the contact radius a(δ), so
-the tangential stiffness is k_t = 8G*a with the FE radius; the law carries the shear strength of the plate's surface,
-k = Y/√3 of a perfectly plastic plate, which limits the slip traction of the ``mindlin_deresiewicz`` tangential
-law). The loading branch of an elastic–plastic indentation is path independent, so the plate is loaded **once**,
-past the expected maximum overlap:
+the tangential stiffness is k_t = 8G*a with the FE radius). The loading branch of an elastic–plastic indentation is
+path independent, so the plate is loaded **once**, past the expected maximum overlap:
 
 1. load the plate from its current state to (1 + ``overshoot``) × the estimated approach (further if the impact
    goes deeper than the table);
@@ -39,7 +37,6 @@ import numpy as np
 
 from contact import ImpactResult, TabulatedLaw
 from contact.impact import ForceLawRangeError
-from fem.plasticity import J2Material
 from fem.reload import elastic_reload
 from fem.result import FirstYieldPoint, IndentationResult, join, loading_branch, unloading_curve
 from fem.solver import ConvergenceError, PlateState
@@ -62,7 +59,6 @@ class CoupledPlate(Protocol):
     """What the coupling needs of a plate (:class:`fem.Plate` is one)."""
 
     effective_modulus: float
-    material: J2Material
     state: PlateState
 
     def first_contact_overlap(self) -> float: ...
@@ -101,21 +97,19 @@ def loading_path(max_overlap: float, steps: int, first_yield_overlap: float | No
 
 
 def force_law(loading: IndentationResult, unloading: IndentationResult | None = None, first_contact: float = 0.0,
-              effective_modulus: float | None = None, points: int = 41,
-              shear_strength: float = math.inf) -> TabulatedLaw:  # fmt: skip
+              effective_modulus: float | None = None, points: int = 41) -> TabulatedLaw:  # fmt: skip
     r"""The plate's force law from first contact (δ' = δ − ``first_contact``, m): the loading branch and the
     unloading curve from its top (``unloading``), or, without one, a provisional elastic curve of Hertz form
     :math:`F = F^*\left(\frac{\delta - \delta_p}{\delta^* - \delta_p}\right)^{3/2}`, with
     :math:`\delta^* - \delta_p = 3F^*/(4E^*a^*)` so that dF/dδ = 2E*a* at the start (exact for elastic unloading;
-    ``effective_modulus`` E*, Pa), which cannot change δ_max. The law carries the plate surface's
-    ``shear_strength`` (Pa, the limit of the impact's slip traction: :attr:`contact.TabulatedLaw.shear_strength`)."""
+    ``effective_modulus`` E*, Pa), which cannot change δ_max."""
     d, f, a = loading_branch(loading.overlap, loading.force, loading.contact_radius, first_contact)
     if unloading is None:
         d_star, f_star, a_star = d[-1], f[-1], a[-1]
         drop = min(3.0 * f_star / (4.0 * effective_modulus * max(a_star, 1e-300)), d_star)
         s = np.linspace(1.0, 0.0, points)
         return TabulatedLaw(d, f, a, np.array([d_star]), (d_star - drop + s * drop)[None, :],
-                            (f_star * s**1.5)[None, :], (a_star * np.sqrt(s))[None, :], shear_strength)  # fmt: skip
+                            (f_star * s**1.5)[None, :], (a_star * np.sqrt(s))[None, :])  # fmt: skip
     top, grid, force, radius = unloading_curve(unloading.overlap, unloading.force, unloading.contact_radius, points)
     top, grid = top - first_contact, grid - first_contact
     if grid[-1] < 0.0:
@@ -125,7 +119,7 @@ def force_law(loading: IndentationResult, unloading: IndentationResult | None = 
         force = np.interp(new[::-1], grid[::-1], force[::-1] ** (2.0 / 3.0))[::-1] ** 1.5
         radius = np.interp(new[::-1], grid[::-1], radius[::-1])[::-1]
         grid, force[-1], radius[-1] = new, 0.0, 0.0
-    return TabulatedLaw(d, f, a, np.array([top]), grid[None, :], force[None, :], radius[None, :], shear_strength)
+    return TabulatedLaw(d, f, a, np.array([top]), grid[None, :], force[None, :], radius[None, :])
 
 
 @dataclass(frozen=True, eq=False)
@@ -236,15 +230,14 @@ class CoupledImpact:
 
 
 def _loading_past_the_impact(load: Callable[[float], IndentationResult], impact_on: ImpactOnLaw, first_contact: float,
-                             estimate: float, settings: CouplingSettings, effective_modulus: float,
-                             shear_strength: float):  # fmt: skip
+                             estimate: float, settings: CouplingSettings, effective_modulus: float):  # fmt: skip
     """(loading, law, impact): ``load(target)`` (a loading from first contact to first contact + target, m) run
     (1 + overshoot) past ``estimate`` (m), further until the impact on its law stops short of the table's end;
     None after :data:`LOADING_TRIES` loadings."""
     target = (1.0 + settings.overshoot) * estimate
     for _ in range(LOADING_TRIES):
         loading = load(target)
-        law = force_law(loading, None, first_contact, effective_modulus, shear_strength=shear_strength)
+        law = force_law(loading, None, first_contact, effective_modulus)
         try:
             impact = impact_on(law)
         except ForceLawRangeError:
@@ -268,13 +261,11 @@ def couple(plate: CoupledPlate, impact_on: ImpactOnLaw, estimate: float, setting
     first_contact = plate.first_contact_overlap()
     first_yield = plate.first_yield_overlap()
     before = plate.state
-    shear_strength = plate.material.surface_shear_strength
 
     def load(target: float) -> IndentationResult:
         return plate.load(first_contact + loading_path(target, settings.load_steps, first_yield))
 
-    solved = _loading_past_the_impact(load, impact_on, first_contact, estimate, settings, plate.effective_modulus,
-                                      shear_strength)  # fmt: skip
+    solved = _loading_past_the_impact(load, impact_on, first_contact, estimate, settings, plate.effective_modulus)
     if solved is None:
         raise ValueError(f"the impact keeps going past the FE loading ({LOADING_TRIES} loadings from {estimate:.4g} m "
                          "past first contact, each deeper): raise fem.overshoot")  # fmt: skip
@@ -288,7 +279,7 @@ def couple(plate: CoupledPlate, impact_on: ImpactOnLaw, estimate: float, setting
         except ConvergenceError:
             # the unloading from a plastic dent can fail near the loss of contact in coarse steps: once more in finer
             unloading = plate.unload(loading, d_star, steps=2 * settings.unload_steps)
-        law = force_law(loading, unloading, first_contact, shear_strength=shear_strength)
+        law = force_law(loading, unloading, first_contact)
         impact = impact_on(law)
         overlaps.append(impact.max_overlap)
         change = abs(overlaps[-1] - overlaps[-2]) / overlaps[-2]
@@ -306,15 +297,13 @@ def couple_elastic(plate, impact_on: ImpactOnLaw, estimate: float, settings: Cou
     mapping of any loading step up to the impact's maximum gives Δᾱ > ``yield_tolerance`` (then the plastic
     problem must be solved, :func:`couple`). Exact, on the FE's own mesh, for a plate that does not yield."""
     first_contact = plate.first_contact_overlap()
-    shear_strength = plate.material.surface_shear_strength
     reloads = []
 
     def load(target: float) -> IndentationResult:
         reloads.append(elastic_reload(plate, first_contact + loading_path(target, settings.load_steps, None)))
         return reloads[-1].result
 
-    solved = _loading_past_the_impact(load, impact_on, first_contact, estimate, settings, plate.effective_modulus,
-                                      shear_strength)  # fmt: skip
+    solved = _loading_past_the_impact(load, impact_on, first_contact, estimate, settings, plate.effective_modulus)
     if solved is None:
         return None
     loading, law, impact = solved
@@ -327,7 +316,7 @@ def couple_elastic(plate, impact_on: ImpactOnLaw, estimate: float, settings: Cou
         return None
     down = np.linspace(d_star, max(0.0, first_contact - 0.05 * unload_at), settings.unload_steps + 1)
     unloading = elastic_reload(plate, down, check_yield=False).result
-    law = force_law(loading, unloading, first_contact, shear_strength=shear_strength)
+    law = force_law(loading, unloading, first_contact)
     first = impact.max_overlap
     impact = impact_on(law)
     change = abs(impact.max_overlap - first) / first

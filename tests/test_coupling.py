@@ -22,7 +22,6 @@ from contact.theory import (
     thornton_restitution,
     yield_velocity,
 )
-from fem.plasticity import J2Material
 from wear import Case, restitution_sweep, run
 from wear.app.figures.run import restitution_comparison
 from wear.chain.plate import coupling_settings, impact_on_law
@@ -84,7 +83,6 @@ class ClosedFormPlate:
 
     def __init__(self, radius, e_star, p_y=None):
         self.effective_modulus = e_star
-        self.material = J2Material(e_star, 0.0)  # the closed forms' plate: its surface shear is unlimited
         self.state = None  # no field: the closed forms carry no plastic strain
         self._indent = closed_form_indent(radius, e_star, p_y)
 
