@@ -10,6 +10,8 @@ re-used for many right-hand sides (the modified-Newton iterations and the precon
 
 from __future__ import annotations
 
+import os
+
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
@@ -23,6 +25,16 @@ __all__ = ["BACKEND", "Factorisation", "SingularMatrixError", "factorise"]
 
 #: The direct solver in use: "pardiso" or "superlu".
 BACKEND = "pardiso" if pypardiso is not None else "superlu"
+
+
+def _pardiso_solver(mtype: int) -> pypardiso.PyPardisoSolver:
+    """A PARDISO handle of matrix type ``mtype``. pypardiso looks for MKL's library on every handle (ctypes'
+    find_library, then a recursive glob of the environment: 0.7–1.0 s here, as long as a factorisation of the
+    default 3-D plate); once found, its path goes into pypardiso's own ``PYPARDISO_MKL_RT`` setting so that later
+    handles load it directly."""
+    solver = pypardiso.PyPardisoSolver(mtype=mtype)
+    os.environ.setdefault("PYPARDISO_MKL_RT", solver.libmkl._name)
+    return solver
 
 
 class SingularMatrixError(np.linalg.LinAlgError):
@@ -40,7 +52,7 @@ class Factorisation:
             # SPD first; a consistent tangent of a perfectly plastic zone can be singular to working precision
             # (zero pivot, PARDISO error -4): the symmetric-indefinite mode with pivot perturbation takes it
             for mtype in (2, -2):
-                self._pardiso = pypardiso.PyPardisoSolver(mtype=mtype)
+                self._pardiso = _pardiso_solver(mtype)
                 try:
                     self._pardiso.factorize(self._upper)
                     break
