@@ -170,15 +170,14 @@ class SolidSolver:
 
     # -- one increment
     def _equilibrate(
-        self, start: SolidState, target: tuple[float, float, float], u, contact, stick, direction, mu, elastic=False,
-        rtol: float | None = None,
+        self, start: SolidState, target: tuple[float, float, float], u, contact, stick, direction, mu, elastic: bool,
+        rtol: float,
     ):  # fmt: skip
         """Newton at fixed contact and stick sets and slip directions ``direction`` (surface vertices, 2). Returns
         (u, stress update, f_int, iterations). ``elastic``: iterate with the elastic stiffness (initial-stiffness
         method: linear convergence, but robust where the consistent tangent of a perfectly plastic point that
         flips between reverse yield and elastic unloading misleads Newton or is not positive definite), up to
-        4 × the iterations. ``rtol``: the relative out-of-balance force it stops at (default the solver's)."""
-        rtol = self.rtol if rtol is None else rtol
+        4 × the iterations. ``rtol``: the out-of-balance force it stops at, relative to the contact force."""
         d = self.disc
         overlap, centre, slide = target
         obstacle = self.obstacle(overlap, centre)
@@ -345,8 +344,7 @@ class SolidSolver:
         # converges in a few iterations where the consistent tangent of the points that flip between reverse yield
         # and elastic unloading takes tens, each with a new factor
         unloading = overlap < start.overlap and bool(np.any(start.alpha))
-        # the sets are sought on equilibria to a loose tolerance and the last one confirmed to the solver's: the
-        # quadratic tail of Newton is spent once an increment, not once a set round
+        # the sets are sought at set_rtol, the settled ones confirmed at rtol (module docstring)
         tolerance, rounds = self.set_rtol, 0
         while True:
             try:
