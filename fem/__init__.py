@@ -7,7 +7,8 @@ own force law, :mod:`fem.coupling`), :func:`plate_mesh` and :mod:`fem.mesh` (mes
 
 The 3-D plate (half block about the plane of incidence, quadratic tetrahedra, Coulomb friction): :func:`indent_solid`
 (:mod:`fem.solid`, :mod:`fem.solid_solver`, :mod:`fem.forms3d`, :mod:`fem.mesh3d`, sparse solves in
-:mod:`fem.linear`) and :func:`couple_solid` (an oblique impact on it, :mod:`fem.solid_coupling`).
+:mod:`fem.linear`, the stress on its surface in :mod:`fem.surface_stress`) and :func:`couple_solid` (an oblique
+impact on it, :mod:`fem.solid_coupling`).
 """
 
 from fem.coupling import CoupledImpact, CouplingSettings, PlateCycle, contact_pressure, couple, couple_elastic

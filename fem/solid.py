@@ -24,6 +24,7 @@ from fem.indent import _plate_model, check_small_strain, estimate_contact_radius
 from fem.mesh3d import generate_block, scale_block
 from fem.plasticity import J2Material, von_mises
 from fem.solid_solver import SolidSolver, SolidState, SolidStats
+from fem.surface_stress import surface_stress
 
 __all__ = ["SolidIndentation", "SolidRecorder", "indent_solid", "solid_solver", "MAX_FRICTION"]
 
@@ -65,6 +66,14 @@ class SolidIndentation:
     stats: SolidStats
     final: SolidState = field(repr=False)
     solver: SolidSolver = field(repr=False)
+
+    def surface_stress(self) -> np.ndarray:
+        """The stress (surface vertices, 6) on the surface after the last step (Pa, Mandel:
+        σ_xx, σ_yy, σ_zz, √2 σ_yz, √2 σ_xz, √2 σ_xy), recovered from the element stresses and the contact tractions
+        (:func:`fem.surface_stress.surface_stress`)."""
+        solver = self.solver
+        stress = solver.stress_update(self.final).stress
+        return surface_stress(solver.disc, stress, self.pressure[-1], self.shear[-1])
 
     def to_meshio(self) -> meshio.Mesh:
         """The whole plate after the last step (the half block and its mirror image about y = 0) as linear
@@ -110,16 +119,19 @@ def solid_solver(
     contact_elements: int = 4,
     box_depth: float = 1.0,
     rtol: float = 1e-6,
+    edge_elements: int | None = None,
 ) -> SolidSolver:
     """The 3-D half plate of ``plate`` for a sphere of ``radius`` (m) reaching ``max_overlap`` (m) over the contact
     centres ``centres`` (m) with friction up to ``friction``: a block (:func:`fem.mesh3d.generate_block`) with
     ``contact_elements`` elements across the largest expected contact radius (Hertz, or Kogut & Etsion once
-    yielded) over a box ``box_depth`` of it deep, around the centres' track."""
+    yielded) over a box ``box_depth`` of it deep, around the centres' track, and ``edge_elements`` (None: none)
+    across it in a band around the contact edge (where the surface stresses peak)."""
     material, e_star = _plate_model(plate, ball, hardening)
     check_small_strain(radius, e_star, plate, max_overlap)
     a_max = estimate_contact_radius(radius, e_star, plate, max_overlap)
     track = (float(np.min(centres)) / a_max, float(np.max(centres)) / a_max)
-    mesh = scale_block(generate_block(contact_elements, track=track, depth=box_depth), a_max)
+    block = generate_block(contact_elements, track=track, depth=box_depth, edge_elements=edge_elements)
+    mesh = scale_block(block, a_max)
     force_scale = 4.0 / 3.0 * e_star * math.sqrt(radius) * max_overlap**1.5
     return SolidSolver(mesh, J2Material(material.E, material.nu, material.yield_strength, material.hardening),
                        radius, friction, force_scale, max_overlap, rtol=rtol)  # fmt: skip
@@ -208,6 +220,7 @@ def indent_solid(
     contact_elements: int = 4,
     box_depth: float = 1.0,
     rtol: float = 1e-6,
+    edge_elements: int | None = None,
 ) -> SolidIndentation:
     r"""Press and drag a sphere of ``radius`` (m) over the 3-D ``plate`` along a path.
 
@@ -215,7 +228,8 @@ def indent_solid(
     (m; default 0), ``friction`` μ (one value, or one per step: 0 while the normal load is applied and μ after
     is the Cattaneo–Mindlin protocol). ``ball`` None = rigid. ``hardening`` H (Pa). The mesh
     (:func:`solid_solver`) has ``contact_elements`` elements across the path's largest expected contact radius over
-    a box ``box_depth`` of it deep, around the centres' track.
+    a box ``box_depth`` of it deep, around the centres' track, and ``edge_elements`` across it in a band around
+    the contact edge (None: no band; :func:`fem.mesh3d.generate_block`).
     """
     radius = check_number("radius", radius, low=1e-6, high=10.0, units="m", what="ball radius")
     path = check_array("overlaps", overlaps, low=0.0, units="m", what="overlap")
@@ -227,7 +241,7 @@ def indent_solid(
     mu = _per_step("friction", friction, steps, 0.0, MAX_FRICTION, "")
     hardening = check_number("hardening", hardening, low=0.0, high=1e12, units="Pa", what="hardening modulus")
     solver = solid_solver(radius, plate, float(path.max()), centre, float(mu.max()), ball, hardening,
-                          contact_elements, box_depth, rtol)  # fmt: skip
+                          contact_elements, box_depth, rtol, edge_elements)  # fmt: skip
     recorder = SolidRecorder(solver)
     state, previous = solver.initial_state(), None
     for k in range(steps):

@@ -75,7 +75,8 @@ def test_first_yield_under_a_sliding_sphere_matches_hamilton():
     """Elastic plate, Hertz load applied without friction, then slid to gross sliding (Q = μP): the largest von
     Mises stress gives the critical p0/Y of first yield, against Hamilton's (1983) closed-form stresses
     (tests/data/hamilton_first_yield.csv, ν = 0.3): within 3%, below the surface at z ≈ 0.48a for μ = 0 and 0.2.
-    For μ = 0.5 yield starts at the surface on the trailing half (Hamilton: at the trailing edge x = −a)."""
+    For μ = 0.5 yield starts at the surface on the trailing half (Hamilton: at the trailing edge x = −a); its value
+    needs the stress on the surface itself (tests/test_fem_surface_stress.py): the quadrature points lie below it."""
     reference = _hamilton()
     a_max = 1e-4
     delta = a_max**2 / R

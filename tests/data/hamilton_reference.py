@@ -306,5 +306,33 @@ def main():
     return 0
 
 
+SURFACE_OUT = "/work/scratch/hamilton/hamilton_surface_mu05.csv"
+
+
+def surface_profile(mu=0.5, step=1.0 / 64.0):
+    """Hamilton's surface stresses along the plane of incidence y = 0 (z = 0), x in [-1.5, 1.5] a at ``step``:
+    the table tests/data/hamilton_surface_mu05.csv (python hamilton_reference.py --surface)."""
+    x = np.round(np.arange(-1.5, 1.5 + step / 2, step), 12)
+    # at r = a exactly the library returns 0/0: the field is continuous, take the limit from outside
+    xe = np.where(np.abs(np.abs(x) - 1.0) < 1e-12, x * (1.0 + 1e-15), x)
+    s = stress(xe, 0.0 * xe, 0.0 * xe, mu)
+    with open(SURFACE_OUT, "w") as fh:
+        fh.write(
+            f"# Surface stresses (z = 0, y = 0) under a sliding Hertzian sphere, mu = {mu}, nu = {NU}: Hertz pressure "
+            "p = p0 sqrt(1 - r^2/a^2) and traction q = mu p along +x (trailing edge x = -a)\n"
+        )
+        fh.write(
+            "# Source: G.M. Hamilton, Proc IMechE 197C (1983) 53-59, as implemented in ContactMechanics "
+            f"{ContactMechanics.__version__} (PyPI), made by tests/data/hamilton_reference.py --surface\n"
+        )
+        fh.write("# lengths /a, stresses /p0, tension positive; vm = von Mises\n")
+        fh.write("x_over_a,sxx,syy,szz,sxz,vm\n")
+        for k in range(x.size):
+            xx, yy, zz, _, xz, _ = s[:, k]
+            fh.write(f"{x[k]:.6f},{xx:.5f},{yy:.5f},{zz:.5f},{xz:.5f},{von_mises(s[:, k]):.5f}\n")
+    print(f"wrote {SURFACE_OUT}")
+    return 0
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(surface_profile() if "--surface" in sys.argv else main())
