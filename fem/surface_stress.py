@@ -45,9 +45,12 @@ def vertex_stress(disc: SolidDiscretisation, stress: np.ndarray) -> np.ndarray:
     nqp = disc.qp.shape[2]
     if stress.shape != (mesh.t.shape[1], nqp, 6) or nqp != 4:
         raise ValueError(f"stress: shape {stress.shape}, expected (elements, 4, 6) = ({mesh.t.shape[1]}, 4, 6) (Pa)")
-    at_points = np.concatenate([np.ones((1, *disc.qp.shape[1:])), disc.qp], axis=0).transpose(1, 2, 0)
+    # coordinates from each element's centre, so that a small element far from the origin stays well conditioned
+    centre = disc.qp.mean(axis=2)  # (3, elements)
+    points = disc.qp - centre[:, :, None]
+    at_points = np.concatenate([np.ones((1, *points.shape[1:])), points], axis=0).transpose(1, 2, 0)
     coefficients = np.linalg.solve(at_points, stress)  # (elements, 4 = 1, x, y, z, 6)
-    corners = mesh.p[:, mesh.t]  # (3, 4, elements)
+    corners = mesh.p[:, mesh.t] - centre[:, None, :]  # (3, 4, elements)
     at_corners = np.concatenate([np.ones((1, *corners.shape[1:])), corners], axis=0).transpose(2, 1, 0)
     values = np.einsum("eck,eks->ecs", at_corners, coefficients)
     total = np.zeros((mesh.p.shape[1], 6))
