@@ -20,8 +20,9 @@ import scipy.sparse.linalg as spla
 import fem
 from contact.materials import Material, effective_modulus
 from contact.theory import first_yield
-from fem.forms import assemble, discretise, element_matrices
-from fem.plasticity import J2Material
+from fem.axisymmetric.forms import discretise
+from fem.core.assembly import assemble, element_matrices
+from fem.core.plasticity import J2Material
 
 R = 10e-3
 PLATE = Material(E=210e9, nu=0.3, density=7850.0, yield_strength=210e6)

@@ -19,8 +19,8 @@ import warnings
 
 import numpy as np
 
-from fem.forms import assemble
-from fem.linear import BACKEND, factorise
+from fem.core.assembly import assemble
+from fem.core.linear import BACKEND, factorise
 from wear.case import JOBS
 from wear.chain.single import run
 from wear.chain.solid import solid_case, solid_impact, solid_settings

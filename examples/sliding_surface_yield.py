@@ -7,7 +7,7 @@ A rigid 10 mm ball is pressed into an elastic steel plate without friction, then
 μp. On a compressible plate the solved contact's pressure shifts towards the trailing edge, in proportion to the
 coupling β = (1 − 2ν)/(2(1 − ν)) (Johnson 1985 §7), and the surface yields earlier. Prints, for ν = 0.3 and 0.45,
 the pressure's centroid, its shift per unit β, and the p0/Y of the largest surface von Mises stress
-(fem.surface_stress); writes the surface von Mises stress along the plane of incidence to --out/surface.csv and a
+(fem.solid.surface_stress); writes the surface von Mises stress along the plane of incidence to --out/surface.csv and a
 figure. IMPACTWEAR_QUICK=1: no edge band (coarser, faster).
 """
 
@@ -21,7 +21,7 @@ import numpy as np
 
 import fem
 from contact import Material
-from fem.plasticity import von_mises
+from fem.core.plasticity import von_mises
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--out", default="sliding-yield-example", help="output folder")

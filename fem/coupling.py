@@ -37,9 +37,10 @@ import numpy as np
 
 from contact import ImpactResult, TabulatedLaw
 from contact.impact import ForceLawRangeError
-from fem.reload import elastic_reload
-from fem.result import FirstYieldPoint, IndentationResult, join, loading_branch, unloading_curve
-from fem.solver import ConvergenceError, PlateState
+from fem.axisymmetric.reload import elastic_reload
+from fem.axisymmetric.result import FirstYieldPoint, IndentationResult, join, loading_branch, unloading_curve
+from fem.axisymmetric.solver import PlateState
+from fem.core.increments import ConvergenceError
 
 __all__ = ["UNLOAD_MARGIN", "CouplingSettings", "CoupledImpact", "PlateCycle", "couple", "couple_elastic",
            "contact_pressure", "force_law", "loading_path", "pressure_table"]  # fmt: skip

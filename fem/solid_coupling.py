@@ -1,7 +1,7 @@
 r"""The oblique impact ⇄ 3-D plate coupling (SI units).
 
-The impact engine integrates the ball; the 3-D plate (:mod:`fem.solid`) answers with its normal force and contact
-radius along the impact's own path. One coupling iteration:
+The impact engine integrates the ball; the 3-D plate (:mod:`fem.solid.indentation`) answers with its normal force and
+contact radius along the impact's own path. One coupling iteration:
 
 1. take the path of the impact (:func:`impact_path`): the normal overlap δ(t), the contact centre c(t) (the point
    under the ball's centre, ``contact_x``) and the slide ξ(t) = ∫ (v_t − Rω) dt of the ball's surface in contact
@@ -22,7 +22,7 @@ normal law is the 3-D one's within about 1 %), one or two iterations normally su
 The impact's tangential law is the one ``impact_on_law`` runs: in the chain the plate's own, Mindlin–Deresiewicz
 partial slip with memory (``wear.chain.solid.solid_case``), fed by the 3-D plate's normal force and contact radius
 and limited, like the plate's slip traction, by the plate surface's shear strength (Orowan's τ = min(μp, k),
-:mod:`fem.coulomb3d`; the law carries it as ``TabulatedLaw.shear_strength``). The 3-D plate's tangential force
+:mod:`fem.solid.friction`; the law carries it as ``TabulatedLaw.shear_strength``). The 3-D plate's tangential force
 along the path (``solid.tangential_force``) is compared with the impact's
 (:attr:`SolidCoupledImpact.tangential_mismatch`), the measure of what the law misses.
 """
@@ -37,9 +37,9 @@ import numpy as np
 from scipy.integrate import cumulative_trapezoid
 
 from contact import ImpactResult, Material, TabulatedLaw
+from fem.core.increments import WorkCounters
 from fem.coupling import force_law
-from fem.solid import MAX_FRICTION, SolidIndentation, SolidRecorder, solid_solver
-from fem.solid_solver import SolidStats
+from fem.solid.indentation import MAX_FRICTION, SolidIndentation, SolidRecorder, solid_solver
 
 __all__ = ["ImpactPath", "SolidCouplingSettings", "SolidCoupledImpact", "couple_solid", "impact_path",
            "place_steps"]  # fmt: skip
@@ -50,7 +50,7 @@ class SolidCouplingSettings:
     """The 3-D coupling's numbers: ``tolerance`` (relative change of δ_max and absolute change of e_t between
     impact runs), ``max_iterations`` (3-D plate cycles), the increments ``load_steps`` and ``unload_steps``, the
     probe step's ``overshoot`` past δ_max (relative), ``contact_elements`` across the largest contact radius and the
-    refined box's ``box_depth`` (in contact radii, :func:`fem.mesh3d.generate_block`)."""
+    refined box's ``box_depth`` (in contact radii, :func:`fem.solid.mesh.generate_block`)."""
 
     tolerance: float = 0.005
     max_iterations: int = 3
@@ -138,7 +138,7 @@ class SolidCoupledImpact:
     tangential_restitutions: tuple[float, ...]
     change: float
     converged: bool
-    work: SolidStats = field(default_factory=SolidStats)
+    work: WorkCounters = field(default_factory=WorkCounters)
 
     @property
     def iterations(self) -> int:
@@ -224,15 +224,15 @@ def couple_solid(
     """Couple an impact to the 3-D plate (module docstring): ``impact_on_law(law)`` runs the case's impact (with
     histories) on a force law, ``first`` is the starting impact (e.g. the axisymmetric coupled one), ``radius`` (m)
     the ball's, ``plate`` and ``ball`` (None = rigid) the materials, ``friction`` μ (the impact's, ≤
-    :data:`fem.solid.MAX_FRICTION`), ``hardening`` H (Pa). ``progress(iteration)`` is called as each 3-D cycle
-    starts."""
+    :data:`fem.solid.indentation.MAX_FRICTION`), ``hardening`` H (Pa). ``progress(iteration)`` is called as each 3-D
+    cycle starts."""
     settings = settings or SolidCouplingSettings()
     if not 0.0 <= friction <= MAX_FRICTION:
         raise ValueError(f"friction={friction!r}: the 3-D plate takes a Coulomb coefficient in [0, {MAX_FRICTION}]")
     impact = first
     overlaps, restitutions = [first.max_overlap], [first.tangential_restitution]
     change, converged = math.inf, False
-    work = SolidStats()
+    work = WorkCounters()
     for iteration in range(settings.max_iterations):
         if progress is not None:
             progress(iteration)

@@ -1,6 +1,7 @@
 """Plate meshes shipped with impactwear (data only).
 
 ``indent_default.msh``: the default dimensionless plate mesh (unit length = the largest contact radius of the
-path; scaled by :func:`fem.mesh.default_mesh`, found through :data:`fem.mesh.DEFAULT_MESH_FILE`), generated from
-:data:`fem.mesh.DEFAULT_PARAMETERS`. Run ``python -m meshes`` to rewrite it.
+path; scaled by :func:`fem.axisymmetric.mesh.default_mesh`, found through
+:data:`fem.axisymmetric.mesh.DEFAULT_MESH_FILE`), generated from :data:`fem.axisymmetric.mesh.DEFAULT_PARAMETERS`. Run
+``python -m meshes`` to rewrite it.
 """

@@ -8,7 +8,7 @@ from skfem import MeshTri
 
 import fem
 from contact.materials import Material
-from fem.mesh import DEFAULT_MESH_FILE, DEFAULT_PARAMETERS, generate_mesh, load_mesh
+from fem.axisymmetric.mesh import DEFAULT_MESH_FILE, DEFAULT_PARAMETERS, generate_mesh, load_mesh
 
 
 def test_regenerating_the_default_mesh_reproduces_the_file():
@@ -55,7 +55,7 @@ def test_growth_box_keeps_the_contact_resolution_of_a_widened_contact():
     rule of ≥ 30 across the contact, scaled); growth = 1 is the mesh without the box."""
     import numpy as np
 
-    from fem.mesh import generate_mesh
+    from fem.axisymmetric.mesh import generate_mesh
 
     plain = generate_mesh(contact_elements=8, yield_elements=4)
     grown = generate_mesh(contact_elements=8, yield_elements=4, growth=3.0)

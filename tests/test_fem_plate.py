@@ -7,7 +7,7 @@ import pytest
 
 import fem
 from contact import Material
-from fem.mesh import generate_mesh, scale_mesh
+from fem.axisymmetric.mesh import generate_mesh, scale_mesh
 
 TI = Material(114e9, 0.34, 4430.0, None, "Ti-6Al-4V elastic")
 R = 2.5e-3

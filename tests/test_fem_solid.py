@@ -1,5 +1,5 @@
-"""The 3-D plate (fem.solid, fem.solid_solver) against independent references: Hertz, the axisymmetric FE plate,
-and Hamilton's (1983) closed-form stresses under a sliding sphere.
+"""The 3-D plate (fem.solid.indentation, fem.solid.solver) against independent references: Hertz, the axisymmetric FE
+plate, and Hamilton's (1983) closed-form stresses under a sliding sphere.
 
 The meshes are the default 3-D block (4 elements across the largest contact radius, quadratic nodes at a/8).
 """
@@ -13,11 +13,11 @@ from reference_tables import read_table
 import fem
 from contact.materials import Material
 from contact.theory import first_yield
-from fem.forms3d import discretise_solid
-from fem.mesh3d import generate_block, scale_block
-from fem.plasticity import J2Material, von_mises
-from fem.solid import indent_solid
-from fem.solid_solver import SolidSolver
+from fem.core.plasticity import J2Material, von_mises
+from fem.solid.forms import discretise_solid
+from fem.solid.indentation import indent_solid
+from fem.solid.mesh import generate_block, scale_block
+from fem.solid.solver import SolidSolver
 
 R, E, NU, Y = 0.01, 210e9, 0.3, 210e6
 E_STAR = E / (1.0 - NU**2)
@@ -145,7 +145,7 @@ def test_partial_slip_matches_cattaneo_mindlin():
 
 
 def test_surface_operators_integrate_exactly():
-    """The surface operators against exact integrals (fem.forms3d): the hats' mass sums to the surface area
+    """The surface operators against exact integrals (fem.solid.forms): the hats' mass sums to the surface area
     (Σ_jk ∫ψ_j ψ_k = ∫1), the consistent loads of a linear traction have the hat mass as moments (H G = M, both
     ∫ψ_j ψ_k), and the dual functions' loads have each vertex's own hat integral only (H G̃ = diag ∫ψ_k;
     Wohlmuth 2000)."""
@@ -195,7 +195,7 @@ def test_gross_slip_field_matches_cerruti():
 
 
 def test_shear_limited_gross_slip_carries_orowans_force():
-    """Orowan's friction τ = min(μp, k) (fem.coulomb3d): Hertz load applied without friction, then slid by
+    """Orowan's friction τ = min(μp, k) (fem.solid.friction): Hertz load applied without friction, then slid by
     2 ξ_max at μ = 0.3 with the surface's shear strength k = 0.6 μp0. The whole contact slides at ∫min(μp, k) dA
     = kπc² + (2π/3) μp0 a² (1 − c²/a²)^{3/2}, c² = a²(1 − (k/μp0)²) (Hertz's pressure, integrated by hand; 0.792 μP)
     within 3.5% (measured +2.7%; +1.2% with 6 elements across a: the hats across r = c average the kink of

@@ -1,5 +1,5 @@
-"""The 3-D plate's surface stress (fem.surface_stress) against closed forms: Johnson's (1985) Hertz surface stresses
-and Hamilton's (1983) under a sliding Hertz contact, where first yield is at the surface for μ > 0.3.
+"""The 3-D plate's surface stress (fem.solid.surface_stress) against closed forms: Johnson's (1985) Hertz surface
+stresses and Hamilton's (1983) under a sliding Hertz contact, where first yield is at the surface for μ > 0.3.
 
 Both on the default block refined to 16 elements across a in a band around the contact edge (the surface stresses
 peak there); the band puts vertices on r = a.
@@ -12,13 +12,13 @@ import pytest
 from reference_tables import read_table
 
 from contact.materials import Material
-from fem.forms import assemble, element_matrices, strain
-from fem.forms3d import discretise_solid
-from fem.linear import factorise
-from fem.mesh3d import generate_block, scale_block
-from fem.plasticity import J2Material, von_mises
-from fem.solid import indent_solid
-from fem.surface_stress import surface_stress, vertex_stress
+from fem.core.assembly import assemble, element_matrices, strain
+from fem.core.linear import factorise
+from fem.core.plasticity import J2Material, von_mises
+from fem.solid.forms import discretise_solid
+from fem.solid.indentation import indent_solid
+from fem.solid.mesh import generate_block, scale_block
+from fem.solid.surface_stress import surface_stress, vertex_stress
 
 E, NU = 210e9, 0.3
 E_STAR = E / (1.0 - NU**2)

@@ -14,8 +14,8 @@ import pytest
 import fem
 from contact import effective_modulus
 from contact.theory import first_yield
-from fem.indent import FIRST_YIELD_RTOL
-from fem.plasticity import von_mises
+from fem.axisymmetric.indent import FIRST_YIELD_RTOL
+from fem.core.plasticity import von_mises
 from wear.case import default_case
 from wear.chain.indent import _overlap_for_force
 from wear.chain.plate import case_mesh

@@ -10,7 +10,8 @@ import meshio
 import numpy as np
 import pytest
 
-import fem.solid_solver
+import fem.core.increments
+import fem.solid.solver
 from wear import run
 from wear.app.cli import main
 from wear.case import JOBS
@@ -128,9 +129,9 @@ def test_3d_non_converging_increment_one_line_nothing_written(tmp_path, capsys, 
     the overlap where it failed, and no output folder."""
 
     def fails(self, *args, **kwargs):
-        raise fem.solid_solver._NotConverged(1.0)
+        raise fem.core.increments.NotConverged(1.0)
 
-    monkeypatch.setattr(fem.solid_solver.SolidSolver, "_newton", fails)
+    monkeypatch.setattr(fem.solid.solver.SolidSolver, "_newton", fails)
     args = ["run", "--out", str(tmp_path / "out"), "--quiet", "--set", 'fem.model="3d"', "--set", "fem.mesh_scale=2.6"]
     status = main(args)
     err = capsys.readouterr().err.strip()

@@ -35,7 +35,7 @@ import numpy as np
 from scipy.interpolate import LinearNDInterpolator
 from scipy.spatial import Delaunay
 
-from fem.solid import SolidIndentation
+from fem.solid.indentation import SolidIndentation
 from wear.law import WearLaw
 from wear.pressure import SlidingSpeed
 

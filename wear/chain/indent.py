@@ -20,7 +20,7 @@ from contact import Material, effective_modulus
 from contact.checks import check_number
 from contact.theory import PAPER_YIELD_COEFFICIENT, FirstYield, first_yield, hertz_overlap
 from fem import IndentationResult
-from fem.result import join
+from fem.axisymmetric.result import join
 from wear.case import Case
 from wear.chain.plate import case_mesh
 

@@ -9,7 +9,7 @@ from skfem import MeshTri
 
 import fem
 from contact import ImpactResult, TabulatedLaw, simulate_impact
-from fem.mesh import DEFAULT_PARAMETERS
+from fem.axisymmetric.mesh import DEFAULT_PARAMETERS
 from wear.case import Case
 
 __all__ = ["case_mesh", "case_plate", "coupling_settings", "impact_on_law", "wear_constants"]
@@ -19,7 +19,7 @@ def case_mesh(case: Case, max_overlap: float, growth: float = 1.0) -> MeshTri:
     """The FE mesh for a path reaching ``max_overlap`` (m): fem's default mesh scaled to it, or with
     ``fem.mesh_scale`` ≠ 1 a generated mesh with fem's default element counts across the contact and first-yield
     radii divided by ``mesh_scale``; ``growth``: the contact will widen to that × its first radius
-    (:func:`fem.mesh.generate_mesh`)."""
+    (:func:`fem.axisymmetric.mesh.generate_mesh`)."""
     ball, plate = case.ball.material(), case.plate.material()
     ball_arg = None if ball.is_rigid else ball
     scale = case.fem.mesh_scale

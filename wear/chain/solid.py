@@ -20,7 +20,7 @@ import numpy as np
 from scipy.interpolate import LinearNDInterpolator
 
 from contact import ImpactResult
-from fem.solid import MAX_FRICTION
+from fem.solid.indentation import MAX_FRICTION
 from fem.solid_coupling import SolidCoupledImpact, SolidCouplingSettings, couple_solid
 from wear.case import Case
 from wear.chain.plate import impact_on_law, wear_constants
@@ -62,7 +62,7 @@ def solid_settings(case: Case) -> SolidCouplingSettings:
 
 def check_solid_case(case: Case) -> None:
     """One-line ``ValueError`` for a case the 3-D plate cannot run: a coupling other than two-way, friction above
-    :data:`fem.solid.MAX_FRICTION`, or a mesh too coarse to resolve the contact."""
+    :data:`fem.solid.indentation.MAX_FRICTION`, or a mesh too coarse to resolve the contact."""
     if case.fem.coupling != "two-way":
         raise ValueError(f"fem.model='3d' needs fem.coupling='two-way' (got {case.fem.coupling!r}): the 3-D plate "
                          "is coupled to the impact")  # fmt: skip

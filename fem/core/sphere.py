@@ -6,7 +6,7 @@ The sphere's lower surface at overlap δ is exact (no paraboloid approximation):
 
 and the surface nodes obey u_z(r_i) ≤ z_s(r_i) (small strain: gaps measured at the reference
 radius, and to the node's own reference height: a worn node sits below z = 0). The contact set is
-found by :mod:`fem.solver` (nodes that penetrate join, nodes that pull leave). No penalty parameter.
+found by :mod:`fem.axisymmetric.solver` (nodes that penetrate join, nodes that pull leave). No penalty parameter.
 """
 
 from __future__ import annotations

@@ -1,11 +1,11 @@
 r"""The 3-D plate's public entry point: :func:`indent_solid` (SI units).
 
-A rigid sphere is pressed into the 3-D half plate (:mod:`fem.mesh3d`, :mod:`fem.solid_solver`) along a path of
+A rigid sphere is pressed into the 3-D half plate (:mod:`fem.solid.mesh`, :mod:`fem.solid.solver`) along a path of
 overlaps δ, contact-centre positions c (x, m, in the plane of incidence) and slides ξ (the x displacement of the
 ball's surface in contact relative to the plate far away, m), with Coulomb friction μ. An elastic ball is
-represented, as on the axisymmetric plate (:mod:`fem.indent`), by a rigid sphere and a plate of the same effective
-modulus E*: exact for the normal Hertz contact; for the tangential compliance the ball's own (2 − ν_b)/G_b is then
-missing (Johnson Eq. 7.42), as is the ball's share of the normal–tangential coupling.
+represented, as on the axisymmetric plate (:mod:`fem.axisymmetric.indent`), by a rigid sphere and a plate of the same
+effective modulus E*: exact for the normal Hertz contact; for the tangential compliance the ball's own (2 − ν_b)/G_b is
+then missing (Johnson Eq. 7.42), as is the ball's share of the normal–tangential coupling.
 
 Forces are those on the whole plate (twice the half model's).
 """
@@ -20,11 +20,13 @@ import numpy as np
 
 from contact.checks import check_array, check_number
 from contact.materials import Material
-from fem.indent import _plate_model, check_small_strain, estimate_contact_radius
-from fem.mesh3d import generate_block, scale_block
-from fem.plasticity import J2Material, von_mises
-from fem.solid_solver import SolidSolver, SolidState, SolidStats
-from fem.surface_stress import surface_stress
+from fem.core.increments import WorkCounters
+from fem.core.material import check_small_strain, estimate_contact_radius, plate_model
+from fem.core.plasticity import J2Material, von_mises
+from fem.solid.mesh import generate_block, scale_block
+from fem.solid.solver import SolidSolver
+from fem.solid.state import SolidState
+from fem.solid.surface_stress import surface_stress
 
 __all__ = ["SolidIndentation", "SolidRecorder", "indent_solid", "solid_solver", "MAX_FRICTION"]
 
@@ -63,14 +65,14 @@ class SolidIndentation:
     sticking: np.ndarray
     slip: np.ndarray
     residual_depth: np.ndarray
-    stats: SolidStats
+    stats: WorkCounters
     final: SolidState = field(repr=False)
     solver: SolidSolver = field(repr=False)
 
     def surface_stress(self) -> np.ndarray:
         """The stress (surface vertices, 6) on the surface after the last step (Pa, Mandel:
         σ_xx, σ_yy, σ_zz, √2 σ_yz, √2 σ_xz, √2 σ_xy), recovered from the element stresses and the contact tractions
-        (:func:`fem.surface_stress.surface_stress`)."""
+        (:func:`fem.solid.surface_stress.surface_stress`)."""
         solver = self.solver
         stress = solver.stress_update(self.final).stress
         return surface_stress(solver.disc, stress, self.pressure[-1], self.shear[-1])
@@ -122,11 +124,11 @@ def solid_solver(
     edge_elements: int | None = None,
 ) -> SolidSolver:
     """The 3-D half plate of ``plate`` for a sphere of ``radius`` (m) reaching ``max_overlap`` (m) over the contact
-    centres ``centres`` (m) with friction up to ``friction``: a block (:func:`fem.mesh3d.generate_block`) with
+    centres ``centres`` (m) with friction up to ``friction``: a block (:func:`fem.solid.mesh.generate_block`) with
     ``contact_elements`` elements across the largest expected contact radius (Hertz, or Kogut & Etsion once
     yielded) over a box ``box_depth`` of it deep, around the centres' track, and ``edge_elements`` (None: none)
     across it in a band around the contact edge (where the surface stresses peak)."""
-    material, e_star = _plate_model(plate, ball, hardening)
+    material, e_star = plate_model(plate, ball, hardening)
     check_small_strain(radius, e_star, plate, max_overlap)
     a_max = estimate_contact_radius(radius, e_star, plate, max_overlap)
     track = (float(np.min(centres)) / a_max, float(np.max(centres)) / a_max)
@@ -229,7 +231,7 @@ def indent_solid(
     is the Cattaneo–Mindlin protocol). ``ball`` None = rigid. ``hardening`` H (Pa). The mesh
     (:func:`solid_solver`) has ``contact_elements`` elements across the path's largest expected contact radius over
     a box ``box_depth`` of it deep, around the centres' track, and ``edge_elements`` across it in a band around
-    the contact edge (None: no band; :func:`fem.mesh3d.generate_block`).
+    the contact edge (None: no band; :func:`fem.solid.mesh.generate_block`).
     """
     radius = check_number("radius", radius, low=1e-6, high=10.0, units="m", what="ball radius")
     path = check_array("overlaps", overlaps, low=0.0, units="m", what="overlap")

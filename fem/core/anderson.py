@@ -1,5 +1,5 @@
 r"""Anderson acceleration of a fixed-point iteration (type II, Walker & Ni 2011), for the 3-D plate's
-initial-stiffness iteration u ← u + K_e⁻¹ r(u) (:mod:`fem.solid_solver`; displacements in m)."""
+initial-stiffness iteration u ← u + K_e⁻¹ r(u) (:mod:`fem.solid.solver`; displacements in m)."""
 
 from __future__ import annotations
 

@@ -16,8 +16,8 @@ the field on the surface itself:
 Adjusting the in-plane stresses to step 2's σ_zz at fixed in-plane strain (by ν Δσ_zz / (1 − ν)) was measured and
 left out: against Johnson's Hertz surface stresses it moved σ_r and σ_θ away from the closed form by up to 0.007 p0,
 where the vertex pressure is itself an approximation. Stresses in Mandel notation (σ_xx, σ_yy, σ_zz, √2 σ_yz,
-√2 σ_xz, √2 σ_xy), Pa, as in :mod:`fem.forms3d`. Accuracy (``tests/test_fem_surface_stress.py``, ``docs/fem.md``),
-with 16 elements across a in a band at the contact edge (:func:`fem.mesh3d.generate_block`): Johnson's Hertz
+√2 σ_xz, √2 σ_xy), Pa, as in :mod:`fem.solid.forms`. Accuracy (``tests/test_fem_surface_stress.py``, ``docs/fem.md``),
+with 16 elements across a in a band at the contact edge (:func:`fem.solid.mesh.generate_block`): Johnson's Hertz
 surface stresses within 0.013 p0 but at the edge vertex; Hamilton's under a sliding contact, μ = 0.5, within 2%
 along the trailing half but within an element of the edge, where his √-cusp (0.957 p0 at the edge, under 0.93 p0
 beyond 0.02a of it) is smeared over the element: the edge vertex 20% low, its neighbour 5% high, and the largest
@@ -30,7 +30,7 @@ import math
 
 import numpy as np
 
-from fem.forms3d import SolidDiscretisation
+from fem.solid.forms import SolidDiscretisation
 
 __all__ = ["vertex_stress", "surface_stress"]
 

@@ -1,8 +1,8 @@
 r"""Small-strain J2 (von Mises) plasticity with linear isotropic hardening: radial return.
 
 Vectorised over quadrature points, Mandel notation: 4 components (r, z, θ, √2 rz) on the axisymmetric plate
-(:mod:`fem.forms`) or 6 (x, y, z, √2 yz, √2 xz, √2 xy) on the 3-D plate (:mod:`fem.forms3d`); the first three are
-the normal components in both. With the trial
+(:mod:`fem.axisymmetric.forms`) or 6 (x, y, z, √2 yz, √2 xz, √2 xy) on the 3-D plate (:mod:`fem.solid.forms`); the first
+three are the normal components in both. With the trial
 deviatoric stress s_tr = 2G dev(ε − ε_p,n), q_tr = √(3/2)‖s_tr‖ and the yield function
 f = q_tr − (Y + H ᾱ_n):
 
@@ -62,7 +62,7 @@ class J2Material:
     @property
     def surface_shear_strength(self) -> float:
         """The largest shear traction (Pa) the surface of a perfectly plastic plate carries, k = Y/√3 (von Mises
-        in pure shear; the limit of the contact's slip traction, :mod:`fem.coulomb3d`); ∞ for an elastic or a
+        in pure shear; the limit of the contact's slip traction, :mod:`fem.solid.friction`); ∞ for an elastic or a
         hardening plate, whose surface hardens as it flows."""
         if self.yield_strength is None or self.hardening > 0.0:
             return math.inf

@@ -1,4 +1,4 @@
-r"""Axisymmetric P2 kinematics and vectorised assembly of the tangent and the internal force.
+r"""Axisymmetric P2 kinematics: the strain operators of the (r, z) plate and its surface operators.
 
 Displacement u = (u_r, u_z) on P2 triangles (scikit-fem's :class:`~skfem.ElementTriP2` basis,
 our own interleaved numbering: global DOF 2·n + c for scalar node n and component c = 0 (r),
@@ -13,9 +13,8 @@ and every integral carries the axisymmetric weight 2πr:
 .. math:: K = \sum_e \sum_q B_q^T D_q B_q \, 2\pi r_q\, w_q |J_e|, \qquad
           f_{int} = \sum_e \sum_q B_q^T \sigma_q \, 2\pi r_q\, w_q |J_e| .
 
-The element matrices are formed with numpy batched products and summed into a fixed CSR
-pattern (computed once) with :func:`numpy.bincount`; scikit-fem's generic form assembly would
-re-evaluate the basis at every Newton iteration.
+The operators are computed once; :mod:`fem.core.assembly` forms the element matrices and the internal force
+from them.
 """
 
 from __future__ import annotations
@@ -27,7 +26,9 @@ import numpy as np
 import scipy.sparse as sp
 from skfem import Basis, ElementTriP2, MeshTri
 
-__all__ = ["Discretisation", "csr_pattern", "discretise", "elastic_tangent"]
+from fem.core.assembly import csr_pattern
+
+__all__ = ["Discretisation", "discretise", "elastic_tangent"]
 
 SQRT2 = math.sqrt(2.0)
 
@@ -117,19 +118,6 @@ def _surface_hats(mesh: MeshTri, surface_nodes: np.ndarray) -> tuple[sp.csr_matr
     return hats, mass
 
 
-def csr_pattern(element_dofs: np.ndarray, ndofs: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The fixed CSR pattern (``indptr``, ``indices``) of the global matrix of elements with DOFs ``element_dofs``
-    (elements, n), and ``entry_index`` mapping each element entry (elements · n · n, row-major) to it."""
-    n = element_dofs.shape[1]
-    rows = np.repeat(element_dofs[:, :, None], n, axis=2).ravel()
-    cols = np.repeat(element_dofs[:, None, :], n, axis=1).ravel()
-    unique, entry_index = np.unique(rows * ndofs + cols, return_inverse=True)
-    indices = (unique % ndofs).astype(np.int32)
-    indptr = np.zeros(ndofs + 1, dtype=np.int64)
-    np.add.at(indptr, unique // ndofs + 1, 1)
-    return np.cumsum(indptr), indices, entry_index
-
-
 def discretise(mesh: MeshTri, intorder: int = 4) -> Discretisation:
     """Precompute the P2 axisymmetric operators of ``mesh`` (r, z in m; named boundaries required)."""
     basis = Basis(mesh, ElementTriP2(), intorder=intorder)
@@ -202,36 +190,3 @@ def discretise(mesh: MeshTri, intorder: int = 4) -> Discretisation:
         node_z=node_z,
         surface_layer=surface_layer,
     )
-
-
-def strain(disc: Discretisation, u: np.ndarray) -> np.ndarray:
-    """Mandel strain (elements, qp, c) of the displacement ``u`` (m); c = 4 here, 6 for :mod:`fem.forms3d`, whose
-    discretisation carries the same operators (``B``, ``weight``, ``element_dofs``, the CSR pattern)."""
-    ue = u[disc.element_dofs]  # (el, 12)
-    return np.einsum("eqij,ej->eqi", disc.B, ue, optimize=True)
-
-
-def internal_force(disc: Discretisation, stress: np.ndarray) -> np.ndarray:
-    """f_int (N) of the Mandel ``stress`` (elements, qp, c) in Pa."""
-    fe = np.einsum("eqij,eqi,eq->ej", disc.B, stress, disc.weight, optimize=True)
-    return np.bincount(disc.element_dofs.ravel(), weights=fe.ravel(), minlength=disc.ndofs)
-
-
-def element_matrices(disc: Discretisation, tangent: np.ndarray, elements: np.ndarray | None = None) -> np.ndarray:
-    """Element stiffness matrices (n, k, k) in N/m (k element DOFs: 12 here) for the c × c ``tangent`` per
-    (element, qp).
-
-    ``tangent`` is (n, qp, c, c) for the n elements selected by ``elements`` (all if None), or
-    (c, c) for a uniform elastic tangent.
-    """
-    B = disc.B if elements is None else disc.B[elements]
-    w = disc.weight if elements is None else disc.weight[elements]
-    DB = np.matmul(tangent, B)
-    BT = np.swapaxes(B, 2, 3) * w[:, :, None, None]
-    return np.matmul(BT, DB).sum(axis=1)
-
-
-def assemble(disc: Discretisation, element_data: np.ndarray) -> sp.csr_matrix:
-    """Sum element matrices (elements, k, k) into the fixed CSR pattern."""
-    data = np.bincount(disc.entry_index, weights=element_data.ravel(), minlength=disc.indices.size)
-    return disc.matrix(data)

@@ -8,12 +8,11 @@ numbering: global DOF 3·n + c for scalar node n and component c). Strains in Ma
     \sqrt2\,\varepsilon_{yz}, \sqrt2\,\varepsilon_{xz}, \sqrt2\,\varepsilon_{xy}\bigr),
 
 so the operators ``B`` (elements, qp, 6, 30) and weights (m³) plug into the same batched assembly as the
-axisymmetric plate (:func:`fem.forms.strain`, :func:`~fem.forms.internal_force`, :func:`~fem.forms.element_matrices`,
-:func:`~fem.forms.assemble`). Four quadrature points per element integrate the stiffness of a straight P2
-tetrahedron exactly.
+axisymmetric plate's (:mod:`fem.core.assembly`). Four quadrature points per element integrate the stiffness of a
+straight P2 tetrahedron exactly.
 
 The surface z = 0 carries the contact. Its quadratic nodes take the contact constraints; the tractions (pressure,
-shear) are fields linear between the surface vertices, as on the axisymmetric plate (:mod:`fem.sphere_contact`):
+shear) are fields linear between the surface vertices, as on the axisymmetric plate (:mod:`fem.core.sphere`):
 the vertex hats ψ_j (values ψ_j(x_i) at the surface nodes: 1 at the vertex, ½ at the mid-edge nodes of its edges),
 their mass M_jk = ∫ ψ_j ψ_k dA, and the consistent loads G_ik = ∫ φ_i ψ_k dA of a linear traction on the quadratic
 nodes (on a triangle of area A: A/30 and −A/60 at the vertices, 2A/15 and A/15 at the mid-edge nodes, for the own
@@ -32,7 +31,7 @@ import numpy as np
 import scipy.sparse as sp
 from skfem import Basis, ElementTetP2, MeshTet
 
-from fem.forms import csr_pattern
+from fem.core.assembly import csr_pattern
 
 __all__ = ["SolidDiscretisation", "discretise_solid"]
 
@@ -156,7 +155,7 @@ def _surface_operators(mesh: MeshTet, basis: Basis, surface_nodes: np.ndarray):
 
 def discretise_solid(mesh: MeshTet) -> SolidDiscretisation:
     """Precompute the P2 operators of the half block ``mesh`` (m; boundaries ``surface``, ``bottom``,
-    ``symmetry`` named, as :func:`fem.mesh3d.generate_block` makes them)."""
+    ``symmetry`` named, as :func:`fem.solid.mesh.generate_block` makes them)."""
     missing = [b for b in ("surface", "bottom", "symmetry") if mesh.boundaries is None or b not in mesh.boundaries]
     if missing:
         raise ValueError(

@@ -5,101 +5,54 @@ the x displacement of the ball's surface in contact, relative to the plate far a
 velocity of the impact model). The plate's surface nodes obey
 
 * **contact** (node by node): u_z,i ≤ z_s(ρ_i) − z_i with ρ_i = √((x_i − c)² + y_i²) and z_s the sphere's surface
-  (:func:`fem.sphere_contact.sphere_surface`); a node in contact has u_z prescribed there;
-* **friction**: the discrete Coulomb law on the surface vertices (:mod:`fem.coulomb3d`): weak stick constraints on
+  (:func:`fem.core.sphere.sphere_surface`); a node in contact has u_z prescribed there;
+* **friction**: the discrete Coulomb law on the surface vertices (:mod:`fem.solid.friction`): weak stick constraints on
   the sticking vertices' dual functions, whose multipliers are the stick tractions, and at every other vertex the
   ball's tangential hat moment μ times its normal one, a load that follows the normal force.
 
 Nodes that penetrate join the contact, nodes where the pressure is negative leave it; the stick set is Coulomb's law
-returned vertex by vertex (:meth:`fem.coulomb3d.SurfaceFriction.update_stick`). Each contact and stick set is solved
-by Newton with the consistent tangent (the slip traction's linearisation makes it nonsymmetric), backtracking along
-a step that would raise the residual; an increment whose sets do not settle in a few rounds is cut in halves. The
+returned vertex by vertex (:meth:`fem.solid.friction.SurfaceFriction.update_stick`). Each contact and stick set is
+solved by Newton with the consistent tangent (the slip traction's linearisation makes it nonsymmetric), backtracking
+along a step that would raise the residual; an increment whose sets do not settle in a few rounds is cut in halves. The
 sets are sought on equilibria converged to a loose tolerance (``set_rtol``, 10⁻³ of the contact force) and only the
 settled sets' equilibrium is converged to the solver's ``rtol`` (and the sets checked once more): Newton's
 quadratic tail is spent once an increment, not once a set round (a plastic frictional increment of the default
 impact 17 → 13 iterations, an unloading one 50 → 30; the same sets, displacements within 10⁻⁴).
 
-Plasticity is the same J2 radial return as the axisymmetric plate (:mod:`fem.plasticity`, 6 Mandel components).
+Plasticity is the same J2 radial return as the axisymmetric plate (:mod:`fem.core.plasticity`, 6 Mandel components).
 Linear solves: the constrained rows become s·I, the stick rows enter as an augmented Lagrangian (one multiplier
 update a Newton step), and the system is solved by CG (GMRES where slip tractions make it nonsymmetric)
-preconditioned with the PARDISO factor of an earlier symmetric such matrix (:mod:`fem.kept_factor`), to an
+preconditioned with the PARDISO factor of an earlier symmetric such matrix (:mod:`fem.core.kept_factor`), to an
 inexact-Newton tolerance, refactorised when the Krylov method is slow: a modified-Newton iteration that keeps one
 factorisation over much of an increment.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields
 from functools import partial
 
 import numpy as np
 import scipy.sparse as sp
 from skfem import MeshTet
 
-from fem.anderson import anderson_step
-from fem.coulomb3d import SurfaceFriction
-from fem.forms import assemble, element_matrices, internal_force, strain
-from fem.forms3d import discretise_solid
-from fem.kept_factor import KeptFactor, SolveCounters
-from fem.linear import SingularMatrixError
-from fem.plasticity import J2Material, radial_return
-from fem.solver import ConvergenceError
-from fem.sphere_contact import sphere_surface
+from fem.core.anderson import anderson_step
+from fem.core.assembly import assemble, element_matrices, internal_force, strain
+from fem.core.increments import NotConverged, WorkCounters, advance
+from fem.core.kept_factor import KeptFactor
+from fem.core.linear import SingularMatrixError
+from fem.core.plasticity import J2Material, radial_return
+from fem.core.sphere import sphere_surface
+from fem.solid.forms import discretise_solid
+from fem.solid.friction import SurfaceFriction
+from fem.solid.state import SolidState
 
-__all__ = ["SolidState", "SolidSolver", "SolidStats"]
-
-
-@dataclass(frozen=True, eq=False)
-class SolidState:
-    """Converged state: ``overlap`` δ (m), ``centre`` c (m), ``slide`` ξ (m), ``u`` nodal displacements (m,
-    interleaved x, y, z), ``plastic_strain`` (elements, qp, 6) Mandel, ``alpha`` (elements, qp) equivalent plastic
-    strain, ``contact`` and ``stick`` bool masks of the surface nodes, ``direction`` (surface vertices, 2) the unit
-    slip directions of the slipping vertices, ``iterations`` Newton iterations spent, ``friction`` the Coulomb
-    coefficient it was solved with."""
-
-    overlap: float
-    centre: float
-    slide: float
-    u: np.ndarray
-    plastic_strain: np.ndarray
-    alpha: np.ndarray
-    contact: np.ndarray
-    stick: np.ndarray
-    direction: np.ndarray
-    iterations: int = 0
-    friction: float = 0.0
-
-
-@dataclass
-class SolidStats(SolveCounters):
-    """Work counters (for the benchmark): factorisations, linear solves (factor applications) and seconds spent
-    factorising (:class:`fem.kept_factor.SolveCounters`), Newton iterations, set updates, cut increments,
-    line-search backtracks."""
-
-    iterations: int = 0
-    set_updates: int = 0
-    cuts: int = 0
-    elastic_retries: int = 0
-    backtracks: int = 0
-    increments: int = 0
-    history: list = field(default_factory=list)
-
-    def add(self, other: SolidStats) -> None:
-        """Add the counters of ``other`` (another run's work) to these."""
-        for counter in fields(self):
-            if counter.name != "history":
-                setattr(self, counter.name, getattr(self, counter.name) + getattr(other, counter.name))
-        self.history.extend(other.history)
-
-
-class _NotConverged(Exception):
-    pass
+__all__ = ["SolidSolver"]
 
 
 class SolidSolver:
     """3-D half plate on ``mesh`` (m) of ``material`` pressed by a rigid sphere of ``radius`` (m) with friction
     coefficient ``friction``, its slip traction limited by the surface's ``shear_strength`` k (Pa; default: Y/√3 of
-    a perfectly plastic ``material``, else none; :mod:`fem.coulomb3d`). ``force_scale`` (N) and ``gap_scale`` (m)
+    a perfectly plastic ``material``, else none; :mod:`fem.solid.friction`). ``force_scale`` (N) and ``gap_scale`` (m)
     set the tolerances (1e-12 and 1e-7 of them); ``rtol`` is the converged out-of-balance force relative to the
     contact force, ``set_rtol`` (max(rtol, 10⁻³)) the looser one the contact and stick sets are sought at."""
 
@@ -131,7 +84,7 @@ class SolidSolver:
         self.max_set_updates = 6
         # 10⁻² found other contact sets at an edge node (displacements 2% apart); 10⁻³ the same sets as rtol
         self.set_rtol = max(rtol, 1e-3)
-        self.stats = SolidStats()
+        self.stats = WorkCounters()
         self.tangent_elastic = material.elastic_tangent_of(6)
         self.elastic_element_matrices = element_matrices(d, self.tangent_elastic)
         if shear_strength is None:
@@ -254,7 +207,7 @@ class SolidSolver:
                 if searched is None:
                     break
                 u, multipliers, (upd, f, normal_moments, residual_vector, balanced) = searched
-        raise _NotConverged(residual)
+        raise NotConverged(residual)
 
     def _balance(self, start: SolidState, contact, rows, slip_vertices, direction, mu: float, u, multipliers):
         """The state at displacement ``u`` (m): (stress update, internal force f (N), the normal hat moments (N) or
@@ -304,7 +257,7 @@ class SolidSolver:
 
         ρ is 10⁴ × the stiffness of a DOF over the rows' own scale (the rows are scaled to unit sums, so the
         constraint error is a length): each update gains about four digits on the multipliers, so they converge
-        alongside Newton, one solve a step. The solve (:class:`fem.kept_factor.KeptFactor`) is preconditioned by
+        alongside Newton, one solve a step. The solve (:class:`fem.core.kept_factor.KeptFactor`) is preconditioned by
         the kept factor of an earlier K + ρCᵀC with the same constrained DOFs and stick rows (the penalty part is
         then exact in the preconditioner and the Krylov method sees only the plastic points' change of tangent and
         the slip tractions' ``coupling``), within ``tolerance`` (N). A saddle-point factorisation (PARDISO's
@@ -349,7 +302,7 @@ class SolidSolver:
         while True:
             try:
                 u, upd, f, it = self._equilibrate(start, target, u, contact, stick, direction, mu, unloading, tolerance)
-            except _NotConverged:
+            except NotConverged:
                 u, upd, f, it = self._equilibrate(start, target, start.u, contact, stick, direction, mu, not unloading,
                                                   tolerance)  # fmt: skip
                 self.stats.elastic_retries += 1
@@ -377,7 +330,7 @@ class SolidSolver:
                                   spent, mu)  # fmt: skip
             rounds += 1
             if rounds >= self.max_set_updates:
-                raise _NotConverged(float("nan"))
+                raise NotConverged(float("nan"))
             tolerance = self.set_rtol
             self.stats.set_updates += 1
             seen.add(contact.tobytes() + stick.tobytes())
@@ -385,7 +338,7 @@ class SolidSolver:
                 # a cycle: correct the contact only (penetration first), keep the stick set
                 new_stick = stick & new_contact
                 if (new_contact.tobytes() + new_stick.tobytes()) in seen:
-                    raise _NotConverged(float("nan"))
+                    raise NotConverged(float("nan"))
             contact, stick, direction = new_contact, new_stick, new_direction
 
     def _guess(self, state: SolidState, previous: SolidState | None, target, mu: float):
@@ -402,25 +355,37 @@ class SolidSolver:
         last_step = 0.0 if previous is None else state.slide - previous.slide
         return u0, contact, self.surface.stick_guess(state, target, contact, mu, last_step), state.direction
 
-    def advance(
-        self, state: SolidState, previous: SolidState | None, target: tuple[float, float, float],
-        friction: float | None = None, depth: int = 0,
-    ) -> SolidState:  # fmt: skip
-        """Converged state at ``target`` = (overlap δ, centre c, slide ξ) in m from ``state``, with friction
-        coefficient ``friction`` (default the solver's); cuts the increment in halves if needed."""
-        mu = self.friction if friction is None else friction
+    def attempt(self, state: SolidState, previous: SolidState | None, step: tuple[float, float, float, float]):
+        """The Newton attempt at ``step`` = (overlap δ, centre c, slide ξ in m, friction coefficient μ) from
+        ``state`` (``previous``: the state before it, for the guess); :class:`fem.core.increments.NotConverged` if it
+        fails."""
+        target, mu = step[:3], step[3]
         u0, contact, stick, direction = self._guess(state, previous, target, mu)
-        try:
-            new = self._newton(state, target, u0, contact, stick, direction, mu)
-            self.stats.increments += 1
-            return new
-        except _NotConverged as exc:
-            if depth >= self.max_cuts:
-                raise ConvergenceError(
-                    f"3-D plate: Newton did not converge at overlap={target[0]:.6g} m, centre={target[1]:.6g} m, "
-                    f"slide={target[2]:.6g} m (cut {depth} times): residual {float(exc.args[0]):.3e} N"
-                ) from None
-        self.stats.cuts += 1
-        middle = tuple(0.5 * (a + b) for a, b in zip((state.overlap, state.centre, state.slide), target, strict=True))
-        half = self.advance(state, previous, middle, friction, depth + 1)
-        return self.advance(half, state, target, friction, depth + 1)
+        return self._newton(state, target, u0, contact, stick, direction, mu)
+
+    @staticmethod
+    def midpoint(state: SolidState, step: tuple[float, float, float, float]) -> tuple[float, float, float, float]:
+        """The step halfway from ``state``'s (δ, c, ξ) to ``step``'s (m), at its friction coefficient."""
+        start = (state.overlap, state.centre, state.slide)
+        return (*(0.5 * (a + b) for a, b in zip(start, step[:3], strict=True)), step[3])
+
+    @staticmethod
+    def describe(state: SolidState, step: tuple[float, float, float, float]) -> str:
+        """The failed increment, for the user."""
+        return (
+            f"3-D plate: Newton did not converge at overlap={step[0]:.6g} m, centre={step[1]:.6g} m, "
+            f"slide={step[2]:.6g} m"
+        )
+
+    def advance(
+        self,
+        state: SolidState,
+        previous: SolidState | None,
+        target: tuple[float, float, float],
+        friction: float | None = None,
+    ) -> SolidState:
+        """Converged state at ``target`` = (overlap δ, centre c, slide ξ) in m from ``state``, with friction
+        coefficient ``friction`` (default the solver's); cuts the increment in halves if needed
+        (:func:`fem.core.increments.advance`)."""
+        mu = self.friction if friction is None else friction
+        return advance(self, state, previous, (*target, mu))

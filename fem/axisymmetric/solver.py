@@ -25,22 +25,20 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from skfem import MeshTri
 
-from fem.forms import assemble, discretise, element_matrices, internal_force, strain
-from fem.plasticity import J2Material, radial_return
-from fem.sphere_contact import sphere_surface
+from fem.axisymmetric.forms import discretise
+from fem.core.assembly import assemble, element_matrices, internal_force, strain
+from fem.core.increments import NotConverged, WorkCounters, advance
+from fem.core.plasticity import J2Material, radial_return
+from fem.core.sphere import sphere_surface
 
-__all__ = ["ConvergenceError", "PlateState", "PlateSolver"]
-
-
-class ConvergenceError(RuntimeError):
-    """Newton did not converge even after cutting the increment."""
+__all__ = ["PlateState", "PlateSolver"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -59,26 +57,6 @@ class PlateState:
     @property
     def n_active(self) -> int:
         return int(np.count_nonzero(self.active))
-
-
-@dataclass
-class SolverStats:
-    """Counters of the work done (for the benchmark): factorisations, Newton iterations, cuts."""
-
-    factorisations: int = 0
-    iterations: int = 0
-    cuts: int = 0
-    relaxed: int = 0
-    elastic_retries: int = 0
-    cg_iterations: int = 0
-    increments: int = 0
-    assembly_time: float = 0.0
-    factor_time: float = 0.0
-    history: list = field(default_factory=list)
-
-
-class _NotConverged(Exception):
-    pass
 
 
 class PlateSolver:
@@ -120,7 +98,7 @@ class PlateSolver:
         self.elastic_element_matrices = element_matrices(d, material.elastic_tangent)
         self.fixed_dofs = np.unique(np.concatenate([d.axis_dofs, d.bottom_dofs]))
         self.surface_uz = 2 * d.surface_nodes + 1
-        self.stats = SolverStats()
+        self.stats = WorkCounters()
         self._elastic_K = None
         self._lu = None
         self._refresh = False
@@ -192,7 +170,7 @@ class PlateSolver:
         for _ in range(self.max_set_updates):
             try:
                 u, upd, f, spent, active = self._equilibrate(start, u, active, obstacle, seen)
-            except _NotConverged:
+            except NotConverged:
                 # the consistent tangent misleads where quadrature points flip between reverse yield and elastic
                 # unloading (the plate set free of a conforming dent): the elastic stiffness converges there,
                 # restarted from the increment's start so its first iterate is the elastic trial state (exact when
@@ -237,7 +215,7 @@ class PlateSolver:
             self.stats.history.append(iterations)
             self.stats.relaxed += 1
             return replace(best[1], iterations=iterations)
-        raise _NotConverged(float("nan"))
+        raise NotConverged(float("nan"))
 
     def _equilibrate(
         self, start: PlateState, u: np.ndarray, active: np.ndarray, obstacle: np.ndarray, seen: set, elastic=False
@@ -246,7 +224,7 @@ class PlateSolver:
         the constraint holds exactly afterwards), equilibrium of the free DOFs. Free nodes that penetrate join
         the set during the first ``early_joins`` iterations (a set not in ``seen``): that saves a restart when
         the increment's guess of the set was too small, as on every loading step. Returns (u, stress update,
-        internal force, iterations, set); raises :class:`_NotConverged`. ``elastic``: iterate with the elastic
+        internal force, iterations, set); raises :class:`NotConverged`. ``elastic``: iterate with the elastic
         stiffness (initial-stiffness method: slower, linear convergence, but robust), up to 4 × the iterations."""
         d = self.disc
         uz = self.surface_uz
@@ -306,7 +284,7 @@ class PlateSolver:
             u, cached = self._line_search(start, u, step, free_mask, residual, prescribed)
             if prescribed and np.linalg.norm(cached[1][free_mask]) > residual:
                 break  # no step length along the Newton direction lowers the residual: not a descent direction
-        raise _NotConverged(residual)
+        raise NotConverged(residual)
 
     def _forcing(self, residual: float, previous: float | None, target: float, rhs: np.ndarray) -> float:
         r"""Relative tolerance of the inner linear solve (inexact Newton, Eisenstat & Walker 1996, choice 2):
@@ -398,20 +376,23 @@ class PlateSolver:
                 return state.u, state.active & keep
         return state.u, state.active
 
-    def advance(self, state: PlateState, previous: PlateState | None, overlap: float, depth: int = 0) -> PlateState:
-        """Converged state at ``overlap`` (m) from ``state``; cuts the increment in halves if needed."""
+    def attempt(self, state: PlateState, previous: PlateState | None, overlap: float) -> PlateState:
+        """The Newton attempt at ``overlap`` (m) from ``state`` (``previous``: the state before it, for the guess);
+        :class:`fem.core.increments.NotConverged` if it fails."""
         u0, n0 = self._guess(state, previous, overlap)
-        try:
-            new = self._newton(state, overlap, u0, n0)
-            self.stats.increments += 1
-            return new
-        except _NotConverged as exc:
-            if depth >= self.max_cuts:
-                raise ConvergenceError(
-                    f"Newton did not converge at overlap={overlap:.6g} m (increment from {state.overlap:.6g} m, "
-                    f"cut {depth} times): free residual {float(exc.args[0]):.3e} N"
-                ) from None
-        self.stats.cuts += 1
-        middle = 0.5 * (state.overlap + overlap)
-        half = self.advance(state, previous, middle, depth + 1)
-        return self.advance(half, state, overlap, depth + 1)
+        return self._newton(state, overlap, u0, n0)
+
+    @staticmethod
+    def midpoint(state: PlateState, overlap: float) -> float:
+        """The overlap (m) halfway from ``state``'s to ``overlap``."""
+        return 0.5 * (state.overlap + overlap)
+
+    @staticmethod
+    def describe(state: PlateState, overlap: float) -> str:
+        """The failed increment, for the user."""
+        return f"Newton did not converge at overlap={overlap:.6g} m (increment from {state.overlap:.6g} m)"
+
+    def advance(self, state: PlateState, previous: PlateState | None, overlap: float) -> PlateState:
+        """Converged state at ``overlap`` (m) from ``state``; cuts the increment in halves if needed
+        (:func:`fem.core.increments.advance`)."""
+        return advance(self, state, previous, overlap)

@@ -9,27 +9,24 @@ from __future__ import annotations
 
 import math
 import os
-import warnings
 
 import meshio
 import numpy as np
 from skfem import MeshTri
 
 from contact.checks import check_array, check_number
-from contact.materials import Material, effective_modulus
+from contact.materials import Material
 from contact.theory import first_yield as hertz_first_yield
-from fem.mesh import DEFAULT_PARAMETERS, default_mesh, generate_mesh, load_mesh, scale_mesh
-from fem.plasticity import J2Material, von_mises
-from fem.reload import SurfaceCompliance, candidate_nodes
-from fem.result import FirstYieldPoint, IndentationResult
-from fem.solver import PlateSolver, PlateState
-from fem.sphere_contact import contact_radius, pressure_from_reactions
+from fem.axisymmetric.mesh import DEFAULT_PARAMETERS, default_mesh, generate_mesh, load_mesh, scale_mesh
+from fem.axisymmetric.reload import SurfaceCompliance, candidate_nodes
+from fem.axisymmetric.result import FirstYieldPoint, IndentationResult
+from fem.axisymmetric.solver import PlateSolver, PlateState
+from fem.core.material import check_small_strain, estimate_contact_radius, plate_model
+from fem.core.plasticity import J2Material, von_mises
+from fem.core.sphere import contact_radius, pressure_from_reactions
 
-__all__ = ["indent", "indent_impact", "plate_mesh", "estimate_contact_radius"]
+__all__ = ["indent", "indent_impact", "plate_mesh"]
 
-#: Largest a/R accepted (small strain); a warning is given above SMALL_STRAIN_WARNING.
-SMALL_STRAIN_LIMIT = 0.3
-SMALL_STRAIN_WARNING = 0.1
 #: First yield is refined until the elastic state it is scaled from carries a force within this fraction of the
 #: first-yield force (relative): the mesh's own first yield to 1%, well inside its 3% accuracy against the exact
 #: closed form (tests/test_fem_yield.py).
@@ -37,54 +34,6 @@ FIRST_YIELD_RTOL = 0.01
 #: Most elastic re-solves spent refining first yield (two suffice on the default meshes: the self-similar scaling
 #: is exact in the continuum, so each re-solve only corrects the mesh's error at a different contact radius).
 FIRST_YIELD_SOLVES = 6
-
-
-def _plate_model(plate: Material, ball: Material | None, hardening: float) -> tuple[J2Material, float]:
-    if not isinstance(plate, Material):
-        raise ValueError(f"plate={plate!r} is not a contact.Material")
-    if plate.is_rigid:
-        raise ValueError("plate.E=inf: the plate must be deformable (finite E in Pa)")
-    e_star = effective_modulus(ball if ball is not None else Material.rigid(), plate)
-    E = e_star * (1.0 - plate.nu**2)
-    if ball is not None and not ball.is_rigid and plate.yield_strength is not None:
-        warnings.warn(
-            "elastic ball: represented by a rigid sphere and a plate with the same E*; exact while elastic, "
-            "approximate once the plate yields",
-            stacklevel=3,
-        )
-    return J2Material(E, plate.nu, plate.yield_strength, hardening), e_star
-
-
-def estimate_contact_radius(radius: float, e_star: float, plate: Material, overlap: float) -> float:
-    """Contact radius (m) expected at ``overlap`` (m): Hertz √(Rδ) while elastic, Kogut & Etsion's
-    (2002) A/A_c = 0.93 w^1.136 (w ≤ 6), 0.94 w^1.146 (w > 6), w = δ/δ_c, once yielded."""
-    a = math.sqrt(radius * overlap)
-    if plate.yield_strength is None:
-        return a
-    fy = hertz_first_yield(radius, e_star, plate.yield_strength, plate.nu)
-    w = overlap / fy.overlap
-    if w <= 1.0:
-        return a
-    area_ratio = 0.93 * w**1.136 if w <= 6.0 else 0.94 * w**1.146
-    return max(a, fy.contact_radius * math.sqrt(area_ratio))
-
-
-def check_small_strain(radius: float, e_star: float, plate: Material, max_overlap: float) -> None:
-    """A one-line ``ValueError`` if the contact radius expected at ``max_overlap`` (m) exceeds
-    :data:`SMALL_STRAIN_LIMIT` × the ball radius (m), a warning above :data:`SMALL_STRAIN_WARNING` × it."""
-    a_max = estimate_contact_radius(radius, e_star, plate, max_overlap)
-    if a_max / radius > SMALL_STRAIN_LIMIT:
-        raise ValueError(
-            f"overlaps: max overlap {max_overlap:.6g} m gives a contact radius ≈ {a_max:.3g} m "
-            f"= {a_max / radius:.3g} R: "
-            f"small strain needs a/R <= {SMALL_STRAIN_LIMIT} (overlap <= ~{SMALL_STRAIN_LIMIT**2 * radius:.3g} m)"
-        )
-    if a_max / radius > SMALL_STRAIN_WARNING * (1.0 + 1e-6):
-        warnings.warn(
-            f"contact radius ≈ {a_max / radius:.3g} R > {SMALL_STRAIN_WARNING} R: "
-            "the small-strain assumption is strained",
-            stacklevel=3,
-        )
 
 
 def plate_mesh(
@@ -98,11 +47,11 @@ def plate_mesh(
 ) -> MeshTri:
     """Mesh (m) for a path reaching ``max_overlap`` (m): the default mesh scaled to the expected
     largest contact radius, or (if element counts are given, or ``growth`` > 1: a contact that will widen to
-    ``growth`` × that radius, see :func:`fem.mesh.generate_mesh`) a mesh generated for this case (its yield box
-    sized at the case's first-yield contact radius)."""
+    ``growth`` × that radius, see :func:`fem.axisymmetric.mesh.generate_mesh`) a mesh generated for this case (its yield
+    box sized at the case's first-yield contact radius)."""
     radius = check_number("radius", radius, low=1e-6, high=10.0, units="m", what="ball radius")
     max_overlap = check_number("max_overlap", max_overlap, low=0.0, low_open=True, high=radius, units="m")
-    _, e_star = _plate_model(plate, ball, 0.0)
+    _, e_star = plate_model(plate, ball, 0.0)
     a_max = estimate_contact_radius(radius, e_star, plate, max_overlap)
     if contact_elements is None and yield_elements is None and growth == 1.0:
         return default_mesh(a_max)
@@ -167,8 +116,9 @@ class _Run:
     def run(self, overlaps: np.ndarray, start: PlateState | None = None, keep: bool = False, times=None,
             predictor: bool = False):  # fmt: skip
         """States along ``overlaps`` (m) from ``start`` (None: the virgin plate). ``predictor`` (only with a
-        ``start``): try each step as an elastic step (:class:`fem.reload.SurfaceCompliance`) and keep it when its
-        return mapping yields nowhere (then it is the FE solution, no Newton needed); else a Newton increment."""
+        ``start``): try each step as an elastic step (:class:`fem.axisymmetric.reload.SurfaceCompliance`) and keep it
+        when its return mapping yields nowhere (then it is the FE solution, no Newton needed); else a Newton
+        increment."""
         s = self.solver
         state = s.initial_state() if start is None else start
         previous = None
@@ -370,7 +320,7 @@ def indent(
     hardening = check_number("hardening", hardening, low=0.0, high=1e12, units="Pa", what="hardening modulus")
     if ball is not None and not isinstance(ball, Material):
         raise ValueError(f"ball={ball!r} is not a contact.Material or None (rigid)")
-    material, e_star = _plate_model(plate, ball, hardening)
+    material, e_star = plate_model(plate, ball, hardening)
     check_small_strain(radius, e_star, plate, float(path.max()))
     if mesh is None:
         mesh_obj = plate_mesh(radius, plate, float(path.max()), ball)

@@ -1,7 +1,7 @@
 r"""The discrete Coulomb law of the ball on the 3-D plate's surface (SI units).
 
 The plate's surface nodes are quadratic; the law lives on its vertices, through their hat functions ψ_j (the linear
-fields, :mod:`fem.forms3d`): a vertex's *hat moment* of a nodal force field is the force its share of the surface
+fields, :mod:`fem.solid.forms`): a vertex's *hat moment* of a nodal force field is the force its share of the surface
 carries, (H f)_j, and the tractions reported are the linear fields with those moments (M⁻¹ H f, M the hats' mass).
 
 * **stick** (weakly, on each sticking vertex j): Σ_i G̃_ij (u_t,i − u_t,i(start) − Δξ e_x) = 0, with G̃ the
@@ -38,17 +38,13 @@ mesh.
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import TYPE_CHECKING
 
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from fem.forms3d import SolidDiscretisation
-
-if TYPE_CHECKING:
-    # the solver's state, for the annotations only (fem.solid_solver imports this module)
-    from fem.solid_solver import SolidState
+from fem.solid.forms import SolidDiscretisation
+from fem.solid.state import SolidState
 
 __all__ = ["SurfaceFriction"]
 
@@ -159,7 +155,7 @@ class SurfaceFriction:
 
     def stick_rows(self, start: SolidState, slide: float, contact, stick, free) -> tuple[sp.csr_matrix, np.ndarray]:
         r"""The stick constraints, weak on each sticking vertex's dual function φ̃_j (the dual mortar pairing with
-        the quadratic displacements, :mod:`fem.forms3d`):
+        the quadratic displacements, :mod:`fem.solid.forms`):
 
         .. math:: \sum_i \tilde G_{ij}\,\bigl(u_{t,i} - u_{t,i}^{start} - \Delta\xi\, e_x\bigr) = 0,
 

@@ -5,7 +5,7 @@ direct solvers measured here at 30k–300k unknowns (3 s at 33k, 7–12 s at 118
 faster than SuperLU at 33k) and installs from wheels. Where its wheels do not exist (MKL is x86-64 only), SciPy's
 SuperLU with a symmetric ordering is the fallback: correct, several times slower. A factorisation is kept and
 re-used for many right-hand sides (the modified-Newton iterations and the preconditioned CG of
-:mod:`fem.solid_solver`).
+:mod:`fem.solid.solver`).
 """
 
 from __future__ import annotations

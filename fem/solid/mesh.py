@@ -1,9 +1,9 @@
 r"""Meshes of the 3-D plate: the half block x ∈ [−L, L], y ∈ [0, L], z ∈ [−L, 0], refined along the impact track.
 
 The plate is symmetric about the plane of incidence y = 0, so only its half y ≥ 0 is meshed. The generator works in
-units of the largest contact radius a_max (like :mod:`fem.mesh`) and bisects a coarse tetrahedral block adaptively
-(scikit-fem's conforming refinement of :class:`~skfem.MeshTet`, no hanging nodes, the shape quality bounded) until
-every element's size h = (6V)^{1/3} — the edge of the cube a Kuhn tetrahedron of volume V is cut from — meets
+units of the largest contact radius a_max (like :mod:`fem.axisymmetric.mesh`) and bisects a coarse tetrahedral block
+adaptively (scikit-fem's conforming refinement of :class:`~skfem.MeshTet`, no hanging nodes, the shape quality bounded)
+until every element's size h = (6V)^{1/3} — the edge of the cube a Kuhn tetrahedron of volume V is cut from — meets
 
 * h ≤ 1 / ``contact_elements`` in the contact box: x from the track's start − 1.3 to its end + 1.3, y ≤ 1.3,
   depth ≤ 1 (the plastic zone of w = δ/δ_c = 20 reaches ≈ 0.8 a_max below the surface);
@@ -12,7 +12,7 @@ every element's size h = (6V)^{1/3} — the edge of the cube a Kuhn tetrahedron 
   the distance ρ = 1 from the track and at most ``edge_width`` deep — growing by ``grading`` per unit distance
   from the band. The surface stresses peak there: the radial tension (1 − 2ν) p0 / 3 at the edge of a Hertz
   contact, where ring cracks start, and the tensile cusp at the trailing edge of a sliding contact
-  (:mod:`fem.surface_stress`).
+  (:mod:`fem.solid.surface_stress`).
 
 The quadratic tetrahedra put a node every h/2. L = 64 a_max: the finite clamped block stiffens the Hertz force by
 ≈ 0.6 a/L, 0.9% here (the axisymmetric mesh, 128 a_max, 0.5%; the difference is within both models' accuracy).

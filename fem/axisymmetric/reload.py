@@ -38,11 +38,11 @@ import scipy.sparse.linalg as spla
 from scipy.optimize import nnls
 
 from contact.checks import check_array
-from fem.forms import strain
-from fem.plasticity import radial_return
-from fem.result import IndentationResult
-from fem.solver import PlateState
-from fem.sphere_contact import contact_radius, pressure_from_reactions
+from fem.axisymmetric.result import IndentationResult
+from fem.axisymmetric.solver import PlateState
+from fem.core.assembly import strain
+from fem.core.plasticity import radial_return
+from fem.core.sphere import contact_radius, pressure_from_reactions
 
 __all__ = ["ElasticReload", "SurfaceCompliance", "candidate_nodes", "elastic_reload"]
 

@@ -1,7 +1,7 @@
 """Linear solves on a kept factorisation: the modified-Newton linear algebra of the 3-D plate.
 
 A Newton iteration of the 3-D plate solves K x = r with K the tangent whose constrained rows are s·I. Factorising K
-(PARDISO, :mod:`fem.linear`) costs as much as 5–20 back-substitutions; the tangent changes little from one
+(PARDISO, :mod:`fem.core.linear`) costs as much as 5–20 back-substitutions; the tangent changes little from one
 iteration to the next (a few plastic points, the slip tractions), so the factor of an earlier K preconditions a
 Krylov method on the new one, and K is factorised again only when the constrained DOFs changed (``key``: a new
 contact or stick node changes K by a rank of a few dozen, which the old factor resolves only in as many
@@ -12,24 +12,15 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from fem.linear import Factorisation, factorise
+from fem.core.increments import WorkCounters
+from fem.core.linear import Factorisation, factorise
 
-__all__ = ["KeptFactor", "SolveCounters"]
-
-
-@dataclass
-class SolveCounters:
-    """Work counters: factorisations, linear solves (factor applications), and seconds spent factorising."""
-
-    factorisations: int = 0
-    solves: int = 0
-    factor_time: float = 0.0
+__all__ = ["KeptFactor"]
 
 
 class KeptFactor:
@@ -37,7 +28,7 @@ class KeptFactor:
     constrained DOFs; counts its work in ``counters``. ``max_krylov`` Krylov iterations at most before it
     refactorises."""
 
-    def __init__(self, counters: SolveCounters, max_krylov: int = 15) -> None:
+    def __init__(self, counters: WorkCounters, max_krylov: int = 15) -> None:
         self.counters = counters
         self.max_krylov = max_krylov
         self._factor: Factorisation | None = None

@@ -1,9 +1,9 @@
 r"""A stateful FE plate for sequences of indentations (repeated impacts at one site; SI units).
 
-:class:`Plate` holds a :class:`~fem.solver.PlateSolver` and the plate's current :class:`~fem.solver.PlateState`
-(displacement u, plastic strain ε_p, equivalent plastic strain ᾱ, contact set). Each indentation starts from the
-state the previous one left: the residual stress and plastic strain are kept, and the contact gap is measured to
-the current surface (the sphere meets the dent, and the worn surface)::
+:class:`Plate` holds a :class:`~fem.axisymmetric.solver.PlateSolver` and the plate's current
+:class:`~fem.axisymmetric.solver.PlateState` (displacement u, plastic strain ε_p, equivalent plastic strain ᾱ, contact
+set). Each indentation starts from the state the previous one left: the residual stress and plastic strain are kept, and
+the contact gap is measured to the current surface (the sphere meets the dent, and the worn surface)::
 
     plate = fem.Plate(radius, material, max_overlap)
     d0 = plate.first_contact_overlap()          # δ at which the sphere first touches the current surface
@@ -35,10 +35,11 @@ from skfem import MeshTri
 from contact.checks import check_array, check_number
 from contact.materials import Material
 from contact.theory import first_yield as hertz_first_yield
-from fem.indent import _plate_model, _Run, check_small_strain, plate_mesh, state_mesh
-from fem.plasticity import plastic_work
-from fem.result import IndentationResult, join
-from fem.solver import PlateSolver, PlateState
+from fem.axisymmetric.indent import _Run, plate_mesh, state_mesh
+from fem.axisymmetric.result import IndentationResult, join
+from fem.axisymmetric.solver import PlateSolver, PlateState
+from fem.core.material import check_small_strain, plate_model
+from fem.core.plasticity import plastic_work
 
 __all__ = ["Plate", "surface_profile"]
 
@@ -52,8 +53,8 @@ class Plate:
     boundaries ``axis``, ``surface``, ``bottom``; ``hardening`` H (Pa); ``rtol`` Newton tolerance (as
     :func:`fem.indent`); ``taper_depth`` (m) over which the wear displacement of the vertices fades (default and
     smallest: 4 × the smallest surface facet); ``elastic_predictor``: after the first indentation, each step is
-    first tried as an elastic step condensed onto the surface (:mod:`fem.reload`) and kept when it yields nowhere
-    (it is then the FE solution without Newton iterations); else the Newton increment.
+    first tried as an elastic step condensed onto the surface (:mod:`fem.axisymmetric.reload`) and kept when it yields
+    nowhere (it is then the FE solution without Newton iterations); else the Newton increment.
     """
 
     def __init__(self, radius: float, plate: Material, max_overlap: float, ball: Material | None = None,
@@ -62,7 +63,7 @@ class Plate:
         self.radius = check_number("radius", radius, low=1e-6, high=10.0, units="m", what="ball radius")
         max_overlap = check_number("max_overlap", max_overlap, low=0.0, low_open=True, high=radius, units="m")
         hardening = check_number("hardening", hardening, low=0.0, high=1e12, units="Pa", what="hardening modulus")
-        self.material, self.effective_modulus = _plate_model(plate, ball, hardening)
+        self.material, self.effective_modulus = plate_model(plate, ball, hardening)
         check_small_strain(radius, self.effective_modulus, plate, max_overlap)
         if mesh is None:
             mesh = plate_mesh(radius, plate, max_overlap, ball)
@@ -124,7 +125,7 @@ class Plate:
 
     def plastic_work(self, since: PlateState) -> float:
         """Plastic work (J) the plate dissipated from the state ``since`` to its current state
-        (:func:`fem.plasticity.plastic_work`)."""
+        (:func:`fem.core.plasticity.plastic_work`)."""
         return plastic_work(self.material, self.solver.disc.weight, since.alpha, self.state.alpha)
 
     def first_contact_overlap(self) -> float:

@@ -49,7 +49,7 @@ class IndentationResult:
 
     ``overlap`` δ (m), ``force`` F (N), ``contact_radius`` a (m), ``max_pressure`` (Pa),
     ``mean_pressure`` F/(πa²) (Pa), ``surface_r`` (m), ``pressure`` (steps, surface nodes) (Pa, linear between
-    the surface vertices: :func:`fem.sphere_contact.pressure_from_reactions`), ``first_yield``
+    the surface vertices: :func:`fem.core.sphere.pressure_from_reactions`), ``first_yield``
     (:class:`FirstYieldPoint` or None), ``residual_depth`` (m, surface u_z after the last step, positive = into
     the plate), ``max_equivalent_plastic_strain`` (per step), ``regime`` (per step), ``newton_iterations`` (per
     step), ``time`` (s, per step, only from :func:`fem.indent_impact`), ``radius`` R (m), ``effective_modulus``
@@ -81,8 +81,8 @@ class IndentationResult:
         Restarts from the kept loading state just below δ_max (the run must use
         ``keep_states=True``), loads to δ_max in one increment and unloads; the loading branch is
         path independent, so this costs one FE increment plus the unloading; unloading steps whose elastic field
-        yields nowhere are taken without Newton iterations (:mod:`fem.reload`: the same solution). The unloading
-        curve is recorded here, so :meth:`force_law` returns one unloading curve per call.
+        yields nowhere are taken without Newton iterations (:mod:`fem.axisymmetric.reload`: the same solution). The
+        unloading curve is recorded here, so :meth:`force_law` returns one unloading curve per call.
         """
         if self._run is None:
             raise ValueError("unload_from needs the states of the loading run: call fem.indent(..., keep_states=True)")
