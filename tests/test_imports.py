@@ -11,9 +11,13 @@ project's modules, and at most 10 function-level imports of them, each with a co
 from __future__ import annotations
 
 import ast
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
+
+import wear
 
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGES = ("contact", "fem", "wear", "meshes")
@@ -141,3 +145,20 @@ def test_function_level_imports_are_few_and_say_why():
                 assert "#" in here or before.strip().startswith("#"), f"{path}:{line}: say why the import is here"
                 inner.append(f"{path.relative_to(ROOT)}:{line}")
     assert len(inner) <= 10, inner
+
+
+@pytest.mark.parametrize("module", ["contact", "wear.law", "wear.laws"])
+def test_light_modules_do_not_load_the_fe_plate(module):
+    """The impact engine and the wear law work without the FE plate: importing them (in a fresh interpreter)
+    loads neither ``fem`` nor scikit-fem, so that ``wear/__init__.py`` re-exporting the chains costs nothing."""
+    code = f"import sys, {module}; print(sorted(m for m in ('fem', 'skfem') if m in sys.modules))"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
+    assert out.stdout.strip() == "[]", f"import {module} loads {out.stdout.strip()}"
+
+
+def test_the_package_wear_exports_its_names():
+    for name in wear.__all__:  # each is loaded on first access (PEP 562) and kept
+        getattr(wear, name)
+        assert name in vars(wear), name
+    with pytest.raises(AttributeError, match="no attribute 'nothing'"):
+        wear.nothing  # noqa: B018
