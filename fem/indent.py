@@ -25,7 +25,7 @@ from fem.result import FirstYieldPoint, IndentationResult
 from fem.solver import PlateSolver, PlateState
 from fem.sphere_contact import contact_radius, pressure_from_reactions
 
-__all__ = ["indent", "indent_impact", "plate_mesh", "estimate_contact_radius"]
+__all__ = ["IndentationRun", "indent", "indent_impact", "plate_mesh", "plate_model", "estimate_contact_radius"]
 
 #: Largest a/R accepted (small strain); a warning is given above SMALL_STRAIN_WARNING.
 SMALL_STRAIN_LIMIT = 0.3
@@ -39,7 +39,11 @@ FIRST_YIELD_RTOL = 0.01
 FIRST_YIELD_SOLVES = 6
 
 
-def _plate_model(plate: Material, ball: Material | None, hardening: float) -> tuple[J2Material, float]:
+def plate_model(plate: Material, ball: Material | None, hardening: float) -> tuple[J2Material, float]:
+    """The FE plate's material and the effective modulus E* (Pa) of ``ball`` (None: rigid) on ``plate``: the
+    ball is a rigid sphere and the plate a J2 solid of modulus E_p' = E*(1 − ν_p²), Poisson's ratio ν_p, yield
+    strength Y and linear hardening modulus ``hardening`` H (Pa), so that E* is unchanged (module docstring;
+    warns when an elastic ball meets a plate that can yield). One-line ``ValueError`` for a rigid plate."""
     if not isinstance(plate, Material):
         raise ValueError(f"plate={plate!r} is not a contact.Material")
     if plate.is_rigid:
@@ -102,7 +106,7 @@ def plate_mesh(
     sized at the case's first-yield contact radius)."""
     radius = check_number("radius", radius, low=1e-6, high=10.0, units="m", what="ball radius")
     max_overlap = check_number("max_overlap", max_overlap, low=0.0, low_open=True, high=radius, units="m")
-    _, e_star = _plate_model(plate, ball, 0.0)
+    _, e_star = plate_model(plate, ball, 0.0)
     a_max = estimate_contact_radius(radius, e_star, plate, max_overlap)
     if contact_elements is None and yield_elements is None and growth == 1.0:
         return default_mesh(a_max)
@@ -117,8 +121,11 @@ def plate_mesh(
     return scale_mesh(generate_mesh(**params), a_max)
 
 
-class _Run:
-    """A solver plus the kept states of a loading run (see :meth:`IndentationResult.unload_from`)."""
+class IndentationRun:
+    """A solver plus the states of a loading run: ``solver`` (:class:`fem.solver.PlateSolver`), ``final`` (the
+    state after the last step), ``kept`` (every converged loading state, with ``keep_states``; see
+    :meth:`IndentationResult.unload_from`), ``first_yield`` and ``reach`` (m, the largest contact radius of the
+    virgin loading). Each :class:`IndentationResult` it computes holds it as ``run``."""
 
     def __init__(self, solver: PlateSolver, e_star: float, radius: float):
         self.solver = solver
@@ -286,7 +293,7 @@ class _Run:
             radius=self.radius,
             effective_modulus=self.e_star,
             time=None if times is None else np.asarray(times, dtype=float),
-            _run=self,
+            run=self,
         )
 
     def unload_from(self, max_overlap: float, steps: int) -> IndentationResult:
@@ -370,7 +377,7 @@ def indent(
     hardening = check_number("hardening", hardening, low=0.0, high=1e12, units="Pa", what="hardening modulus")
     if ball is not None and not isinstance(ball, Material):
         raise ValueError(f"ball={ball!r} is not a contact.Material or None (rigid)")
-    material, e_star = _plate_model(plate, ball, hardening)
+    material, e_star = plate_model(plate, ball, hardening)
     check_small_strain(radius, e_star, plate, float(path.max()))
     if mesh is None:
         mesh_obj = plate_mesh(radius, plate, float(path.max()), ball)
@@ -385,7 +392,7 @@ def indent(
         raise ValueError(f"mesh={mesh!r} is not None, a skfem.MeshTri or a mesh file path")
     force_scale = 4.0 / 3.0 * e_star * math.sqrt(radius) * float(path.max()) ** 1.5
     solver = PlateSolver(mesh_obj, material, radius, force_scale, float(path.max()), rtol=rtol)
-    run = _Run(solver, e_star, radius)
+    run = IndentationRun(solver, e_star, radius)
     return run.run(path, keep=keep_states, times=_times)
 
 

@@ -35,7 +35,7 @@ from skfem import MeshTri
 from contact.checks import check_array, check_number
 from contact.materials import Material
 from contact.theory import first_yield as hertz_first_yield
-from fem.indent import _plate_model, _Run, check_small_strain, plate_mesh, state_mesh
+from fem.indent import IndentationRun, check_small_strain, plate_mesh, plate_model, state_mesh
 from fem.plasticity import plastic_work
 from fem.result import IndentationResult, join
 from fem.solver import PlateSolver, PlateState
@@ -62,7 +62,7 @@ class Plate:
         self.radius = check_number("radius", radius, low=1e-6, high=10.0, units="m", what="ball radius")
         max_overlap = check_number("max_overlap", max_overlap, low=0.0, low_open=True, high=radius, units="m")
         hardening = check_number("hardening", hardening, low=0.0, high=1e12, units="Pa", what="hardening modulus")
-        self.material, self.effective_modulus = _plate_model(plate, ball, hardening)
+        self.material, self.effective_modulus = plate_model(plate, ball, hardening)
         check_small_strain(radius, self.effective_modulus, plate, max_overlap)
         if mesh is None:
             mesh = plate_mesh(radius, plate, max_overlap, ball)
@@ -138,7 +138,7 @@ class Plate:
         """Load from the current state along ``overlaps`` (m, from the original plane), keeping every state so
         :meth:`unload` can restart from any of them. Does not change :attr:`state`."""
         path = check_array("overlaps", overlaps, low=0.0, units="m", what="overlap")
-        run = _Run(self.solver, self.effective_modulus, self.radius)
+        run = IndentationRun(self.solver, self.effective_modulus, self.radius)
         # the state and first contact before this loading (an unload may be repeated: it must not see its own commit)
         self._before = (self.state, self.first_contact_overlap())
         return run.run(path, start=None if self._virgin else self.state, keep=True, predictor=self.elastic_predictor)
@@ -150,7 +150,7 @@ class Plate:
         further if the ball still touches. Restarts from the kept loading state just below ``max_overlap`` (the
         loading branch is path independent). With ``commit`` the final, unloaded state becomes :attr:`state`.
         The result is recorded in ``loading.unloadings`` (so ``loading.force_law()`` includes it)."""
-        run = loading._run
+        run = loading.run
         steps = int(check_number("steps", steps, low=1, high=10000))
         top = max(st.overlap for st in run.kept)
         max_overlap = check_number("max_overlap", max_overlap, low=0.0, low_open=True, high=top * (1 + 1e-9),

@@ -20,7 +20,7 @@ import numpy as np
 
 from contact.checks import check_array, check_number
 from contact.materials import Material
-from fem.indent import _plate_model, check_small_strain, estimate_contact_radius
+from fem.indent import check_small_strain, estimate_contact_radius, plate_model
 from fem.mesh3d import generate_block, scale_block
 from fem.plasticity import J2Material, von_mises
 from fem.solid_solver import SolidSolver, SolidState, SolidStats
@@ -126,7 +126,7 @@ def solid_solver(
     ``contact_elements`` elements across the largest expected contact radius (Hertz, or Kogut & Etsion once
     yielded) over a box ``box_depth`` of it deep, around the centres' track, and ``edge_elements`` (None: none)
     across it in a band around the contact edge (where the surface stresses peak)."""
-    material, e_star = _plate_model(plate, ball, hardening)
+    material, e_star = plate_model(plate, ball, hardening)
     check_small_strain(radius, e_star, plate, max_overlap)
     a_max = estimate_contact_radius(radius, e_star, plate, max_overlap)
     track = (float(np.min(centres)) / a_max, float(np.max(centres)) / a_max)

@@ -162,3 +162,58 @@ def test_the_package_wear_exports_its_names():
         assert name in vars(wear), name
     with pytest.raises(AttributeError, match="no attribute 'nothing'"):
         wear.nothing  # noqa: B018
+
+
+def _private(name: str) -> bool:
+    return name.startswith("_") and not (name.startswith("__") and name.endswith("__"))
+
+
+def _owned(tree: ast.Module) -> set[str]:
+    """The private names a module defines: at module level, in class bodies (methods, class attributes,
+    dataclass fields) and as ``self._x = ...`` in its methods."""
+    names: set[str] = set()
+    bodies = [tree.body, *(node.body for node in ast.walk(tree) if isinstance(node, ast.ClassDef))]
+    for body in bodies:
+        for node in body:
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+                names.add(node.name)
+            elif isinstance(node, (ast.Assign, ast.AnnAssign)):
+                targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+                names.update(n.id for t in targets for n in ast.walk(t) if isinstance(n, ast.Name))
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Store) and _is_self(node.value):
+            names.add(node.attr)
+    return {n for n in names if _private(n)}
+
+
+def _is_self(node: ast.expr) -> bool:
+    return isinstance(node, ast.Name) and node.id in ("self", "cls")
+
+
+TREES = {module: ast.parse(path.read_text(encoding="utf-8")) for module, path in MODULES.items()}
+OWNED = {module: _owned(tree) for module, tree in TREES.items()}
+
+
+@pytest.mark.parametrize("module", sorted(MODULES))
+def test_no_private_name_crosses_modules(module):
+    """A name with a leading underscore stays in the module that defines it: never imported from another project
+    module, never read or written (``x._y``, ``getattr(x, "_y")``, a keyword ``_y=``) on another module's object
+    when the module itself does not define ``_y``, and never written onto an object other than ``self``/``cls``
+    (``self._y`` and a module's own private names are its business)."""
+    others = set().union(*(names for m, names in OWNED.items() if m != module)) - OWNED[module]
+    path, bad = MODULES[module], []
+    for node in ast.walk(TREES[module]):
+        if isinstance(node, ast.ImportFrom) and node.module and _target(node.module):
+            bad += [f"from {node.module} import {a.name}" for a in node.names if _private(a.name)]
+        elif isinstance(node, ast.Attribute) and _private(node.attr) and not _is_self(node.value):
+            if node.attr in others or isinstance(node.ctx, ast.Store):
+                bad.append(ast.unparse(node))
+        elif isinstance(node, ast.Call):
+            function = node.func.id if isinstance(node.func, ast.Name) else None
+            if function in ("getattr", "setattr", "hasattr", "delattr") and len(node.args) >= 2:
+                obj, name = node.args[:2]
+                if isinstance(name, ast.Constant) and isinstance(name.value, str) and _private(name.value):
+                    if not _is_self(obj) and (name.value in others or function in ("setattr", "delattr")):
+                        bad.append(ast.unparse(node))
+            bad += [f"{ast.unparse(node.func)}({k.arg}=...)" for k in node.keywords if k.arg in others]
+    assert not bad, f"{path.relative_to(ROOT)}: private names of other modules: {bad}"
