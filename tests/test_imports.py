@@ -18,6 +18,8 @@ from pathlib import Path
 import pytest
 
 import wear
+from wear.case import JOBS, STAGES
+from wear.case.jobs import resolve
 
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGES = ("contact", "fem", "wear", "meshes")
@@ -147,13 +149,27 @@ def test_function_level_imports_are_few_and_say_why():
     assert len(inner) <= 10, inner
 
 
-@pytest.mark.parametrize("module", ["contact", "wear.law", "wear.laws"])
+@pytest.mark.parametrize("module", ["contact", "wear.law", "wear.laws", "wear.case"])
 def test_light_modules_do_not_load_the_fe_plate(module):
     """The impact engine and the wear law work without the FE plate: importing them (in a fresh interpreter)
     loads neither ``fem`` nor scikit-fem, so that ``wear/__init__.py`` re-exporting the chains costs nothing."""
     code = f"import sys, {module}; print(sorted(m for m in ('fem', 'skfem') if m in sys.modules))"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
     assert out.stdout.strip() == "[]", f"import {module} loads {out.stdout.strip()}"
+
+
+def test_the_case_names_the_commands_and_stages_of_its_jobs_without_importing_them():
+    """The job registry (wear.case.JOBS) names each job's command and sweep stages in the command line's room;
+    importing the case loads none of that room, and every name resolves to what its user calls."""
+    code = "import sys, wear.case; print(sorted({m.split('.')[1] for m in sys.modules if m.startswith('wear.')}))"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
+    assert out.stdout.strip() == "['case', 'integrate', 'law', 'laws', 'pressure']"
+    for job in JOBS.values():
+        command = resolve(job.command)
+        assert callable(command.configure) and callable(command.main), job.command
+        for stage in job.stages:
+            assert callable(resolve(stage.function)) and STAGES[stage.name] is stage
+            assert all(isinstance(v, str) for v in stage.result_units().values()), stage.units
 
 
 def test_the_package_wear_exports_its_names():
