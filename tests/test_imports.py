@@ -165,7 +165,7 @@ def test_the_case_names_the_commands_and_stages_of_its_jobs_without_importing_th
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
     assert out.stdout.strip() == "['case', 'integrate', 'law', 'laws', 'pressure']"
     for job in JOBS.values():
-        command = resolve(job.command)
+        command = job.command_module()
         assert callable(command.configure) and callable(command.main), job.command
         for stage in job.stages:
             assert callable(resolve(stage.function)) and STAGES[stage.name] is stage

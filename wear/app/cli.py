@@ -10,7 +10,6 @@ reported as one line naming the parameter, with exit status 2 and no traceback.
 from __future__ import annotations
 
 import argparse
-import importlib
 import os
 import re
 import sys
@@ -26,7 +25,7 @@ TOOLS = {"sweep": sweep, "reproduce": reproduce, "validate": validate}
 
 def commands() -> dict[str, tuple[str, object]]:
     """name → (help line, command module), in the order of ``impactwear --help``: the jobs, then the tools."""
-    jobs = {name: (job.help, importlib.import_module(job.command)) for name, job in JOBS.items()}
+    jobs = {name: (job.help, job.command_module()) for name, job in JOBS.items()}
     return {**jobs, **{name: (module.HELP, module) for name, module in TOOLS.items()}}
 
 

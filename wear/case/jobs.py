@@ -103,6 +103,10 @@ class Job:
         """This job's default case."""
         return Case.from_dict(self.overlay)
 
+    def command_module(self) -> Any:
+        """The module of this job's command (imported now)."""
+        return resolve(self.command)
+
 
 _RUN_TABLES = ("ball", "plate", "impact", "wear", "fem", "output")
 
