@@ -62,9 +62,9 @@ def main() -> None:
     t0 = time.perf_counter()
     res = fem.indent(R, PLATE, path, mesh=mesh)
     total = time.perf_counter() - t0
-    stats = res._run.solver.stats
+    stats = res.run.solver.stats
     n = path.size
-    ndofs = res._run.solver.disc.ndofs
+    ndofs = res.run.solver.disc.ndofs
     print(f"mesh: {mesh.t.shape[1]} P2 triangles, {ndofs} DOFs")
     print(f"one linear elastic solve (assemble + factorise + solve): {solve:.3f} s")
     print(f"standard cycle: {n} increments in {total:.2f} s (target <= 60 s)")

@@ -260,9 +260,7 @@ def simulate_impacts(
             f"speed, angle, friction have shapes {np.shape(speed)}, {np.shape(angle)}, {np.shape(friction)}: "
             "they must broadcast together"
         ) from None
-    theta = np.radians(angle)
-    vn0 = speed * np.cos(theta)
-    vt0 = speed * np.sin(theta)
+    vn0, vt0 = theory.speed_components(speed, angle)
     if np.any(vn0 < 1e-9 * speed):
         raise ValueError("angle is too close to 90 deg: the normal speed vanishes")
     contact_time = (

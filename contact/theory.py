@@ -47,6 +47,7 @@ __all__ = [
     "mesarovic_johnson_force",
     "mesarovic_johnson_overlap",
     "sphere_mass",
+    "speed_components",
 ]
 
 #: The paper's p_max/Y at first yield (its Eq. 18 text: "P_max reaches 1.6 S_y").
@@ -54,6 +55,21 @@ PAPER_YIELD_COEFFICIENT = 1.6
 
 #: t_c = 2.9433 δ_max / v_n; 4Γ(2/5)√π / (5Γ(9/10)) (errata Eqs. 10-11).
 HERTZ_CONTACT_TIME_FACTOR = 4.0 * gamma(0.4) * math.sqrt(math.pi) / (5.0 * gamma(0.9))
+
+
+def speed_components(speed, angle):
+    r"""Normal and tangential components (m/s) of an impact at ``speed`` (m/s) and ``angle`` θ (deg from the plate
+    normal): V_n = V cos θ towards the plate, V_t = V sin θ along it in the plane of incidence. Floats for scalars,
+    arrays (broadcast) for arrays.
+
+    >>> speed_components(2.0, 60.0)
+    (1.0000000000000002, 1.7320508075688772)
+    """
+    theta = np.radians(angle)
+    normal, tangential = speed * np.cos(theta), speed * np.sin(theta)
+    if np.ndim(normal) == 0:
+        return float(normal), float(tangential)
+    return normal, tangential
 
 
 def sphere_mass(radius: float, density: float) -> float:

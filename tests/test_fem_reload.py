@@ -63,7 +63,7 @@ def test_reload_of_a_dent_is_the_elastic_plastic_fe_while_it_does_not_yield(dent
     path = d0 + np.linspace(0.0, 1.0, 5)[1:] * (0.9 * D_MAX - d0)
     reload = fem.elastic_reload(plate, path)
     fe = plate.load(path)  # the full elastic–plastic Newton solution from the same state
-    fe_increment = np.array([float(np.max(s.alpha - plate.state.alpha)) for s in fe._run.kept])
+    fe_increment = np.array([float(np.max(s.alpha - plate.state.alpha)) for s in fe.run.kept])
     elastic = fe_increment == 0.0
     print("FE increments", fe_increment, "trial", reload.trial_plastic_strain_increment)
     assert elastic[:2].all()  # a reload well below the previous maximum does not yield

@@ -101,7 +101,7 @@ def test_plastic_zone_is_a_filled_field_with_the_boundary_as_a_line():
     alpha = np.where(dist < 40e-6, 0.004 * (1.0 - dist / 40e-6), 0.0)
     disc = SimpleNamespace(mesh=SimpleNamespace(p=points.T, t=triangles.T), qp_r=qp_r, qp_z=qp_z)
     res = SimpleNamespace(
-        _run=SimpleNamespace(solver=SimpleNamespace(disc=disc), final=SimpleNamespace(alpha=alpha)),
+        run=SimpleNamespace(solver=SimpleNamespace(disc=disc), final=SimpleNamespace(alpha=alpha)),
         contact_radius=np.array([0.0, a, 0.8 * a]),
     )
     fig = plastic_zone_figure(res)

@@ -52,14 +52,14 @@ def test_first_step_yields_and_first_yield_is_bracketed(mesh):
     # on the axis at z ≈ 0.48 a (Johnson 1985 Eq. 3.45); 0.1 a is one element of this mesh at first yield
     assert abs(fy.depth / fy.contact_radius - 0.481) < 0.1
     # a few elastic re-solves, no more: one at the yielded overlap, one at the scaled first yield
-    assert res._run.solver.stats.increments <= 1 + 3
+    assert res.run.solver.stats.increments <= 1 + 3
 
 
 def test_many_steps_unchanged_and_coarse_steps_agree(mesh):
     fine = _to_first_yield(mesh, 40)
     assert fine.regime[-2] == "elastic" and fine.regime[-1] != "elastic"
     # the former estimate: the last elastic step's state scaled to first yield by the self-similar Hertz field
-    solver, state = fine._run.solver, fine._run.kept[-2]
+    solver, state = fine.run.solver, fine.run.kept[-2]
     ratio = PLATE.yield_strength / float(von_mises(solver.stress_update(state).stress).max())
     before = fine.force[-2] * ratio**3
     after = fine.first_yield.force

@@ -13,9 +13,15 @@ comment saying why.
 from __future__ import annotations
 
 import ast
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
+
+import wear
+from wear.case import JOBS, STAGES
+from wear.case.jobs import resolve
 
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGES = ("contact", "fem", "wear", "meshes")
@@ -164,3 +170,89 @@ def test_function_level_imports_are_few_and_say_why():
                 assert "#" in here or before.strip().startswith("#"), f"{path}:{line}: say why the import is here"
                 inner.append(f"{path.relative_to(ROOT)}:{line}")
     assert len(inner) <= 10, inner
+
+
+@pytest.mark.parametrize("module", ["contact", "wear.law", "wear.laws", "wear.case"])
+def test_light_modules_do_not_load_the_fe_plate(module):
+    """The impact engine and the wear law work without the FE plate: importing them (in a fresh interpreter)
+    loads neither ``fem`` nor scikit-fem, so that ``wear/__init__.py`` re-exporting the chains costs nothing."""
+    code = f"import sys, {module}; print(sorted(m for m in ('fem', 'skfem') if m in sys.modules))"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
+    assert out.stdout.strip() == "[]", f"import {module} loads {out.stdout.strip()}"
+
+
+def test_the_case_names_the_commands_and_stages_of_its_jobs_without_importing_them():
+    """The job registry (wear.case.JOBS) names each job's command and sweep stages in the command line's room;
+    importing the case loads none of that room, and every name resolves to what its user calls."""
+    code = "import sys, wear.case; print(sorted({m.split('.')[1] for m in sys.modules if m.startswith('wear.')}))"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
+    assert out.stdout.strip() == "['case', 'integrate', 'law', 'laws', 'pressure']"
+    for job in JOBS.values():
+        command = job.command_module()
+        assert callable(command.configure) and callable(command.main), job.command
+        for stage in job.stages:
+            assert callable(resolve(stage.function)) and STAGES[stage.name] is stage
+            assert all(isinstance(v, str) for v in stage.result_units().values()), stage.units
+
+
+def test_the_package_wear_exports_its_names():
+    for name in wear.__all__:  # each is loaded on first access (PEP 562) and kept
+        getattr(wear, name)
+        assert name in vars(wear), name
+    with pytest.raises(AttributeError, match="no attribute 'nothing'"):
+        wear.nothing  # noqa: B018
+
+
+def _private(name: str) -> bool:
+    return name.startswith("_") and not (name.startswith("__") and name.endswith("__"))
+
+
+def _owned(tree: ast.Module) -> set[str]:
+    """The private names a module defines: at module level, in class bodies (methods, class attributes,
+    dataclass fields) and as ``self._x = ...`` in its methods."""
+    names: set[str] = set()
+    bodies = [tree.body, *(node.body for node in ast.walk(tree) if isinstance(node, ast.ClassDef))]
+    for body in bodies:
+        for node in body:
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+                names.add(node.name)
+            elif isinstance(node, (ast.Assign, ast.AnnAssign)):
+                targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+                names.update(n.id for t in targets for n in ast.walk(t) if isinstance(n, ast.Name))
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Store) and _is_self(node.value):
+            names.add(node.attr)
+    return {n for n in names if _private(n)}
+
+
+def _is_self(node: ast.expr) -> bool:
+    return isinstance(node, ast.Name) and node.id in ("self", "cls")
+
+
+TREES = {module: ast.parse(path.read_text(encoding="utf-8")) for module, path in MODULES.items()}
+OWNED = {module: _owned(tree) for module, tree in TREES.items()}
+
+
+@pytest.mark.parametrize("module", sorted(MODULES))
+def test_no_private_name_crosses_modules(module):
+    """A name with a leading underscore stays in the module that defines it: never imported from another project
+    module, never read or written (``x._y``, ``getattr(x, "_y")``, a keyword ``_y=``) on another module's object
+    when the module itself does not define ``_y``, and never written onto an object other than ``self``/``cls``
+    (``self._y`` and a module's own private names are its business)."""
+    others = set().union(*(names for m, names in OWNED.items() if m != module)) - OWNED[module]
+    path, bad = MODULES[module], []
+    for node in ast.walk(TREES[module]):
+        if isinstance(node, ast.ImportFrom) and node.module and _target(node.module):
+            bad += [f"from {node.module} import {a.name}" for a in node.names if _private(a.name)]
+        elif isinstance(node, ast.Attribute) and _private(node.attr) and not _is_self(node.value):
+            if node.attr in others or isinstance(node.ctx, ast.Store):
+                bad.append(ast.unparse(node))
+        elif isinstance(node, ast.Call):
+            function = node.func.id if isinstance(node.func, ast.Name) else None
+            if function in ("getattr", "setattr", "hasattr", "delattr") and len(node.args) >= 2:
+                obj, name = node.args[:2]
+                if isinstance(name, ast.Constant) and isinstance(name.value, str) and _private(name.value):
+                    if not _is_self(obj) and (name.value in others or function in ("setattr", "delattr")):
+                        bad.append(ast.unparse(node))
+            bad += [f"{ast.unparse(node.func)}({k.arg}=...)" for k in node.keywords if k.arg in others]
+    assert not bad, f"{path.relative_to(ROOT)}: private names of other modules: {bad}"

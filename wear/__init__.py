@@ -3,7 +3,8 @@
 Rooms, imported one way (each only from those before it): the wear law (:mod:`wear.law`, :mod:`wear.pressure`,
 :mod:`wear.integrate`, :mod:`wear.surface`: imports ``contact``, never ``fem``) ← the case (:mod:`wear.case`) ←
 erosion (:mod:`wear.erosion`) ← the chains (:mod:`wear.chain`) ← the command line (:mod:`wear.app`). The main entry
-points are importable from here. SI units; angles in degrees from the plate normal.
+points are importable from here, each loaded on first use (PEP 562), so that ``import wear.law`` does not load the
+FE plate (``fem``, scikit-fem) that the chains need. SI units; angles in degrees from the plate normal.
 
 Wear of one impact (errata Eq. 15, w a depth)::
 
@@ -22,71 +23,59 @@ The whole chain, repeated impacts and erosion of a case::
     stream = erode_case(default_case("erode"))
 """
 
-from wear.case import Case, default_case, dump_case, load_case, parse_case
-from wear.chain import (
-    IndentRun,
-    RepeatResult,
-    RestitutionSweep,
-    RunResult,
-    indent_case,
-    repeat,
-    restitution_sweep,
-    run,
-)
-from wear.erosion import ErosionRun, erode_angles, erode_case
-from wear.integrate import (
-    WearMap,
-    axisymmetric_wear_depth,
-    integrate_volume,
-    integrate_wear,
-    surface_grid,
-    wear_from_impact,
-)
-from wear.law import WearLaw, wear_coefficient_units
-from wear.pressure import (
-    PRESSURE_SOURCES,
-    SPEED_MODELS,
-    PressureHistory,
-    SlidingSpeed,
-    fe_pressure_history,
-    hertz_pressure_history,
-    paper_pressure_history,
-    pressure_history,
-    sliding_speed,
-)
+from __future__ import annotations
 
-__all__ = [
-    "PRESSURE_SOURCES",
-    "SPEED_MODELS",
-    "Case",
-    "ErosionRun",
-    "IndentRun",
-    "PressureHistory",
-    "RepeatResult",
-    "RestitutionSweep",
-    "RunResult",
-    "SlidingSpeed",
-    "WearLaw",
-    "WearMap",
-    "axisymmetric_wear_depth",
-    "default_case",
-    "dump_case",
-    "erode_angles",
-    "erode_case",
-    "fe_pressure_history",
-    "hertz_pressure_history",
-    "indent_case",
-    "integrate_volume",
-    "integrate_wear",
-    "load_case",
-    "paper_pressure_history",
-    "parse_case",
-    "pressure_history",
-    "repeat",
-    "restitution_sweep",
-    "run",
-    "sliding_speed",
-    "surface_grid",
-    "wear_coefficient_units",
-    "wear_from_impact",
-]
+import importlib
+from typing import Any
+
+#: name → the module that defines it; ``wear.<name>`` imports that module on first access.
+_EXPORTS = {
+    "Case": "wear.case",
+    "default_case": "wear.case",
+    "dump_case": "wear.case",
+    "load_case": "wear.case",
+    "parse_case": "wear.case",
+    "IndentRun": "wear.chain",
+    "RepeatResult": "wear.chain",
+    "RestitutionSweep": "wear.chain",
+    "RunResult": "wear.chain",
+    "indent_case": "wear.chain",
+    "repeat": "wear.chain",
+    "restitution_sweep": "wear.chain",
+    "run": "wear.chain",
+    "ErosionRun": "wear.erosion",
+    "erode_angles": "wear.erosion",
+    "erode_case": "wear.erosion",
+    "WearMap": "wear.integrate",
+    "axisymmetric_wear_depth": "wear.integrate",
+    "integrate_volume": "wear.integrate",
+    "integrate_wear": "wear.integrate",
+    "surface_grid": "wear.integrate",
+    "wear_from_impact": "wear.integrate",
+    "WearLaw": "wear.law",
+    "wear_coefficient_units": "wear.law",
+    "PRESSURE_SOURCES": "wear.pressure",
+    "SPEED_MODELS": "wear.pressure",
+    "PressureHistory": "wear.pressure",
+    "SlidingSpeed": "wear.pressure",
+    "fe_pressure_history": "wear.pressure",
+    "hertz_pressure_history": "wear.pressure",
+    "paper_pressure_history": "wear.pressure",
+    "pressure_history": "wear.pressure",
+    "sliding_speed": "wear.pressure",
+}
+
+__all__ = sorted(_EXPORTS)
+
+
+def __getattr__(name: str) -> Any:
+    """``wear.<name>`` for a name of :data:`__all__`: imported from its module on first access, then cached."""
+    if name not in _EXPORTS:
+        raise AttributeError(f"module 'wear' has no attribute {name!r}")
+    value = getattr(importlib.import_module(_EXPORTS[name]), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *__all__})

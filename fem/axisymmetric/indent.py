@@ -25,7 +25,7 @@ from fem.core.material import check_small_strain, estimate_contact_radius, plate
 from fem.core.plasticity import J2Material, von_mises
 from fem.core.sphere import contact_radius, pressure_from_reactions
 
-__all__ = ["indent", "indent_impact", "plate_mesh"]
+__all__ = ["IndentationRun", "indent", "indent_impact", "plate_mesh"]
 
 #: First yield is refined until the elastic state it is scaled from carries a force within this fraction of the
 #: first-yield force (relative): the mesh's own first yield to 1%, well inside its 3% accuracy against the exact
@@ -66,8 +66,11 @@ def plate_mesh(
     return scale_mesh(generate_mesh(**params), a_max)
 
 
-class _Run:
-    """A solver plus the kept states of a loading run (see :meth:`IndentationResult.unload_from`)."""
+class IndentationRun:
+    """A solver plus the states of a loading run: ``solver`` (:class:`fem.axisymmetric.solver.PlateSolver`), ``final``
+    (the state after the last step), ``kept`` (every converged loading state, with ``keep_states``; see
+    :meth:`IndentationResult.unload_from`), ``first_yield`` and ``reach`` (m, the largest contact radius of the
+    virgin loading). Each :class:`IndentationResult` it computes holds it as ``run``."""
 
     def __init__(self, solver: PlateSolver, e_star: float, radius: float):
         self.solver = solver
@@ -236,7 +239,7 @@ class _Run:
             radius=self.radius,
             effective_modulus=self.e_star,
             time=None if times is None else np.asarray(times, dtype=float),
-            _run=self,
+            run=self,
         )
 
     def unload_from(self, max_overlap: float, steps: int) -> IndentationResult:
@@ -335,7 +338,7 @@ def indent(
         raise ValueError(f"mesh={mesh!r} is not None, a skfem.MeshTri or a mesh file path")
     force_scale = 4.0 / 3.0 * e_star * math.sqrt(radius) * float(path.max()) ** 1.5
     solver = PlateSolver(mesh_obj, material, radius, force_scale, float(path.max()), rtol=rtol)
-    run = _Run(solver, e_star, radius)
+    run = IndentationRun(solver, e_star, radius)
     return run.run(path, keep=keep_states, times=_times)
 
 

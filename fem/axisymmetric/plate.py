@@ -35,7 +35,7 @@ from skfem import MeshTri
 from contact.checks import check_array, check_number
 from contact.materials import Material
 from contact.theory import first_yield as hertz_first_yield
-from fem.axisymmetric.indent import _Run, plate_mesh, state_mesh
+from fem.axisymmetric.indent import IndentationRun, plate_mesh, state_mesh
 from fem.axisymmetric.result import IndentationResult, join
 from fem.axisymmetric.solver import PlateSolver, PlateState
 from fem.core.material import check_small_strain, plate_model
@@ -139,7 +139,7 @@ class Plate:
         """Load from the current state along ``overlaps`` (m, from the original plane), keeping every state so
         :meth:`unload` can restart from any of them. Does not change :attr:`state`."""
         path = check_array("overlaps", overlaps, low=0.0, units="m", what="overlap")
-        run = _Run(self.solver, self.effective_modulus, self.radius)
+        run = IndentationRun(self.solver, self.effective_modulus, self.radius)
         # the state and first contact before this loading (an unload may be repeated: it must not see its own commit)
         self._before = (self.state, self.first_contact_overlap())
         return run.run(path, start=None if self._virgin else self.state, keep=True, predictor=self.elastic_predictor)
@@ -151,7 +151,7 @@ class Plate:
         further if the ball still touches. Restarts from the kept loading state just below ``max_overlap`` (the
         loading branch is path independent). With ``commit`` the final, unloaded state becomes :attr:`state`.
         The result is recorded in ``loading.unloadings`` (so ``loading.force_law()`` includes it)."""
-        run = loading._run
+        run = loading.run
         steps = int(check_number("steps", steps, low=1, high=10000))
         top = max(st.overlap for st in run.kept)
         max_overlap = check_number("max_overlap", max_overlap, low=0.0, low_open=True, high=top * (1 + 1e-9),

@@ -32,6 +32,7 @@ the repeated-impact mesh: 15k DOFs × ~50 nodes).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from weakref import WeakKeyDictionary
 
 import numpy as np
 import scipy.sparse.linalg as spla
@@ -39,12 +40,16 @@ from scipy.optimize import nnls
 
 from contact.checks import check_array
 from fem.axisymmetric.result import IndentationResult
-from fem.axisymmetric.solver import PlateState
+from fem.axisymmetric.solver import PlateSolver, PlateState
 from fem.core.assembly import strain
 from fem.core.plasticity import radial_return
 from fem.core.sphere import contact_radius, pressure_from_reactions
 
 __all__ = ["ElasticReload", "SurfaceCompliance", "candidate_nodes", "elastic_reload"]
+
+#: Per solver: (free DOFs, LU of K_e on them, (the last node set, its unit responses) or None). A solver is
+#: rebuilt whenever the mesh moves (:meth:`fem.Plate.move_surface`), so its entry goes with it.
+_FACTORS: WeakKeyDictionary[PlateSolver, tuple] = WeakKeyDictionary()
 
 
 @dataclass(frozen=True, eq=False)
@@ -75,14 +80,14 @@ def candidate_nodes(solver, state: PlateState, top: float, widen: float = 1.3) -
 class SurfaceCompliance:
     r"""The elastic compliance of ``solver``'s mesh condensed onto the surface ``nodes``: C = S K_e⁻¹ Sᵀ (m/N) and
     the free-DOF response to a unit reaction at each node. The LU of K_e (and the last node set's responses) is
-    kept on the solver, which is rebuilt whenever the mesh moves (:meth:`fem.Plate.move_surface`)."""
+    kept for the solver, which is rebuilt whenever the mesh moves (:meth:`fem.Plate.move_surface`)."""
 
     def __init__(self, solver, nodes: np.ndarray) -> None:
         self.solver, self.nodes = solver, nodes
-        cache = getattr(solver, "_reload_cache", None)
+        cache = _FACTORS.get(solver)
         if cache is None:
             free = np.setdiff1d(np.arange(solver.disc.ndofs), solver.fixed_dofs)
-            stiffness = solver._elastic_stiffness()[free][:, free].tocsc()
+            stiffness = solver.elastic_stiffness()[free][:, free].tocsc()
             lu = spla.splu(stiffness, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
                            options={"SymmetricMode": True})  # fmt: skip
             cache = (free, lu, None)
@@ -98,7 +103,7 @@ class SurfaceCompliance:
             unit[rows, np.arange(nodes.size)] = -1.0  # a compressive reaction pushes the node down (−z)
             self.response = lu.solve(unit)  # free-DOF displacement per unit reaction
             cached = (nodes, self.response)
-        solver._reload_cache = (free, lu, cached)
+        _FACTORS[solver] = (free, lu, cached)
         compliance = -self.response[rows]  # C_ij = −u_z,i per unit f_j (positive definite)
         self.matrix = 0.5 * (compliance + compliance.T)
         self.cholesky = np.linalg.cholesky(self.matrix)

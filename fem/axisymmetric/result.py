@@ -53,7 +53,8 @@ class IndentationResult:
     (:class:`FirstYieldPoint` or None), ``residual_depth`` (m, surface u_z after the last step, positive = into
     the plate), ``max_equivalent_plastic_strain`` (per step), ``regime`` (per step), ``newton_iterations`` (per
     step), ``time`` (s, per step, only from :func:`fem.indent_impact`), ``radius`` R (m), ``effective_modulus``
-    E* (Pa).
+    E* (Pa), ``run`` (the :class:`fem.axisymmetric.indent.IndentationRun` that computed it: its mesh, final state and
+    kept states; None for a result not computed by a run, e.g. :func:`fem.elastic_reload`).
     """
 
     overlap: np.ndarray
@@ -72,7 +73,7 @@ class IndentationResult:
     effective_modulus: float
     time: np.ndarray | None = None
     unloadings: list = field(default_factory=list)
-    _run: object = field(default=None, repr=False)
+    run: object = field(default=None, repr=False)
 
     # ------------------------------------------------------------------ unloading
     def unload_from(self, max_overlap: float, steps: int = 20) -> IndentationResult:
@@ -84,9 +85,9 @@ class IndentationResult:
         yields nowhere are taken without Newton iterations (:mod:`fem.axisymmetric.reload`: the same solution). The
         unloading curve is recorded here, so :meth:`force_law` returns one unloading curve per call.
         """
-        if self._run is None:
+        if self.run is None:
             raise ValueError("unload_from needs the states of the loading run: call fem.indent(..., keep_states=True)")
-        result = self._run.unload_from(max_overlap, steps)
+        result = self.run.unload_from(max_overlap, steps)
         self.unloadings.append(result)
         return result
 
@@ -121,9 +122,9 @@ class IndentationResult:
     def to_meshio(self) -> meshio.Mesh:
         """The deformed mesh of the last step: points (r, z, 0) m, point data ``u`` (m) and ``pressure`` (Pa,
         surface), cell data ``von_mises`` (Pa) and ``equivalent_plastic_strain`` (element averages)."""
-        if self._run is None:
+        if self.run is None:
             raise ValueError("to_meshio needs the final state of the run, which this result does not hold")
-        return self._run.to_meshio(self)
+        return self.run.to_meshio(self)
 
     def write(self, path: str | os.PathLike) -> None:
         """Write :meth:`to_meshio` to ``path`` (meshio; format from the suffix, e.g. ``.vtu``)."""

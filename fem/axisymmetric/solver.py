@@ -129,7 +129,8 @@ class PlateSolver:
         upd = self.stress_update(state)
         return -internal_force(self.disc, upd.stress)[self.surface_uz]
 
-    def _elastic_stiffness(self) -> sp.csr_matrix:
+    def elastic_stiffness(self) -> sp.csr_matrix:
+        """The elastic stiffness matrix K_e (N/m, all DOFs, no boundary conditions), assembled once."""
         if self._elastic_K is None:
             self._elastic_K = assemble(self.disc, self.elastic_element_matrices)
         return self._elastic_K
@@ -263,7 +264,7 @@ class PlateSolver:
             elif first_residual is not None and residual > 1e4 * first_residual:
                 break  # diverging: cut the increment now
             t0 = time.perf_counter()
-            K = self._elastic_stiffness() if elastic else self._tangent(upd)
+            K = self.elastic_stiffness() if elastic else self._tangent(upd)
             du = np.zeros(d.ndofs)
             du[constrained] = du_c
             rhs = -f - K @ du

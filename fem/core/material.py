@@ -23,9 +23,10 @@ SMALL_STRAIN_WARNING = 0.1
 
 
 def plate_model(plate: Material, ball: Material | None, hardening: float) -> tuple[J2Material, float]:
-    """The plate's J2 material (Pa) for a ``ball`` (None: rigid) pressed into ``plate`` with linear ``hardening`` H
-    (Pa), and the effective modulus E* (Pa, errata Eq. 5): an elastic ball is a rigid sphere on a plate of modulus
-    E_p' = E*(1 − ν_p²), exact while elastic (a warning once the plate may yield)."""
+    """The FE plate's material and the effective modulus E* (Pa) of ``ball`` (None: rigid) on ``plate``: the
+    ball is a rigid sphere and the plate a J2 solid of modulus E_p' = E*(1 − ν_p²), Poisson's ratio ν_p, yield
+    strength Y and linear hardening modulus ``hardening`` H (Pa), so that E* is unchanged (module docstring;
+    warns when an elastic ball meets a plate that can yield). One-line ``ValueError`` for a rigid plate."""
     if not isinstance(plate, Material):
         raise ValueError(f"plate={plate!r} is not a contact.Material")
     if plate.is_rigid:

@@ -1,8 +1,10 @@
 """The ``impactwear`` command line.
 
-Each command is a module of :mod:`wear.app.commands` exposing ``HELP`` (one line), ``configure(parser)`` and
-``main(args) -> int``: parse → load the case → call the runner → write. Bad input (``ValueError``) is reported as one
-line naming the parameter, with exit status 2 and no traceback.
+Each command is a module of :mod:`wear.app.commands` exposing ``configure(parser)`` and ``main(args) -> int``:
+parse → load the case → call the runner → write. The commands that run a case are the jobs
+(:data:`wear.case.JOBS`, where their help lines and modules are registered); the tools (:data:`TOOLS`: sweep,
+reproduce, validate) run no case of their own and carry their help line as ``HELP``. Bad input (``ValueError``) is
+reported as one line naming the parameter, with exit status 2 and no traceback.
 """
 
 from __future__ import annotations
@@ -14,11 +16,17 @@ import sys
 from importlib.metadata import PackageNotFoundError, version
 
 from fem import ConvergenceError
-from wear.app.commands import calibrate, erode, impact, indent, repeat, reproduce, run, sweep, validate
+from wear.app.commands import reproduce, sweep, validate
+from wear.case import JOBS
 
-#: name → command module, in the order of ``impactwear --help``.
-COMMANDS = {"run": run, "impact": impact, "indent": indent, "repeat": repeat, "erode": erode,
-            "calibrate": calibrate, "sweep": sweep, "reproduce": reproduce, "validate": validate}  # fmt: skip
+#: The commands that are not jobs: name → module (its ``HELP`` is the help line), after the jobs in ``--help``.
+TOOLS = {"sweep": sweep, "reproduce": reproduce, "validate": validate}
+
+
+def commands() -> dict[str, tuple[str, object]]:
+    """name → (help line, command module), in the order of ``impactwear --help``: the jobs, then the tools."""
+    jobs = {name: (job.help, job.command_module()) for name, job in JOBS.items()}
+    return {**jobs, **{name: (module.HELP, module) for name, module in TOOLS.items()}}
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -33,8 +41,8 @@ def build_parser() -> argparse.ArgumentParser:
         ver = "unknown"
     parser.add_argument("--version", action="version", version=f"impactwear {ver}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
-    for name, module in COMMANDS.items():
-        p = sub.add_parser(name, help=module.HELP, description=module.HELP)
+    for name, (text, module) in commands().items():
+        p = sub.add_parser(name, help=text, description=text)
         module.configure(p)
         p.set_defaults(_module=module)
     return parser

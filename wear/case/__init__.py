@@ -12,7 +12,7 @@ Traceback (most recent call last):
 ValueError: impact.angle=120 is out of range: impact angle from the plate normal must be in [0, 90) deg
 """
 
-from wear.case.jobs import JOBS, Job, default_case
+from wear.case.jobs import JOBS, STAGES, Job, Stage, default_case
 from wear.case.schema import Key, Table, key
 from wear.case.tables import (
     COUPLINGS,
@@ -57,6 +57,8 @@ __all__ = [
     "OutputSpec",
     "PlateSpec",
     "RepeatSpec",
+    "STAGES",
+    "Stage",
     "Table",
     "WearSpec",
     "apply_override",

@@ -19,7 +19,7 @@ from typing import Any, ClassVar
 from contact import Material, effective_modulus
 from contact.impact import TANGENTIAL_MODELS as ENGINE_TANGENTIAL_MODELS
 from contact.impact import check_time_step
-from contact.theory import hertz_impact, sphere_mass
+from contact.theory import hertz_impact, speed_components, sphere_mass
 from wear.case.schema import Table, key
 from wear.law import WearLaw
 from wear.laws import CUTTING_LAWS, LAWS
@@ -332,7 +332,7 @@ class Case:
         if self.impact.time_step is None:
             return
         ball, plate, radius = self.ball.material(), self.plate.material(), self.ball.radius
-        normal_speed = self.impact.speed * math.cos(math.radians(self.impact.angle))
+        normal_speed, _ = speed_components(self.impact.speed, self.impact.angle)
         contact_time = hertz_impact(sphere_mass(radius, ball.density), radius, effective_modulus(ball, plate),
                                     normal_speed).contact_time  # fmt: skip
         if math.isfinite(contact_time) and contact_time > 0.0:

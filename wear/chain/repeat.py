@@ -63,6 +63,7 @@ from scipy.ndimage import gaussian_filter1d
 
 import fem
 from contact import effective_modulus
+from contact.theory import speed_components
 from wear.case import Case
 from wear.chain.plate import case_plate, coupling_settings, impact_on_law
 from wear.chain.records import ComputedImpact, ImpactRecord, RepeatResult, yield_strain
@@ -131,8 +132,7 @@ def impact_on_plate(case: Case, fe_plate: fem.Plate, estimate: float, axis_x: fl
             return None
     wm = impact_wear(case, coupled.impact, coupled.pressure_table, coupled.plastic_work)[1]
     # the ball flies d0·V_t/V_n along x before it touches the dented surface: same spot, shifted first contact
-    v_n = case.impact.speed * math.cos(math.radians(case.impact.angle))
-    v_t = case.impact.speed * math.sin(math.radians(case.impact.angle))
+    v_n, v_t = speed_components(case.impact.speed, case.impact.angle)
     wm = replace(wm, x=wm.x + coupled.first_contact * v_t / v_n)
     r = fe_plate.surface_r
     profile = smooth_profile(r, azimuthal_average(wm, axis_x, r), case.repeat.wear_smoothing * coupled.contact_radius)

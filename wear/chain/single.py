@@ -35,7 +35,7 @@ import numpy as np
 
 import fem
 from contact import ImpactResult, Material, effective_modulus, simulate_impact
-from contact.theory import PAPER_YIELD_COEFFICIENT, first_yield, yield_velocity
+from contact.theory import PAPER_YIELD_COEFFICIENT, first_yield, speed_components, yield_velocity
 from fem import CoupledImpact, IndentationResult, PlateCycle, worst_regime
 from fem.solid_coupling import SolidCoupledImpact
 from wear.case import JOBS, Case
@@ -302,5 +302,5 @@ def speed_ratio(case: Case) -> float:
     ball, plate = case.ball.material(), case.plate.material()
     if not plate.yield_strength:
         return math.inf
-    v_n = case.impact.speed * math.cos(math.radians(case.impact.angle))
+    v_n, _ = speed_components(case.impact.speed, case.impact.angle)
     return v_n / yield_velocity(case.ball.radius, ball, plate)

@@ -39,6 +39,7 @@ import numpy as np
 from tqdm import tqdm
 
 from contact.checks import check_bool, check_choice, check_number
+from contact.theory import speed_components
 from wear.erosion.stamp import stamp_impacts, stamp_impacts_numpy
 from wear.erosion.stream import Stream, impacts_on_patch
 from wear.erosion.table import ResponseTable
@@ -396,7 +397,7 @@ def footprint_on_grid(
     if relief.shape != (n, n):
         raise ValueError(f"surface has shape {relief.shape}: must be ({n}, {n}) (m)")
     if slope_cells is None:
-        _, _, length = table.interpolate(speed * math.cos(math.radians(angle)), angle)
+        _, _, length = table.interpolate(speed_components(speed, angle)[0], angle)
         slope_cells = max(1, round(length / h))
     disc, disc_norm = _slope_disc(int(check_number("slope_cells", slope_cells, low=1, high=n // 4)), h)
     wear = np.zeros((n, n))

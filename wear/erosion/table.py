@@ -18,6 +18,7 @@ import numpy as np
 from scipy.interpolate import RegularGridInterpolator
 
 from contact.checks import check_array, check_number
+from contact.theory import speed_components
 from wear.erosion.response import Footprint, ImpactResponse
 
 __all__ = ["ResponseTable", "build_response_table", "table_axes", "MAX_TABLE_ENTRIES"]
@@ -120,7 +121,7 @@ def table_axes(
     if hi <= lo:
         hi = lo + step
     angles = np.linspace(lo, hi, n_angles)
-    vn = np.linspace(speed * math.cos(math.radians(hi)), speed * math.cos(math.radians(lo)), n_speeds)
+    vn = np.linspace(speed_components(speed, hi)[0], speed_components(speed, lo)[0], n_speeds)
     return vn, angles
 
 

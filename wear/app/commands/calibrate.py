@@ -17,8 +17,6 @@ from wear.app.outputs.folder import check_output_folder
 from wear.case import LAWS
 from wear.chain.calibrate import calibrate, read_data
 
-HELP = "fit a wear law's constants to measured wear (least squares on logs, with intervals); write calibrated.toml"
-
 DEFAULT_OUT = "impactwear-calibrate"
 
 

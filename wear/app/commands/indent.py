@@ -27,8 +27,6 @@ from wear.app.outputs.folder import check_output_folder
 from wear.app.outputs.indent import write_indent
 from wear.chain.indent import indent_case
 
-HELP = "press the ball into the axisymmetric FE plate and unload; write F-δ, pressures, first yield, mesh, figures"
-
 DEFAULT_OUT = "impactwear-indent"
 
 # option -> case key (checked by the case schema, so errors name the key)

@@ -24,8 +24,6 @@ from wear.app.outputs.folder import output_folder
 from wear.app.outputs.repeat import RepeatWriter
 from wear.chain.repeat import repeat
 
-HELP = "N impacts of the same ball at one site on the plate the previous ones left: dent, wear, shakedown"
-
 DEFAULT_OUT = "impactwear-repeat"
 
 

@@ -135,7 +135,7 @@ def plastic_zone_axes(
 
 def plastic_zone_figure(res):
     """Equivalent plastic strain under the contact after the last step, on the FE mesh (r–z in µm)."""
-    run = res._run
+    run = res.run
     disc = run.solver.disc
     fig, ax = plt.subplots(figsize=(6.0, 4.8))
     filled = plastic_zone_axes(

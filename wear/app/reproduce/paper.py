@@ -20,7 +20,7 @@ import numpy as np
 
 from contact import Material, simulate_impact, simulate_impacts
 from contact.materials import effective_modulus
-from contact.theory import hertz_impact, sphere_mass
+from contact.theory import hertz_impact, speed_components, sphere_mass
 from wear import WearLaw, wear_from_impact
 from wear.app.figures import paper as plots
 from wear.app.reproduce.fe import default_case_wear
@@ -62,10 +62,7 @@ def fig04(out: Path, quick: bool) -> FigureReport:
     e_star = effective_modulus(k["ball"], k["plate"])
     mass = sphere_mass(k["radius"], k["ball"].density)
     closed = np.array(
-        [
-            [hertz_impact(mass, k["radius"], e_star, v * math.cos(math.radians(a))).max_force for a in angles]
-            for v in speeds
-        ]
+        [[hertz_impact(mass, k["radius"], e_star, speed_components(v, a)[0]).max_force for a in angles] for v in speeds]
     )
     dev = np.abs(model / closed - 1.0)
     plots.plot_peak_force(

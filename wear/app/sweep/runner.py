@@ -44,8 +44,8 @@ from wear.app.figures.sweep import plot_sweep
 from wear.app.outputs.folder import claim_output_folder
 from wear.app.outputs.writer import remove_stale_temps, write_text
 from wear.app.sweep.spec import SweepCase, SweepSpec, flatten
-from wear.app.sweep.stages import STAGES, execute_case
-from wear.case import TABLES
+from wear.app.sweep.stages import execute_case
+from wear.case import STAGES, TABLES
 
 __all__ = ["SweepOutcome", "SweepAborted", "run_sweep", "results_table", "worker_pool", "MAX_ATTEMPTS"]
 
@@ -293,7 +293,7 @@ def _write_outputs(spec: SweepSpec, out: Path, records: dict[str, dict]) -> None
     writer.writerows([[_csv_text(row.get(k)) for k in header] for row in rows])
     write_text(out / "results.csv", buf.getvalue(), fsync=True)
     if spec.axes is not None:
-        units = {**_input_units(spec.axes), **STAGES[spec.stage].units()}
+        units = {**_input_units(spec.axes), **STAGES[spec.stage].result_units()}
         plot_sweep(spec.axes, rows, results, out, units=units)
 
 

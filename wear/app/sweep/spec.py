@@ -3,7 +3,7 @@
 A sweep file has three parts::
 
     [sweep]
-    stage = "impact"                 # "impact", "indent", "run", "erode" or "repeat" (wear.app.sweep.stages)
+    stage = "impact"                 # a stage of wear.case.STAGES: "impact", "indent", "run", "erode", ...
 
     [base]                           # optional: a case, same tables as a case file; keys left out take
     impact.speed = 3.9               # the stage's default case's values (see wear.app.sweep.stages)
@@ -42,7 +42,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from wear.app.sweep.stages import STAGES, stage_case
+from wear.app.sweep.stages import stage_case
+from wear.case import STAGES
 
 if sys.version_info >= (3, 11):
     import tomllib

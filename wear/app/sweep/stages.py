@@ -1,9 +1,10 @@
-"""The stages a sweep can run, and the function a worker process calls for one case.
+"""The functions of the sweep stages, and the function a worker process calls for one case.
 
-A stage is a function ``case -> dict``: it takes one full, validated case (tables of values,
+The stages are registered with their jobs (:data:`wear.case.STAGES`: name, tables, description, units). A stage's
+function is ``case -> dict``: it takes one full, validated case (tables of values,
 :meth:`wear.Case.to_dict`, SI units, angles in degrees from the plate normal) and returns a flat dict of
-JSON scalars (float, int, bool, str or None). ``tables`` lists the case tables the stage reads: only those enter
-the case id, so a change elsewhere in the schema does not invalidate finished cases.
+JSON scalars (float, int, bool, str or None). The stage's ``tables`` list the case tables it reads: only those
+enter the case id, so a change elsewhere in the schema does not invalidate finished cases.
 
 This module is imported by every worker (local pool or Dask).
 """
@@ -16,8 +17,7 @@ import socket
 import time
 import traceback
 import warnings
-from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
@@ -25,14 +25,16 @@ import numpy as np
 from contact import simulate_impact
 from contact.results import OUTPUT_UNITS
 from fem import worst_regime
-from wear.case import Case, default_case
+from wear.case import STAGES, Case, default_case
 from wear.chain.calibrate import calibrate, read_data
 from wear.chain.repeat import repeat
 from wear.chain.single import one_way, run
 from wear.erosion.run import erode_case
 
 __all__ = [
-    "Stage",
+    "ERODE_UNITS",
+    "INDENT_UNITS",
+    "RUN_UNITS",
     "STAGES",
     "calibrate_stage",
     "erode_stage",
@@ -43,24 +45,6 @@ __all__ = [
     "run_stage",
     "stage_case",
 ]
-
-
-@dataclass(frozen=True)
-class Stage:
-    """A sweep stage: ``name``, ``function`` (case dict → flat result dict), ``tables`` it reads (None = all),
-    ``description``, ``job``: the job whose default case a sweep's ``[base]`` is laid over
-    (:func:`wear.case.default_case`), ``units``: result name → SI unit (for figures)."""
-
-    name: str
-    function: Callable[[dict], dict]
-    tables: tuple[str, ...] | None
-    description: str
-    job: str
-    units: Callable[[], dict[str, str]] = dict
-
-    def defaults(self) -> dict:
-        """The default case of the stage's job, as tables of values (the tables the stage reads)."""
-        return default_case(self.job).to_dict(self.tables)
 
 
 def stage_case(case: dict, job: str) -> Case:
@@ -112,7 +96,8 @@ def indent_stage(case: dict) -> dict:
     }
 
 
-_INDENT_UNITS = {
+#: The indent stage's results that have a unit (SI).
+INDENT_UNITS = {
     "impact_max_overlap": "m",
     "impact_max_force": "N",
     "max_force": "N",
@@ -185,31 +170,25 @@ def calibrate_stage(case: dict) -> dict:
     return out
 
 
-def _run_units() -> dict[str, str]:
-    units = {f"impact.{k}": u for k, u in OUTPUT_UNITS.items()}
-    units.update({"yield.F_y_paper": "N", "yield.F_c_exact": "N", "yield.fe_first_yield_force": "N",
-                  "yield.V_y": "m/s", "dent.max_depth_m": "m", "dent.centre_x_m": "m"})  # fmt: skip
-    return units
+#: The run stage's results that have a unit (SI).
+RUN_UNITS = {
+    **{f"impact.{k}": u for k, u in OUTPUT_UNITS.items()},
+    "yield.F_y_paper": "N",
+    "yield.F_c_exact": "N",
+    "yield.fe_first_yield_force": "N",
+    "yield.V_y": "m/s",
+    "dent.max_depth_m": "m",
+    "dent.centre_x_m": "m",
+}
 
-
-STAGES: dict[str, Stage] = {
-    "impact": Stage("impact", impact_stage, ("ball", "plate", "impact"), "one H-DD impact (contact.simulate_impact)",
-                    "impact", lambda: dict(OUTPUT_UNITS)),
-    "indent": Stage("indent", indent_stage, ("ball", "plate", "impact", "fem"),
-                    "the FE plate along the impact's overlap history (fem.indent_impact)", "run",
-                    lambda: dict(_INDENT_UNITS)),
-    "run": Stage("run", run_stage, ("ball", "plate", "impact", "wear", "fem"),
-                 "the whole chain impact -> FE -> coupling -> wear (wear.run)", "run", _run_units),
-    "erode": Stage("erode", erode_stage, ("ball", "plate", "impact", "wear", "erosion"),
-                   "particle-stream erosion of a plate patch (wear.erode_case)", "erode", lambda: dict(_ERODE_UNITS)),
-    "repeat": Stage("repeat", repeat_stage, ("ball", "plate", "impact", "wear", "fem", "repeat"),
-                    "repeated impacts at one site (wear.repeat)", "repeat", dict),
-    "calibrate": Stage("calibrate", calibrate_stage, ("ball", "plate", "impact", "wear", "fem", "calibration"),
-                       "a calibration of the wear law to measured wear (wear.chain.calibrate)", "calibrate", dict),
-}  # fmt: skip
-
-_ERODE_UNITS = {"stream.speed_m_s": "m/s", "stream.angle_deg": "deg", "patch.size_m": "m",
-                "results.mass_loss_kg": "kg", "results.max_depth_m": "m"}  # fmt: skip
+#: The erode stage's results that have a unit (SI).
+ERODE_UNITS = {
+    "stream.speed_m_s": "m/s",
+    "stream.angle_deg": "deg",
+    "patch.size_m": "m",
+    "results.mass_loss_kg": "kg",
+    "results.max_depth_m": "m",
+}
 
 
 def flat_results(values: Mapping[str, Any], stage: str) -> dict[str, Any]:
@@ -240,7 +219,7 @@ def execute_case(stage: str, case: dict) -> dict:
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         try:
-            record["results"] = flat_results(STAGES[stage].function(case), stage)
+            record["results"] = flat_results(STAGES[stage].run(case), stage)
         except Exception as exc:  # a failed case is recorded and the sweep goes on
             error = f"{type(exc).__name__}: {exc}".splitlines()[0]
             record.update(status="failed", error=error, traceback=traceback.format_exc())

@@ -15,7 +15,7 @@ from scipy.special import gamma
 
 from contact import Material, simulate_impact
 from contact.materials import effective_modulus as e_star_of
-from contact.theory import hertz_impact, sphere_mass
+from contact.theory import hertz_impact, speed_components, sphere_mass
 from wear import (
     WearLaw,
     axisymmetric_wear_depth,
@@ -84,7 +84,7 @@ def impulse_identity(quick: bool) -> list[Check]:
     ):
         imp = _impact(angle=angle, restitution=e, normal_model=model)
         wm = integrate_wear(pressure_history(imp, source), sliding_speed(imp), law, density=PLATE.density)
-        vn = imp.speed * math.cos(math.radians(angle))
+        vn, _ = speed_components(imp.speed, angle)
         expected = law.K * imp.mass * vn * (1.0 + imp.normal_restitution)
         out.append(
             relative("wear", f"worn volume = K m V_n (1+e), {source} pressure", f"{CASE}, 5 m/s, {angle:g}°, "
