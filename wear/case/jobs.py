@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-from wear.case.tables import Case
+from wear.case.tables import FEM_MODELS, Case
 
 __all__ = ["Job", "JOBS", "default_case"]
 
@@ -39,13 +39,15 @@ SAND_ON_STEEL = {
 class Job:
     """A job: ``name`` (its command), the ``tables`` it reads (what ``--print-default`` prints and
     ``summary.json`` records), the tables a case file must hold (``required``), the ``overlay`` of values that
-    differ from the schema's defaults, and a one-line ``doc`` of its default case."""
+    differ from the schema's defaults, a one-line ``doc`` of its default case, and the plate models it runs
+    (``fem_models``, for a job that reads ``[fem]``; :func:`wear.case.check.check_job_case`)."""
 
     name: str
     tables: tuple[str, ...]
     doc: str
     overlay: dict[str, dict[str, Any]] = field(default_factory=dict)
     required: tuple[str, ...] = ()
+    fem_models: tuple[str, ...] = FEM_MODELS
 
     def default_case(self) -> Case:
         """This job's default case."""
@@ -60,7 +62,7 @@ JOBS: dict[str, Job] = {
         Job("run", _RUN_TABLES, "an alumina ball (R 2.5 mm) on a Ti-6Al-4V plate at 3 m/s, 30° from the normal, "
             "μ 0.3, on the FE plate's own force law", required=("ball", "plate", "impact", "wear")),
         Job("repeat", (*_RUN_TABLES, "repeat"), "the run's default case, 100 impacts at one site",
-            required=("ball", "plate", "impact", "wear")),
+            required=("ball", "plate", "impact", "wear"), fem_models=("axisymmetric",)),
         Job("impact", ("ball", "plate", "impact"), "Kharaz, Gorham & Salman (2001): an alumina ball (R 2.5 mm) on "
             "soda-lime glass at 3.9 m/s, 30° from the normal, μ 0.092", KHARAZ_2001),
         Job("indent", ("ball", "plate", "fem"), "a rigid ball (R 10 mm) pressed into a steel plate (E 210 GPa, "
@@ -68,9 +70,10 @@ JOBS: dict[str, Job] = {
                 "ball": {"radius": 10e-3, "E": float("inf"), "nu": 0.3, "density": 7850.0, "name": "rigid"},
                 "plate": {"E": 210e9, "nu": 0.3, "density": 7850.0, "yield_strength": 210e6, "name": "steel"},
                 "fem": {"load_steps": 40, "unload_steps": 20, "mesh_scale": 1.0},
-            }),
+            }, fem_models=("axisymmetric",)),
         Job("calibrate", ("ball", "plate", "impact", "wear", "fem", "calibration"), "silica sand (R 150 µm) on a "
-            "carbon steel (Y 350 MPa) at 20 m/s, Thornton's normal law and pressure, no FE", SAND_ON_STEEL),
+            "carbon steel (Y 350 MPa) at 20 m/s, Thornton's normal law and pressure, no FE", SAND_ON_STEEL,
+            fem_models=("axisymmetric",)),
         Job("erode", ("ball", "plate", "impact", "wear", "erosion"), "a stream of the Kharaz (2001) alumina balls on "
             "soda-lime glass at 3.9 m/s, 30° from the normal, 0.464 kg/m³ for 52 min, Eq. 15 on the Hertz pressure",
             {**KHARAZ_2001, "wear": {"pressure": "hertz"}}),

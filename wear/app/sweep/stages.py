@@ -25,7 +25,7 @@ import numpy as np
 from contact import simulate_impact
 from contact.results import OUTPUT_UNITS
 from fem import worst_regime
-from wear.case import Case, default_case
+from wear.case import Case, check_job_case, default_case
 from wear.chain.calibrate import calibrate, read_data
 from wear.chain.repeat import repeat
 from wear.chain.single import one_way, run
@@ -65,7 +65,7 @@ class Stage:
 
 def stage_case(case: dict, job: str) -> Case:
     """The :class:`wear.Case` of a sweep case (tables of values) over ``job``'s default case."""
-    return Case.from_dict(case, base=default_case(job))
+    return check_job_case(Case.from_dict(case, base=default_case(job)), job)
 
 
 def impact_stage(case: dict) -> dict:
