@@ -12,9 +12,12 @@ import pytest
 
 import fem.core.increments
 import fem.solid.solver
+from contact import effective_modulus
+from contact.theory import first_yield
 from wear import run
 from wear.app.cli import main
 from wear.case import JOBS
+from wear.chain.single import SOLID_PLASTIC_REGIME
 from wear.surface import DeformedSurface
 
 REDUCED = {"model": "3d", "mesh_scale": 2.0, "solid_load_steps": 5, "solid_unload_steps": 3, "solid_iterations": 2}
@@ -139,3 +142,43 @@ def test_3d_non_converging_increment_one_line_nothing_written(tmp_path, capsys, 
     assert len(err.splitlines()) == 1, err
     assert "3-D plate: Newton did not converge at overlap=" in err, err
     assert not (tmp_path / "out").exists()
+
+
+def test_3d_run_summary_describes_the_3d_plate(frictionless, tmp_path):
+    """``regime``, ``yield.fe_first_yield_force`` and ``coupling`` of a 3-D run are the 3-D plate's, each naming its
+    plate; the axisymmetric plate it started from is kept under keys that say so. Reference for the first yield:
+    the closed form F_c = (π C Y)³ R² / (6 E*²) with the exact C(ν) (Johnson 1985 §6.2, contact.theory): the 3-D
+    plate's step before its first plastic step carries less (within 5 %: the plate's mesh), its first plastic step
+    more."""
+    from wear.app.outputs.run import write_run
+
+    summary = write_run(frictionless, tmp_path / "out")
+    saved = json.loads((tmp_path / "out" / "summary.json").read_text())
+    assert saved["fem_model"] == saved["regime_plate"] == "3d"
+    solid = frictionless.solid
+    # coupling: the 3-D coupling's cycles and convergence, the axisymmetric start inside
+    coupling = saved["coupling"]
+    assert coupling["plate"] == "3d"
+    assert coupling["iterations"] == solid.iterations == len(coupling["max_overlaps_m"]) - 1
+    assert coupling["converged"] == solid.converged
+    assert coupling["max_overlaps_m"][-1] == pytest.approx(frictionless.impact.max_overlap, rel=1e-12)
+    assert coupling["axisymmetric_start"]["plate"] == "axisymmetric"
+    assert coupling["start_max_overlap_m"] == pytest.approx(frictionless.coupling.impact.max_overlap, rel=1e-12)
+    # regime: from the 3-D plate's plastic strain (the default case yields well past first yield)
+    assert np.max(solid.solid.max_equivalent_plastic_strain) > 0.0
+    assert saved["regime"] == SOLID_PLASTIC_REGIME
+    assert saved["axisymmetric_start_regime"] in ("surface-plastic", "fully-plastic")
+    # first yield: the 3-D plate's, bracketed by the closed form
+    y = saved["yield"]
+    assert y["fe_first_yield_plate"] == "3d"
+    case = frictionless.case
+    plate = case.plate.material()
+    f_c = first_yield(case.ball.radius, effective_modulus(case.ball.material(), plate), plate.yield_strength,
+                      plate.nu).force  # fmt: skip
+    assert y["F_c_exact"] == pytest.approx(f_c, rel=1e-12)
+    forces = solid.solid.normal_force
+    k = int(np.flatnonzero(solid.solid.max_equivalent_plastic_strain > 0.0)[0])
+    assert y["fe_first_yield_force"] == forces[k] >= f_c
+    assert k == 0 or forces[k - 1] <= 1.05 * f_c
+    assert y["axisymmetric_first_yield_force"] == pytest.approx(f_c, rel=0.03)
+    assert summary["yield"] == saved["yield"]

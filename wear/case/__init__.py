@@ -12,6 +12,7 @@ Traceback (most recent call last):
 ValueError: impact.angle=120 is out of range: impact angle from the plate normal must be in [0, 90) deg
 """
 
+from wear.case.check import check_job_case
 from wear.case.jobs import JOBS, STAGES, Job, Stage, default_case
 from wear.case.schema import Key, Table, key
 from wear.case.tables import (
@@ -62,6 +63,7 @@ __all__ = [
     "Table",
     "WearSpec",
     "apply_override",
+    "check_job_case",
     "default_case",
     "dump_case",
     "key",

@@ -19,7 +19,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from typing import Any
 
-from wear.case.tables import Case
+from wear.case.tables import FEM_MODELS, Case
 
 __all__ = ["Job", "JOBS", "STAGES", "Stage", "default_case"]
 
@@ -85,7 +85,8 @@ class Job:
     ``summary.json`` records), a one-line ``doc`` of its default case, the ``help`` line of its command, its
     ``command`` (the module of :mod:`wear.app.commands` with ``configure(parser)`` and ``main(args)``), the
     ``overlay`` of values that differ from the schema's defaults, the tables a case file must hold
-    (``required``) and the sweep ``stages`` it offers."""
+    (``required``), the sweep ``stages`` it offers and the plate models it runs (``fem_models``, for a job that
+    reads ``[fem]``; :func:`wear.case.check.check_job_case`)."""
 
     name: str
     tables: tuple[str, ...]
@@ -95,6 +96,7 @@ class Job:
     overlay: dict[str, dict[str, Any]] = field(default_factory=dict)
     required: tuple[str, ...] = ()
     stages: tuple[Stage, ...] = ()
+    fem_models: tuple[str, ...] = FEM_MODELS
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "stages", tuple(replace(stage, job=self.name) for stage in self.stages))
@@ -170,6 +172,7 @@ JOBS: dict[str, Job] = {
                 "plate": {"E": 210e9, "nu": 0.3, "density": 7850.0, "yield_strength": 210e6, "name": "steel"},
                 "fem": {"load_steps": 40, "unload_steps": 20, "mesh_scale": 1.0},
             },
+            fem_models=("axisymmetric",),
         ),
         Job(
             "repeat",
@@ -186,6 +189,7 @@ JOBS: dict[str, Job] = {
                     f"{_STAGES}:repeat_stage",
                 ),
             ),
+            fem_models=("axisymmetric",),
         ),
         Job(
             "erode",
@@ -222,6 +226,7 @@ JOBS: dict[str, Job] = {
                     f"{_STAGES}:calibrate_stage",
                 ),
             ),
+            fem_models=("axisymmetric",),
         ),
     )
 }

@@ -184,8 +184,8 @@ class FemSpec(Table):
     unload_steps: int = key(int, 8, "FE increments of the unloading", low=1, high=2000)
     overshoot: float = key(float, 0.1, "FE loading past the estimated max overlap (relative)", low=0.02, high=2.0)
     mesh_scale: float = key(float, 2.0, "FE element size factor (> 1 coarser)", low=0.25, high=8.0)
-    model: str = key(str, "axisymmetric", "FE plate: axisymmetric (r, z), or 3d (half block, Coulomb friction; "
-                     "its impact runs on the plate's tangential law, mindlin_deresiewicz)",
+    model: str = key(str, "axisymmetric", "FE plate: axisymmetric (r, z), or 3d (impactwear run only: half block, "
+                     "Coulomb friction; its impact runs on the plate's tangential law, mindlin_deresiewicz)",
                      choices=FEM_MODELS)  # fmt: skip
     solid_iterations: int = key(int, 3, "most 3-D plate cycles of the 3-D coupling", low=1, high=20)
     solid_load_steps: int = key(int, 10, "3-D plate increments of the loading", low=2, high=200)

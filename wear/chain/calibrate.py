@@ -28,7 +28,7 @@ import numpy as np
 import fem
 from contact import ImpactResult, simulate_impacts
 from contact.theory import sphere_mass
-from wear.case import TABLES, Case
+from wear.case import TABLES, Case, check_job_case
 from wear.chain.fit import Constant, LogFit, log_fit
 from wear.chain.plate import case_plate, coupling_settings, impact_on_law, wear_constants
 from wear.chain.single import estimate_arguments, estimate_impact
@@ -322,6 +322,7 @@ def _constant(name: str, start: float) -> Constant:
 def calibrate(case: Case, data: CalibrationData, free: tuple[str, ...] | None = None) -> CalibrationResult:
     """Fit the constants ``free`` (default: the law's scale; :func:`law_constants`) of the case's wear law to
     ``data`` (see the module docstring); the other constants stay as in the case."""
+    check_job_case(case, "calibrate")
     allowed, default = law_constants(case)
     free = tuple(default if not free else free)
     for name in free:

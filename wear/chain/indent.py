@@ -54,6 +54,7 @@ class IndentRun:
         exact, paper = self.exact, self.paper
         peak = int(np.argmax(res.overlap))
         return {
+            "fem_model": "axisymmetric",
             "radius_m": self.radius,
             "effective_modulus_Pa": self.e_star,
             "plate": {"E_Pa": plate.E, "nu": plate.nu, "yield_strength_Pa": plate.yield_strength},

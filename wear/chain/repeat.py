@@ -64,7 +64,7 @@ from scipy.ndimage import gaussian_filter1d
 import fem
 from contact import effective_modulus
 from contact.theory import speed_components
-from wear.case import Case
+from wear.case import Case, check_job_case
 from wear.chain.plate import case_plate, coupling_settings, impact_on_law
 from wear.chain.records import ComputedImpact, ImpactRecord, RepeatResult, yield_strain
 from wear.chain.single import estimate_impact, impact_wear
@@ -185,6 +185,7 @@ def repeat(case: Case, progress: Callable[[int, int], None] | None = None,
     impact (e.g. to write the FE mesh)."""
     if not isinstance(case, Case):
         raise ValueError(f"case={type(case).__name__} is not a wear.Case")
+    check_job_case(case, "repeat")
     spec = case.repeat
     ball, plate = case.ball.material(), case.plate.material()
     if plate.is_rigid:

@@ -70,9 +70,10 @@ class RunResult:
     ``pressure`` (:class:`wear.PressureHistory`), ``wear`` (:class:`wear.WearMap`), ``worn`` (the wear law's volumes
     by mechanism, :class:`wear.laws.ImpactWear`), ``surface``
     (:class:`wear.surface.DeformedSurface`), ``yield_info`` (dict: ``F_y_paper`` Eq. 18 with C = 1.6, ``F_c_exact``
-    with C(ν), ``fe_first_yield_force``, ``V_y`` Thornton's yield speed, N and m/s), ``regime`` (str),
-    ``stage_times`` (dict stage → s), ``solid`` (:class:`fem.solid_coupling.SolidCoupledImpact` with
-    ``fem.model = "3d"``, else None; ``fe`` and ``coupling`` are then the axisymmetric plate it started from).
+    with C(ν), ``fe_first_yield_force`` of the plate the impact ran on and that plate, ``fe_first_yield_plate``,
+    ``V_y`` Thornton's yield speed, N and m/s), ``regime`` (str, of the plate the impact ran on), ``stage_times``
+    (dict stage → s), ``solid`` (:class:`fem.solid_coupling.SolidCoupledImpact` with ``fem.model = "3d"``, else
+    None; ``fe`` and ``coupling`` are then the axisymmetric plate it started from).
     """
 
     case: Case
@@ -88,6 +89,13 @@ class RunResult:
     regime: str
     stage_times: dict[str, float]
     solid: SolidCoupledImpact | None = None
+
+    @property
+    def fem_model(self) -> str | None:
+        """The FE plate the impact ran on (``fem.model``: "axisymmetric" or "3d"; None without an FE plate)."""
+        if self.solid is not None:
+            return "3d"
+        return None if self.fe is None else "axisymmetric"
 
     def summary(self) -> dict:
         """The numbers of summary.json (without versions; the writer adds them)."""
@@ -112,14 +120,36 @@ class RunResult:
         dent = self.surface.dent_dimensions()
         coupling = None
         if c is not None:
-            coupling = {"iterations": c.iterations, "final_change": c.change, "converged": c.converged,
-                        "max_overlaps_m": list(c.max_overlaps), "estimate_model": self.estimate.normal_model,
-                        "estimate_max_overlap_m": self.estimate.max_overlap}  # fmt: skip
+            coupling = {
+                "plate": "axisymmetric",
+                "iterations": c.iterations,
+                "final_change": c.change,
+                "converged": c.converged,
+                "max_overlaps_m": list(c.max_overlaps),
+                "estimate_model": self.estimate.normal_model,
+                "estimate_max_overlap_m": self.estimate.max_overlap,
+            }
+        if self.solid is not None:
+            # the coupling of the plate the impact ran on; the axisymmetric one it started from is kept inside
+            s = self.solid
+            coupling = {
+                "plate": "3d",
+                "iterations": s.iterations,
+                "final_change": s.change,
+                "converged": s.converged,
+                "max_overlaps_m": list(s.max_overlaps),
+                "start": "the axisymmetric coupled impact",
+                "start_max_overlap_m": s.max_overlaps[0],
+                "axisymmetric_start": coupling,
+            }
         return {
             "case": self.case.to_dict(JOBS["run"].tables),
+            "fem_model": self.fem_model,
             "impact": impact,
             "yield": dict(self.yield_info),
             "regime": self.regime,
+            "regime_plate": self.fem_model,
+            **({} if self.solid is None else {"axisymmetric_start_regime": worst_regime(self.fe.regime)}),
             "wear": {
                 "volume_m3": w.volume_m3,
                 "mass_kg": w.mass_kg,
@@ -173,20 +203,50 @@ def solid_summary(coupled: SolidCoupledImpact) -> dict:
     }
 
 
-def _yield_info(case: Case, ball: Material, plate: Material, fe: PlateCycle | IndentationResult | None) -> dict:
-    info: dict[str, float | None] = {"F_y_paper": None, "F_c_exact": None, "fe_first_yield_force": None, "V_y": None}
+def _yield_info(
+    case: Case,
+    ball: Material,
+    plate: Material,
+    fe: PlateCycle | IndentationResult | None,
+    solid: SolidCoupledImpact | None = None,
+) -> dict:
+    """First yield: the closed forms (N, m/s) and the FE plate's that the impact ran on (``fe_first_yield_plate``):
+    the axisymmetric plate's found within 1 % in force (:mod:`fem.axisymmetric.indent`), or on the 3-D plate the normal
+    force of its first step along the impact's path with plastic strain (an upper bound at the path's resolution,
+    ``fem.solid_load_steps``); the axisymmetric plate it started from is then ``axisymmetric_first_yield_force``."""
+    info: dict[str, float | str | None] = {
+        "F_y_paper": None,
+        "F_c_exact": None,
+        "fe_first_yield_force": None,
+        "fe_first_yield_plate": None,
+        "V_y": None,
+    }
     if plate.yield_strength and not plate.is_rigid:
         e_star = effective_modulus(ball, plate)
         R, Y = case.ball.radius, plate.yield_strength
         info["F_y_paper"] = first_yield(R, e_star, Y, plate.nu, coefficient=PAPER_YIELD_COEFFICIENT).force
         info["F_c_exact"] = first_yield(R, e_star, Y, plate.nu).force
         info["V_y"] = yield_velocity(R, ball, plate)
-    if fe is not None and fe.first_yield is not None:
-        info["fe_first_yield_force"] = float(fe.first_yield.force)
+    if fe is not None:
+        info["fe_first_yield_plate"] = "axisymmetric"
+        info["fe_first_yield_force"] = None if fe.first_yield is None else float(fe.first_yield.force)
+    if solid is not None:
+        info["axisymmetric_first_yield_force"] = info["fe_first_yield_force"]
+        info["fe_first_yield_plate"] = "3d"
+        info["fe_first_yield_force"] = solid_summary(solid)["first_yield_force_N"]
     return info
 
 
-def _regime(impact: ImpactResult, info: dict, fe: PlateCycle | IndentationResult | None) -> str:
+#: The regime of a 3-D plate that yielded: its plastic strain says that it yielded, not where (the regimes of
+#: :data:`fem.REGIMES` are classified on the axisymmetric plate's surface layer).
+SOLID_PLASTIC_REGIME = "plastic (3-D plate: extent not classified)"
+
+
+def _regime(
+    impact: ImpactResult, info: dict, fe: PlateCycle | IndentationResult | None, solid: SolidCoupledImpact | None = None
+) -> str:
+    if solid is not None:
+        return "elastic" if np.max(solid.solid.max_equivalent_plastic_strain) == 0.0 else SOLID_PLASTIC_REGIME
     if fe is not None and len(fe.regime):
         return worst_regime(fe.regime)
     if info["F_c_exact"] is None:
@@ -291,9 +351,9 @@ def run(case: Case, progress: Callable[[str], None] | None = None) -> RunResult:
         return DeformedSurface(wm.x, wm.y, wm.depth.T, r[order], np.asarray(fe.residual_depth, float)[order], centre)
 
     surface = timed("surface", surface_stage)
-    info = _yield_info(case, ball, plate, fe)
+    info = _yield_info(case, ball, plate, fe, solid)
     return RunResult(case=case, estimate=estimate, impact=impact, fe=fe, coupling=coupled, pressure=ph, wear=wm,
-                     worn=worn, surface=surface, yield_info=info, regime=_regime(impact, info, fe),
+                     worn=worn, surface=surface, yield_info=info, regime=_regime(impact, info, fe, solid),
                      stage_times=times, solid=solid)  # fmt: skip
 
 

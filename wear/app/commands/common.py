@@ -14,7 +14,7 @@ from contextlib import contextmanager
 from tqdm import tqdm
 
 from wear.app.outputs.writer import to_jsonable
-from wear.case import JOBS, Case, dump_case, load_case, override_tables
+from wear.case import JOBS, Case, check_job_case, dump_case, load_case, override_tables
 
 __all__ = ["add_case_options", "add_out_option", "case_from_args", "case_json", "collect_notes", "print_default",
            "print_json", "print_notes", "progress_bar", "show_progress"]  # fmt: skip
@@ -49,16 +49,17 @@ def case_from_args(args: argparse.Namespace, job: str,
                    options: dict[str, dict[str, object]] | None = None) -> Case:  # fmt: skip
     """The checked case of a command: the case file (or ``job``'s default case), then the command's own ``options``
     (tables of values), then each ``--set`` — all laid on at once, so keys that depend on each other may be given
-    by different options."""
+    by different options. A plate model (``fem.model``) the command does not run is refused
+    (:func:`wear.case.check_job_case`)."""
     tables = {t: dict(v) for t, v in (options or {}).items()}
     reads = JOBS[job].tables
     for table, values in override_tables(args.overrides).items():
         if table not in reads:
-            key = next(iter(values))
-            raise ValueError(f"--set {table}.{key}: impactwear {job} does not read [{table}] (it reads "
+            key, value = next(iter(values.items()))
+            raise ValueError(f"--set {table}.{key}={value!r}: impactwear {job} does not read [{table}] (it reads "
                              f"{', '.join(f'[{t}]' for t in reads)})")  # fmt: skip
         tables.setdefault(table, {}).update(values)
-    return load_case(args.case, job, args.case_option).with_(**tables)
+    return check_job_case(load_case(args.case, job, args.case_option).with_(**tables), job)
 
 
 def case_json(case: Case, job: str) -> dict:

@@ -5,6 +5,7 @@ The ball, the plate and the FE increments come from the case (``--config CASE.to
 take ``impactwear indent --print-default``'s: a rigid ball R 10 mm on a steel plate E 210 GPa, ν 0.3, Y 210 MPa,
 40 + 20 increments); the flags below override single keys. The path loads to ``--max-overlap`` (m), or to
 ``--max-force`` (N), or by default to w = δ/δ_c = 20 (plastic plate) or a = 0.05 R (elastic), then unloads to zero.
+The plate is the axisymmetric one: ``fem.model = "3d"`` is refused before any work (:func:`wear.case.check_job_case`).
 """
 
 from __future__ import annotations

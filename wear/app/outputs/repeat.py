@@ -57,7 +57,12 @@ class RepeatWriter:
         write_csv(out / "repeat.csv", columns)
         wm = result.wear
         write_npz(out / "wear_map.npz", {"x": wm.x, "y": wm.y, "depth": wm.depth})
-        summary = {"case": case.to_dict(JOBS["repeat"].tables), "versions": versions(), **result.summary()}
+        summary = {
+            "case": case.to_dict(JOBS["repeat"].tables),
+            "fem_model": case.fem.model,
+            "versions": versions(),
+            **result.summary(),
+        }
         summary["halfspace_check"] = halfspace_check(result)
         summary["notes"] = list(dict.fromkeys([*notes, *result.notes]))
         write_json(out / "summary.json", summary)

@@ -25,7 +25,7 @@ import numpy as np
 from contact import simulate_impact
 from contact.results import OUTPUT_UNITS
 from fem import worst_regime
-from wear.case import STAGES, Case, default_case
+from wear.case import STAGES, Case, check_job_case, default_case
 from wear.chain.calibrate import calibrate, read_data
 from wear.chain.repeat import repeat
 from wear.chain.single import one_way, run
@@ -49,7 +49,7 @@ __all__ = [
 
 def stage_case(case: dict, job: str) -> Case:
     """The :class:`wear.Case` of a sweep case (tables of values) over ``job``'s default case."""
-    return Case.from_dict(case, base=default_case(job))
+    return check_job_case(Case.from_dict(case, base=default_case(job)), job)
 
 
 def impact_stage(case: dict) -> dict:
@@ -74,7 +74,8 @@ def indent_stage(case: dict) -> dict:
     ``residual_max_depth`` (m, dent depth after unloading), ``max_equivalent_plastic_strain``, ``regime`` (the
     most plastic one reached), ``newton_iterations`` (total).
     """
-    c = stage_case(case, "run")
+    # the run job's default case, pressed one-way like impactwear indent: on the plates indent runs
+    c = check_job_case(stage_case(case, "run"), "indent")
     impact = simulate_impact(**c.impact_arguments(history=True))
     res = one_way(c, impact)  # the ball comes with the impact
     fy = res.first_yield
