@@ -208,9 +208,26 @@ def _impact(scheme, model, tangential, factor, friction, dt, vn0, vt0, max_steps
         vs = vt - radius * om
         pn, pt = fn * vn, ft * vs
         delta, vn, x, vt, om, xi, fn, ft, dmax, a, p, sliding, e = _step(
-            scheme, model, tangential, factor, friction, dt, delta, vn, x, vt, om, xi, fn, ft, dmax, prm, tab,
-            springs, pitch,
-        )  # fmt: skip
+            scheme,
+            model,
+            tangential,
+            factor,
+            friction,
+            dt,
+            delta,
+            vn,
+            x,
+            vt,
+            om,
+            xi,
+            fn,
+            ft,
+            dmax,
+            prm,
+            tab,
+            springs,
+            pitch,
+        )
         steps += 1
         t = steps * dt
         vs = vt - radius * om
@@ -396,8 +413,23 @@ def run_batch(scheme, model, tangential, factor, friction, dt, vn0, vt0, max_ste
     if tangential == MEMORY:
         no_history = np.empty((len(HISTORY_FIELDS), 1))
         for i in prange(n):
-            _impact(scheme, model, tangential, factor, friction[i], dt[i], vn0[i], vt0[i], max_steps[i], prm, tab,
-                    pitch[i], out[i], no_history, 0)  # fmt: skip
+            _impact(
+                scheme,
+                model,
+                tangential,
+                factor,
+                friction[i],
+                dt[i],
+                vn0[i],
+                vt0[i],
+                max_steps[i],
+                prm,
+                tab,
+                pitch[i],
+                out[i],
+                no_history,
+                0,
+            )
         return out
     n_blocks = (n + LANES - 1) // LANES
     for b in prange(n_blocks):
@@ -423,6 +455,7 @@ def run_history(scheme, model, tangential, factor, friction, dt, vn0, vt0, max_s
     """Integrate one impact recording every ``every``-th step (and the last) into a (13, rows) array."""
     out = np.empty(_N_OUT)
     hist = np.empty((len(HISTORY_FIELDS), capacity))
-    rows = _impact(scheme, model, tangential, factor, friction, dt, vn0, vt0, max_steps, prm, tab, pitch, out, hist,
-                   every)  # fmt: skip
+    rows = _impact(
+        scheme, model, tangential, factor, friction, dt, vn0, vt0, max_steps, prm, tab, pitch, out, hist, every
+    )
     return out, hist[:, :rows]

@@ -93,9 +93,13 @@ def influence_coefficients(shape: tuple[int, int], spacing: float, effective_mod
 
 
 def halfspace_contact(
-    gap: np.ndarray, spacing: float, force: float, effective_modulus: float, tolerance: float = 1e-8,
+    gap: np.ndarray,
+    spacing: float,
+    force: float,
+    effective_modulus: float,
+    tolerance: float = 1e-8,
     max_iterations: int = 2000,
-) -> HalfspaceContact:  # fmt: skip
+) -> HalfspaceContact:
     r"""Pressure of a rigid indenter pressed with ``force`` (N) on an elastic half-space (effective modulus
     ``effective_modulus``, Pa) across the initial ``gap`` (m, 2-D, cells of side ``spacing`` m; its minimum is
     where contact starts). Polonsky & Keer (1999) conjugate gradients at fixed force; converged when the relative
@@ -157,20 +161,23 @@ def halfspace_contact(
         raise ValueError("gap: the contact reaches the edge of the grid: widen the grid (or press less)")
     u = displacement(p)
     approach = float(np.mean((h + u)[in_contact]))
-    return HalfspaceContact(p, approach + float(gap.min()), np.maximum(h + u - approach, 0.0), in_contact,
-                            iterations, spacing)  # fmt: skip
+    return HalfspaceContact(
+        p, approach + float(gap.min()), np.maximum(h + u - approach, 0.0), in_contact, iterations, spacing
+    )
 
 
-def sphere_on_axisymmetric_surface(radius: float, depth, force: float, effective_modulus: float, half_width: float,
-                                   cells: int = 128) -> tuple[HalfspaceContact, np.ndarray]:  # fmt: skip
+def sphere_on_axisymmetric_surface(
+    radius: float, depth, force: float, effective_modulus: float, half_width: float, cells: int = 128
+) -> tuple[HalfspaceContact, np.ndarray]:
     r"""A sphere of radius ``radius`` R (m) pressed with ``force`` W (N) onto a half-space (effective modulus E*, Pa)
     whose unloaded surface lies ``depth``\ (ρ) (m, a callable, positive below the original plane: a dent or a worn
     pit) below the plane, about the sphere's axis: :func:`halfspace_contact` on ``cells``² cells over
     ±``half_width`` (m) with the gap h(ρ) = R − √(R² − ρ²) + depth(ρ) (exact sphere). Returns the solution and ρ (m)
     of each cell (for radial profiles)."""
     radius = check_number("radius", radius, low=0.0, low_open=True, units="m", what="sphere radius")
-    half_width = check_number("half_width", half_width, low=0.0, low_open=True, high=radius, units="m",
-                              what="half-width of the grid")  # fmt: skip
+    half_width = check_number(
+        "half_width", half_width, low=0.0, low_open=True, high=radius, units="m", what="half-width of the grid"
+    )
     cells = int(check_number("cells", cells, low=8, high=4096, what="cells along each side"))
     spacing = 2.0 * half_width / cells
     x = (np.arange(cells) - (cells - 1) / 2) * spacing

@@ -18,13 +18,25 @@ from contact.materials import Material, effective_modulus, effective_shear_modul
 from contact.results import BatchResult, History, ImpactResult
 from contact.tabulated import TabulatedLaw
 
-__all__ = ["simulate_impact", "simulate_impacts", "ForceLawRangeError", "NORMAL_MODELS", "TANGENTIAL_MODELS", "SCHEMES",
-           "check_time_step", "MAX_STEPS", "MAX_HISTORY_STEPS"]  # fmt: skip
+__all__ = [
+    "simulate_impact",
+    "simulate_impacts",
+    "ForceLawRangeError",
+    "NORMAL_MODELS",
+    "TANGENTIAL_MODELS",
+    "SCHEMES",
+    "check_time_step",
+    "MAX_STEPS",
+    "MAX_HISTORY_STEPS",
+]
 
 NORMAL_MODELS = {"hertz": laws.HERTZ, "thornton": laws.THORNTON, "tabulated": laws.TABULATED}
 #: Tangential laws: (kernel code, spring factor f).
-TANGENTIAL_MODELS = {"hdd": (laws.SPRING, 2.0 / 3.0), "mindlin": (laws.SPRING, 1.0),
-                     "mindlin_deresiewicz": (laws.MEMORY, 1.0)}  # fmt: skip
+TANGENTIAL_MODELS = {
+    "hdd": (laws.SPRING, 2.0 / 3.0),
+    "mindlin": (laws.SPRING, 1.0),
+    "mindlin_deresiewicz": (laws.MEMORY, 1.0),
+}
 SCHEMES = {"verlet": engine.VERLET, "paper": engine.PAPER}
 
 #: Default number of steps per Hertz contact time t_c (time step t_c/2000).
@@ -47,8 +59,9 @@ def _short(x: float) -> str:
     return f"{mantissa.rstrip('0').rstrip('.')}e{int(exponent)}"
 
 
-def check_time_step(time_step, contact_time, *, histories: bool = False, history_every: int = 1,
-                    name: str = "time_step") -> float:  # fmt: skip
+def check_time_step(
+    time_step, contact_time, *, histories: bool = False, history_every: int = 1, name: str = "time_step"
+) -> float:
     """``time_step`` Δt (s) checked against the Hertz ``contact_time`` t_c (s; scalar or the batch's array): at most
     t_c/10 (a contact needs steps to be resolved), and at least t_c/:data:`MAX_STEPS`, or with ``histories`` (every
     ``history_every``-th step kept) t_c/(:data:`MAX_HISTORY_STEPS` × ``history_every``), so a time step that would
@@ -162,8 +175,9 @@ def _spring_pitch(
     and, with a ``limiting_pressure`` p_y (Pa), the radius √(Rδ) of a contact that takes the whole kinetic energy at
     p_y, ½mv² = πp_yRδ²/2; or over 1.5 times the largest contact radius of ``force_law``."""
     if force_law is not None:
-        largest = max(float(np.max(force_law.loading_contact_radius)),
-                      float(np.max(force_law.unloading_contact_radius)))  # fmt: skip
+        largest = max(
+            float(np.max(force_law.loading_contact_radius)), float(np.max(force_law.unloading_contact_radius))
+        )
         return np.full(normal_speed.shape, 1.5 * largest / laws.SPRINGS)
     largest = np.array([theory.hertz_impact(mass, radius, e_star, v).max_contact_radius for v in normal_speed])
     if limiting_pressure is not None:

@@ -42,8 +42,18 @@ from fem.axisymmetric.result import FirstYieldPoint, IndentationResult, join, lo
 from fem.axisymmetric.solver import PlateState
 from fem.core.increments import ConvergenceError
 
-__all__ = ["UNLOAD_MARGIN", "CouplingSettings", "CoupledImpact", "PlateCycle", "couple", "couple_elastic",
-           "contact_pressure", "force_law", "loading_path", "pressure_table"]  # fmt: skip
+__all__ = [
+    "UNLOAD_MARGIN",
+    "CouplingSettings",
+    "CoupledImpact",
+    "PlateCycle",
+    "couple",
+    "couple_elastic",
+    "contact_pressure",
+    "force_law",
+    "loading_path",
+    "pressure_table",
+]
 
 #: Relative margin above the impact's δ_max at which the plate starts unloading: the impact's own maximum (on the
 #: same loading table) then lies below the tabulated δ*, and the engine scales the curve down by that 1e-3, well
@@ -97,9 +107,14 @@ def loading_path(max_overlap: float, steps: int, first_yield_overlap: float | No
     return path
 
 
-def force_law(loading: IndentationResult, unloading: IndentationResult | None = None, first_contact: float = 0.0,
-              effective_modulus: float | None = None, points: int = 41,
-              shear_strength: float = math.inf) -> TabulatedLaw:  # fmt: skip
+def force_law(
+    loading: IndentationResult,
+    unloading: IndentationResult | None = None,
+    first_contact: float = 0.0,
+    effective_modulus: float | None = None,
+    points: int = 41,
+    shear_strength: float = math.inf,
+) -> TabulatedLaw:
     r"""The plate's force law from first contact (δ' = δ − ``first_contact``, m): the loading branch and the
     unloading curve from its top (``unloading``), or, without one, a provisional elastic curve of Hertz form
     :math:`F = F^*\left(\frac{\delta - \delta_p}{\delta^* - \delta_p}\right)^{3/2}`, with
@@ -112,8 +127,16 @@ def force_law(loading: IndentationResult, unloading: IndentationResult | None = 
         d_star, f_star, a_star = d[-1], f[-1], a[-1]
         drop = min(3.0 * f_star / (4.0 * effective_modulus * max(a_star, 1e-300)), d_star)
         s = np.linspace(1.0, 0.0, points)
-        return TabulatedLaw(d, f, a, np.array([d_star]), (d_star - drop + s * drop)[None, :],
-                            (f_star * s**1.5)[None, :], (a_star * np.sqrt(s))[None, :], shear_strength)  # fmt: skip
+        return TabulatedLaw(
+            d,
+            f,
+            a,
+            np.array([d_star]),
+            (d_star - drop + s * drop)[None, :],
+            (f_star * s**1.5)[None, :],
+            (a_star * np.sqrt(s))[None, :],
+            shear_strength,
+        )
     top, grid, force, radius = unloading_curve(unloading.overlap, unloading.force, unloading.contact_radius, points)
     top, grid = top - first_contact, grid - first_contact
     if grid[-1] < 0.0:
@@ -151,8 +174,9 @@ class PlateCycle:
         return self.unloading.to_meshio()
 
     @classmethod
-    def join(cls, loading: IndentationResult, unloading: IndentationResult, first_contact: float,
-             max_overlap: float) -> PlateCycle:  # fmt: skip
+    def join(
+        cls, loading: IndentationResult, unloading: IndentationResult, first_contact: float, max_overlap: float
+    ) -> PlateCycle:
         """The loading steps strictly below ``max_overlap`` δ* (m, from the original plane; the loading may be a
         whole cycle: stop at its peak) and the unloading."""
         c = join(loading, unloading, below=max_overlap)
@@ -233,8 +257,14 @@ class CoupledImpact:
         return float(np.interp(force, np.maximum.accumulate(f), p))
 
 
-def _loading_past_the_impact(load: Callable[[float], IndentationResult], impact_on: ImpactOnLaw, first_contact: float,
-                             estimate: float, settings: CouplingSettings, effective_modulus: float):  # fmt: skip
+def _loading_past_the_impact(
+    load: Callable[[float], IndentationResult],
+    impact_on: ImpactOnLaw,
+    first_contact: float,
+    estimate: float,
+    settings: CouplingSettings,
+    effective_modulus: float,
+):
     """(loading, law, impact): ``load(target)`` (a loading from first contact to first contact + target, m) run
     (1 + overshoot) past ``estimate`` (m), further until the impact on its law stops short of the table's end;
     None after :data:`LOADING_TRIES` loadings."""
@@ -259,9 +289,11 @@ def couple(plate: CoupledPlate, impact_on: ImpactOnLaw, estimate: float, setting
     """The impact ``impact_on`` coupled to ``plate`` as it is now (see the module docstring); commits the unloaded
     state to the plate. ``estimate`` (m): the expected approach (max overlap from first contact)."""
     if settings.max_iterations < 2:
-        raise ValueError(f"max_iterations={settings.max_iterations} is out of range: the coupling needs >= 2 "
-                         "impact runs (the first finds δ_max on the loading branch, the next runs on the "
-                         "unloading)")  # fmt: skip
+        raise ValueError(
+            f"max_iterations={settings.max_iterations} is out of range: the coupling needs >= 2 "
+            "impact runs (the first finds δ_max on the loading branch, the next runs on the "
+            "unloading)"
+        )
     first_contact = plate.first_contact_overlap()
     first_yield = plate.first_yield_overlap()
     before = plate.state
@@ -271,8 +303,10 @@ def couple(plate: CoupledPlate, impact_on: ImpactOnLaw, estimate: float, setting
 
     solved = _loading_past_the_impact(load, impact_on, first_contact, estimate, settings, plate.effective_modulus)
     if solved is None:
-        raise ValueError(f"the impact keeps going past the FE loading ({LOADING_TRIES} loadings from {estimate:.4g} m "
-                         "past first contact, each deeper): raise fem.overshoot")  # fmt: skip
+        raise ValueError(
+            f"the impact keeps going past the FE loading ({LOADING_TRIES} loadings from {estimate:.4g} m "
+            "past first contact, each deeper): raise fem.overshoot"
+        )
     loading, law, impact = solved
     overlaps, change = [impact.max_overlap], math.inf
     while len(overlaps) < settings.max_iterations:
@@ -290,12 +324,23 @@ def couple(plate: CoupledPlate, impact_on: ImpactOnLaw, estimate: float, setting
         if change < settings.tolerance:
             break
     cycle = PlateCycle.join(loading, unloading, first_contact, d_star)
-    return CoupledImpact(impact, law, cycle, first_contact, tuple(overlaps), change, change < settings.tolerance,
-                         pressure_table(cycle, impact), unload_at, plastic_work=plate.plastic_work(before))  # fmt: skip
+    return CoupledImpact(
+        impact,
+        law,
+        cycle,
+        first_contact,
+        tuple(overlaps),
+        change,
+        change < settings.tolerance,
+        pressure_table(cycle, impact),
+        unload_at,
+        plastic_work=plate.plastic_work(before),
+    )
 
 
-def couple_elastic(plate, impact_on: ImpactOnLaw, estimate: float, settings: CouplingSettings,
-                   yield_tolerance: float) -> CoupledImpact | None:  # fmt: skip
+def couple_elastic(
+    plate, impact_on: ImpactOnLaw, estimate: float, settings: CouplingSettings, yield_tolerance: float
+) -> CoupledImpact | None:
     """The impact ``impact_on`` on ``plate``'s elastic response (:func:`fem.elastic_reload`: the plate's state is
     not changed, the reloading and unloading retrace each other), or None when that response yields: a return
     mapping of any loading step up to the impact's maximum gives Δᾱ > ``yield_tolerance`` (then the plastic
@@ -325,8 +370,17 @@ def couple_elastic(plate, impact_on: ImpactOnLaw, estimate: float, settings: Cou
     impact = impact_on(law)
     change = abs(impact.max_overlap - first) / first
     cycle = PlateCycle.join(loading, unloading, first_contact, d_star)
-    coupled = CoupledImpact(impact, law, cycle, first_contact, (first, impact.max_overlap), change,
-                            change < settings.tolerance, pressure_table(cycle, impact), unload_at)  # fmt: skip
+    coupled = CoupledImpact(
+        impact,
+        law,
+        cycle,
+        first_contact,
+        (first, impact.max_overlap),
+        change,
+        change < settings.tolerance,
+        pressure_table(cycle, impact),
+        unload_at,
+    )
     return replace(coupled, elastic=True, trial_increment=trial)
 
 

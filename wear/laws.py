@@ -43,10 +43,25 @@ from wear.integrate import WearMap, integrate_wear, surface_grid, wear_map
 from wear.law import WearLaw
 from wear.pressure import PressureHistory, SlidingSpeed
 
-__all__ = ["LAWS", "CUTTING_LAWS", "ImpactWear", "bitter_threshold_velocity", "deformation_volume",
-           "dnv_angle_function", "dnv_erosion_ratio", "finnie_peak_angle", "finnie_volume", "flow_pressure_of",
-           "impact_wear", "local_volume", "oka_exponents", "pressed_area", "oka_erosion_ratio", "plastic_work_of",
-           "wear_of_impact"]  # fmt: skip
+__all__ = [
+    "LAWS",
+    "CUTTING_LAWS",
+    "ImpactWear",
+    "bitter_threshold_velocity",
+    "deformation_volume",
+    "dnv_angle_function",
+    "dnv_erosion_ratio",
+    "finnie_peak_angle",
+    "finnie_volume",
+    "flow_pressure_of",
+    "impact_wear",
+    "local_volume",
+    "oka_exponents",
+    "pressed_area",
+    "oka_erosion_ratio",
+    "plastic_work_of",
+    "wear_of_impact",
+]
 
 #: The wear laws by name, with what each computes.
 LAWS = {
@@ -74,8 +89,15 @@ def _from_surface(angle) -> np.ndarray:
     return np.radians(90.0 - np.asarray(angle, dtype=float))
 
 
-def finnie_volume(mass, speed, angle, flow_pressure: float, force_ratio: float = 2.0, depth_ratio: float = 2.0,
-                  cutting_fraction: float = 0.5) -> np.ndarray:  # fmt: skip
+def finnie_volume(
+    mass,
+    speed,
+    angle,
+    flow_pressure: float,
+    force_ratio: float = 2.0,
+    depth_ratio: float = 2.0,
+    cutting_fraction: float = 0.5,
+) -> np.ndarray:
     """Finnie's (1960) cutting volume (m³) of particles of ``mass`` (kg) at ``speed`` (m/s) and ``angle`` (deg from
     the normal) on a plate of plastic ``flow_pressure`` (Pa); see the module docstring.
 
@@ -120,8 +142,9 @@ def oka_exponents(hardness: float) -> tuple[float, float, float]:
     return OKA_N1[0] * hv ** OKA_N1[1], OKA_N2[0] * hv ** OKA_N2[1], OKA_K2[0] * hv ** OKA_K2[1]
 
 
-def oka_erosion_ratio(speed, angle, hardness: float, diameter: float, e90: float, k2: float | None = None,
-                      k3: float = 0.19) -> np.ndarray:  # fmt: skip
+def oka_erosion_ratio(
+    speed, angle, hardness: float, diameter: float, e90: float, k2: float | None = None, k3: float = 0.19
+) -> np.ndarray:
     """Oka et al. (2005) erosion ratio (kg/kg) at ``speed`` (m/s) and ``angle`` (deg from the normal): ``hardness``
     (Pa, Vickers), particle ``diameter`` (m), ``e90`` the ratio at normal incidence at 104 m/s and 326 µm; ``k2``
     (default 2.3 H_v^0.038) and ``k3`` the speed and size exponents."""
@@ -150,8 +173,7 @@ def pressed_area(pressure: PressureHistory, alpha: float) -> np.ndarray:
     return 2.0 * math.pi * pressure.extent**2 * np.trapezoid(pressure.pressure**alpha * s, s, axis=1)
 
 
-def local_volume(pressure: PressureHistory, speed: SlidingSpeed, law: WearLaw,
-                 area: np.ndarray | None = None) -> float:  # fmt: skip
+def local_volume(pressure: PressureHistory, speed: SlidingSpeed, law: WearLaw, area: np.ndarray | None = None) -> float:
     r"""Worn volume (m³) of Eq. 15 over a whole impact, without the surface grid:
     :math:`V = K \int v^\beta \int p^\alpha\,dA\,dt` (:func:`pressed_area`, given as ``area`` if already known for
     this α), the time integral by the trapezoidal rule (the sliding speed interpolated to the pressure's times). It is
@@ -208,8 +230,14 @@ def flow_pressure_of(constants: Mapping[str, float | str | None], plate: Materia
     return 3.0 * plate.yield_strength
 
 
-def impact_wear(law: str, constants: Mapping[str, float | str | None], impact: ImpactResult, *,
-                local: float | None = None, plate_work: float | None = None) -> ImpactWear:  # fmt: skip
+def impact_wear(
+    law: str,
+    constants: Mapping[str, float | str | None],
+    impact: ImpactResult,
+    *,
+    local: float | None = None,
+    plate_work: float | None = None,
+) -> ImpactWear:
     """The worn volume of ``impact`` by the wear ``law`` (one of :data:`LAWS`) with ``constants`` (the ``[wear]``
     table's keys plus the plate's ``hardness``). ``local``: the Eq. 15 volume (m³, :func:`local_volume`) where the law
     uses it; ``plate_work``: the FE plate's plastic dissipation (J), if the plate is the FE."""
@@ -229,8 +257,10 @@ def impact_wear(law: str, constants: Mapping[str, float | str | None], impact: I
     def deformation() -> float:
         (epsilon,) = _need(constants, law, "deformation_factor")
         if plate_work is None and impact.normal_model == "hertz":
-            raise ValueError(f"wear.law={law!r} needs the impact's plastic work: impact.normal_model='hertz' is "
-                             "elastic (no plastic work); use 'thornton' or the FE plate (fem.coupling)")  # fmt: skip
+            raise ValueError(
+                f"wear.law={law!r} needs the impact's plastic work: impact.normal_model='hertz' is "
+                "elastic (no plastic work); use 'thornton' or the FE plate (fem.coupling)"
+            )
         return float(deformation_volume(plastic_work_of(impact, plate_work), epsilon))
 
     if law in CUTTING_LAWS:
@@ -242,8 +272,9 @@ def impact_wear(law: str, constants: Mapping[str, float | str | None], impact: I
     density = impact.plate.density
     if law == "oka":
         (e90,) = _need(constants, law, "oka_e90")
-        ratio = oka_erosion_ratio(speed, angle, flow_pressure_of(constants, impact.plate), 2.0 * impact.radius, e90,
-                                  constants.get("oka_k2"))  # fmt: skip
+        ratio = oka_erosion_ratio(
+            speed, angle, flow_pressure_of(constants, impact.plate), 2.0 * impact.radius, e90, constants.get("oka_k2")
+        )
     else:
         K, n = _need(constants, law, "dnv_K", "dnv_n")
         ratio = dnv_erosion_ratio(speed, angle, K, n)
@@ -255,9 +286,18 @@ def impact_wear(law: str, constants: Mapping[str, float | str | None], impact: I
 _SHAPES = {"cutting": WearLaw(K=1.0, alpha=1.0, beta=1.0), "pressed": WearLaw(K=1.0, alpha=1.0, beta=0.0)}
 
 
-def wear_of_impact(law: str, constants: Mapping[str, float | str | None], local_law: WearLaw, impact: ImpactResult,
-                   pressure: PressureHistory, speed: SlidingSpeed, *, density: float, points_across: int,
-                   plate_work: float | None = None) -> tuple[WearMap, ImpactWear]:  # fmt: skip
+def wear_of_impact(
+    law: str,
+    constants: Mapping[str, float | str | None],
+    local_law: WearLaw,
+    impact: ImpactResult,
+    pressure: PressureHistory,
+    speed: SlidingSpeed,
+    *,
+    density: float,
+    points_across: int,
+    plate_work: float | None = None,
+) -> tuple[WearMap, ImpactWear]:
     """The depth map (m) and the volumes of ``impact`` worn by ``law`` (:func:`impact_wear`). The local law's map is
     Eq. 15 integrated over the moving patch (:func:`wear.integrate_wear` with ``local_law``); every other
     mechanism's volume is laid out like a unit local law: cutting along the sliding (α = β = 1), deformation and the
@@ -266,8 +306,9 @@ def wear_of_impact(law: str, constants: Mapping[str, float | str | None], local_
     local_map = None
     if cutting_law == "local":
         local_map = integrate_wear(pressure, speed, local_law, density=density, points_across=points_across)
-    wear = impact_wear(law, constants, impact, local=None if local_map is None else local_map.volume_m3,
-                       plate_work=plate_work)  # fmt: skip
+    wear = impact_wear(
+        law, constants, impact, local=None if local_map is None else local_map.volume_m3, plate_work=plate_work
+    )
     if law == "local":
         return local_map, wear
     if local_map is not None:
@@ -282,8 +323,9 @@ def wear_of_impact(law: str, constants: Mapping[str, float | str | None], local_
             continue
         if volume <= 0.0:
             continue
-        shape = integrate_wear(pressure, speed, _SHAPES["cutting" if part == "cutting" else "pressed"], density=density,
-                               on=grid)  # fmt: skip
+        shape = integrate_wear(
+            pressure, speed, _SHAPES["cutting" if part == "cutting" else "pressed"], density=density, on=grid
+        )
         if shape.volume_m3 <= 0.0:  # no sliding: the pressure shape
             shape = integrate_wear(pressure, speed, _SHAPES["pressed"], density=density, on=grid)
         depth += volume / shape.volume_m3 * shape.depth

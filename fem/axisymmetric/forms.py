@@ -105,8 +105,10 @@ def _surface_hats(mesh: MeshTri, surface_nodes: np.ndarray) -> tuple[sp.csr_matr
         length = float(np.hypot(*(mesh.p[:, ends[1]] - mesh.p[:, ends[0]])))
         (j0, r0), (j1, r1) = sorted((vertex_rows[e], mesh.p[0, e]) for e in ends)
         if j1 != j0 + 1:
-            raise ValueError(f"mesh surface: facet {node - nvert} joins vertices that are not neighbours in r (the "
-                             "surface must be a graph z(r), each facet between consecutive vertices)")  # fmt: skip
+            raise ValueError(
+                f"mesh surface: facet {node - nvert} joins vertices that are not neighbours in r (the "
+                "surface must be a graph z(r), each facet between consecutive vertices)"
+            )
         scale = 2.0 * np.pi * length / 12.0
         mass[1, j0] += scale * (3.0 * r0 + r1)
         mass[1, j1] += scale * (r0 + 3.0 * r1)

@@ -116,8 +116,14 @@ class IndentationRun:
             "regime": regime,
         }
 
-    def run(self, overlaps: np.ndarray, start: PlateState | None = None, keep: bool = False, times=None,
-            predictor: bool = False):  # fmt: skip
+    def run(
+        self,
+        overlaps: np.ndarray,
+        start: PlateState | None = None,
+        keep: bool = False,
+        times=None,
+        predictor: bool = False,
+    ):
         """States along ``overlaps`` (m) from ``start`` (None: the virgin plate). ``predictor`` (only with a
         ``start``): try each step as an elastic step (:class:`fem.axisymmetric.reload.SurfaceCompliance`) and keep it
         when its return mapping yields nowhere (then it is the FE solution, no Newton needed); else a Newton

@@ -57,9 +57,18 @@ class Plate:
     nowhere (it is then the FE solution without Newton iterations); else the Newton increment.
     """
 
-    def __init__(self, radius: float, plate: Material, max_overlap: float, ball: Material | None = None,
-                 mesh: MeshTri | None = None, hardening: float = 0.0, rtol: float = 1e-6,
-                 taper_depth: float | None = None, elastic_predictor: bool = True) -> None:  # fmt: skip
+    def __init__(
+        self,
+        radius: float,
+        plate: Material,
+        max_overlap: float,
+        ball: Material | None = None,
+        mesh: MeshTri | None = None,
+        hardening: float = 0.0,
+        rtol: float = 1e-6,
+        taper_depth: float | None = None,
+        elastic_predictor: bool = True,
+    ) -> None:
         self.radius = check_number("radius", radius, low=1e-6, high=10.0, units="m", what="ball radius")
         max_overlap = check_number("max_overlap", max_overlap, low=0.0, low_open=True, high=radius, units="m")
         hardening = check_number("hardening", hardening, low=0.0, high=1e12, units="Pa", what="hardening modulus")
@@ -88,8 +97,15 @@ class Plate:
         #: depth (m) over which the wear displacement of the vertices fades out (see the module docstring)
         self.taper_depth = 4.0 * float(facet_length.min())
         if taper_depth is not None:
-            given = check_number("taper_depth", taper_depth, low=0.0, low_open=True, high=-mesh.p[1].min(), units="m",
-                                 what="depth over which the wear displacement fades")  # fmt: skip
+            given = check_number(
+                "taper_depth",
+                taper_depth,
+                low=0.0,
+                low_open=True,
+                high=-mesh.p[1].min(),
+                units="m",
+                what="depth over which the wear displacement fades",
+            )
             self.taper_depth = max(self.taper_depth, given)
 
     # ---------------------------------------------------------------- geometry of the current surface
@@ -144,8 +160,14 @@ class Plate:
         self._before = (self.state, self.first_contact_overlap())
         return run.run(path, start=None if self._virgin else self.state, keep=True, predictor=self.elastic_predictor)
 
-    def unload(self, loading: IndentationResult, max_overlap: float, steps: int = 8, end: float | None = None,
-               commit: bool = True) -> IndentationResult:  # fmt: skip
+    def unload(
+        self,
+        loading: IndentationResult,
+        max_overlap: float,
+        steps: int = 8,
+        end: float | None = None,
+        commit: bool = True,
+    ) -> IndentationResult:
         """Unload ``loading`` (a :meth:`load` result) from ``max_overlap`` (m) in ``steps`` equal increments to
         ``end`` (m; default: the first-contact overlap before the loading, minus 5% of the unloading range), then
         further if the ball still touches. Restarts from the kept loading state just below ``max_overlap`` (the
@@ -154,8 +176,7 @@ class Plate:
         run = loading.run
         steps = int(check_number("steps", steps, low=1, high=10000))
         top = max(st.overlap for st in run.kept)
-        max_overlap = check_number("max_overlap", max_overlap, low=0.0, low_open=True, high=top * (1 + 1e-9),
-                                   units="m")  # fmt: skip
+        max_overlap = check_number("max_overlap", max_overlap, low=0.0, low_open=True, high=top * (1 + 1e-9), units="m")
         start = max((st for st in run.kept if st.overlap <= max_overlap * (1 + 1e-12)), key=lambda st: st.overlap)
         if end is None:
             first = self._before[1]
@@ -200,8 +221,7 @@ class Plate:
         points = p0.copy()
         points[1] -= total * np.clip(1.0 - below / self.taper_depth, 0.0, 1.0)
         mesh = replace(self.solver.disc.mesh, doflocs=points)
-        self.solver = PlateSolver(mesh, self.material, self.radius, self._force_scale, self._gap_scale,
-                                  rtol=self._rtol)  # fmt: skip
+        self.solver = PlateSolver(mesh, self.material, self.radius, self._force_scale, self._gap_scale, rtol=self._rtol)
         # the mesh's edges are straight, so a P2 mid-side node sits on the chord between its vertices: its contact
         # gap is measured to the worn surface at its own radius instead. The chord is off by h²W''/8 (0.3% of
         # a²/R for a pit 0.5 a²/R deep, 16 elements across a), enough to put a node-scale 19% spike on the

@@ -70,8 +70,10 @@ def candidate_nodes(solver, state: PlateState, top: float, widen: float = 1.3) -
     a finite plate may lift a little: a step that penetrates outside them is refused)."""
     r = solver.disc.surface_r
     reached = np.flatnonzero(solver.obstacle(top) - state.u[solver.surface_uz] <= 0.0)
-    reach = max(float(r[reached[-1]]) if reached.size else 0.0,
-                float(r[np.flatnonzero(state.active)[-1]]) if state.active.any() else 0.0)  # fmt: skip
+    reach = max(
+        float(r[reached[-1]]) if reached.size else 0.0,
+        float(r[np.flatnonzero(state.active)[-1]]) if state.active.any() else 0.0,
+    )
     if reach == 0.0:
         return np.zeros(0, int)
     return np.flatnonzero(r <= widen * reach)
@@ -88,8 +90,9 @@ class SurfaceCompliance:
         if cache is None:
             free = np.setdiff1d(np.arange(solver.disc.ndofs), solver.fixed_dofs)
             stiffness = solver.elastic_stiffness()[free][:, free].tocsc()
-            lu = spla.splu(stiffness, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
-                           options={"SymmetricMode": True})  # fmt: skip
+            lu = spla.splu(
+                stiffness, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True}
+            )
             cache = (free, lu, None)
         free, lu, cached = cache
         self.free = free
@@ -150,8 +153,10 @@ def elastic_reload(plate, overlaps, check_yield: bool = True) -> ElasticReload:
     for widen in (1.3, 2.0, 3.0):
         nodes = candidate_nodes(solver, state, top, widen)
         if nodes.size == 0:
-            raise ValueError(f"overlaps reach at most {top:.6g} m: the sphere does not touch the surface "
-                             f"(first contact at {plate.first_contact_overlap():.6g} m)")  # fmt: skip
+            raise ValueError(
+                f"overlaps reach at most {top:.6g} m: the sphere does not touch the surface "
+                f"(first contact at {plate.first_contact_overlap():.6g} m)"
+            )
         compliance = SurfaceCompliance(solver, nodes)
         steps = [compliance.step(state, start_reactions, overlap, check_yield) for overlap in path]
         if not any(s[4] for s in steps):
@@ -162,8 +167,9 @@ def elastic_reload(plate, overlaps, check_yield: bool = True) -> ElasticReload:
     for new, reactions, gap, _, _ in steps:
         force.append(float(reactions.sum()))
         radius.append(contact_radius(disc.surface_r, new.active, gap) if new.active.any() else 0.0)
-        pressure.append(pressure_from_reactions(disc.surface_hats, disc.surface_hat_mass, reactions, disc.surface_r,
-                                                radius[-1]))  # fmt: skip
+        pressure.append(
+            pressure_from_reactions(disc.surface_hats, disc.surface_hat_mass, reactions, disc.surface_r, radius[-1])
+        )
     increments = np.array([s[3] for s in steps])
     force, radius = np.array(force), np.array(radius)
     area = np.pi * radius**2

@@ -192,9 +192,18 @@ def join(first: IndentationResult, second: IndentationResult, below: float | Non
     def cat(name: str) -> np.ndarray:
         return np.concatenate([np.asarray(getattr(first, name))[:k], np.asarray(getattr(second, name))])
 
-    return replace(second, overlap=cat("overlap"), force=cat("force"), contact_radius=cat("contact_radius"),
-                   max_pressure=cat("max_pressure"), mean_pressure=cat("mean_pressure"),
-                   pressure=np.vstack([np.asarray(first.pressure)[:k], np.asarray(second.pressure)]), first_yield=fy,
-                   max_equivalent_plastic_strain=cat("max_equivalent_plastic_strain"),
-                   regime=list(first.regime[:k]) + list(second.regime), newton_iterations=cat("newton_iterations"),
-                   time=None, unloadings=[])  # fmt: skip
+    return replace(
+        second,
+        overlap=cat("overlap"),
+        force=cat("force"),
+        contact_radius=cat("contact_radius"),
+        max_pressure=cat("max_pressure"),
+        mean_pressure=cat("mean_pressure"),
+        pressure=np.vstack([np.asarray(first.pressure)[:k], np.asarray(second.pressure)]),
+        first_yield=fy,
+        max_equivalent_plastic_strain=cat("max_equivalent_plastic_strain"),
+        regime=list(first.regime[:k]) + list(second.regime),
+        newton_iterations=cat("newton_iterations"),
+        time=None,
+        unloadings=[],
+    )

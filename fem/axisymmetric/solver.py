@@ -296,8 +296,9 @@ class PlateSolver:
         floor = 0.1 * target / max(float(np.linalg.norm(rhs)), 1e-300)
         return max(min(max(eta, floor), 1e-2), self.cg_rtol)
 
-    def _line_search(self, start: PlateState, u: np.ndarray, step: np.ndarray, free_mask, residual: float,
-                     backtrack: bool):  # fmt: skip
+    def _line_search(
+        self, start: PlateState, u: np.ndarray, step: np.ndarray, free_mask, residual: float, backtrack: bool
+    ):
         """Full Newton step, unless (``backtrack``: the constraints already hold) it increases the free residual:
         then the best of the step halved up to four times. Guards the divergence when quadrature points of a
         perfectly plastic dent flip between reverse yield and elastic unloading, as when the last nodes leave;
@@ -336,9 +337,14 @@ class PlateSolver:
 
             M = spla.LinearOperator(K_mod.shape, matvec=self._lu.solve, dtype=float)
             x, info = spla.cg(
-                K_mod, rhs, x0=self._lu.solve(rhs), rtol=tolerance, maxiter=self.cg_max_iterations, M=M,
+                K_mod,
+                rhs,
+                x0=self._lu.solve(rhs),
+                rtol=tolerance,
+                maxiter=self.cg_max_iterations,
+                M=M,
                 callback=callback,
-            )  # fmt: skip
+            )
             self.stats.cg_iterations += count[0]
             if info == 0:
                 return x

@@ -36,9 +36,13 @@ class KeptFactor:
         self._data = np.zeros(0)
 
     def solve(
-        self, matrix: sp.csr_matrix, rhs: np.ndarray, tolerance: float, key: bytes,
+        self,
+        matrix: sp.csr_matrix,
+        rhs: np.ndarray,
+        tolerance: float,
+        key: bytes,
         coupling: Callable[[np.ndarray], np.ndarray] | None = None,
-    ) -> np.ndarray:  # fmt: skip
+    ) -> np.ndarray:
         """x with (matrix − coupling) x = rhs to a residual of ``tolerance`` (N): CG (GMRES with the nonsymmetric
         ``coupling``, a function of x) preconditioned with the kept factor when ``key`` (the constrained DOFs) is
         the kept one, else (or when the Krylov method is slow) on a new factor of ``matrix``. The factor of the

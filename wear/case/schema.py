@@ -61,12 +61,22 @@ class Key:
                 raise ValueError(f"{name}={fmt_value(value)} is not a string: {self.doc}")
             return value
         if self.type is int and (isinstance(value, bool) or not isinstance(value, (int, np.integer))):
-            raise ValueError(f"{name}={fmt_value(value)} is not an integer: {self.doc} must be an integer "
-                             f"{self.valid_range()}")  # fmt: skip
+            raise ValueError(
+                f"{name}={fmt_value(value)} is not an integer: {self.doc} must be an integer {self.valid_range()}"
+            )
         if self.inf_is_absent and isinstance(value, (int, float)) and value == math.inf:
             return None
-        x = check_number(name, value, low=self.low, high=self.high, low_open=self.low_open, high_open=self.high_open,
-                         units=self.units, what=self.doc, allow_inf=self.allow_inf)  # fmt: skip
+        x = check_number(
+            name,
+            value,
+            low=self.low,
+            high=self.high,
+            low_open=self.low_open,
+            high_open=self.high_open,
+            units=self.units,
+            what=self.doc,
+            allow_inf=self.allow_inf,
+        )
         return int(x) if self.type is int else x
 
     def valid_range(self) -> str:

@@ -25,9 +25,23 @@ from wear.law import WearLaw
 from wear.laws import CUTTING_LAWS, LAWS
 from wear.pressure import PRESSURE_SOURCES, SPEED_MODELS
 
-__all__ = ["BallSpec", "PlateSpec", "ImpactSpec", "WearSpec", "FemSpec", "OutputSpec", "ErosionSpec", "RepeatSpec",
-           "CalibrationSpec",
-           "Case", "COUPLINGS", "FEM_MODELS", "NORMAL_MODELS", "TANGENTIAL_MODELS", "SCHEMES"]  # fmt: skip
+__all__ = [
+    "BallSpec",
+    "PlateSpec",
+    "ImpactSpec",
+    "WearSpec",
+    "FemSpec",
+    "OutputSpec",
+    "ErosionSpec",
+    "RepeatSpec",
+    "CalibrationSpec",
+    "Case",
+    "COUPLINGS",
+    "FEM_MODELS",
+    "NORMAL_MODELS",
+    "TANGENTIAL_MODELS",
+    "SCHEMES",
+]
 
 COUPLINGS = ("two-way", "one-way", "none")
 #: The FE plate models: the axisymmetric (r, z) frictionless plate, or the 3-D half plate with Coulomb friction.
@@ -85,8 +99,16 @@ class PlateSpec(_MaterialTable):
     nu: float = key(float, 0.34, "Poisson's ratio", **_NU)
     density: float = key(float, 4430.0, "density", "kg/m^3", **_DENSITY)
     yield_strength: float | None = key(float, 8.8e8, "yield strength", "Pa", **_YIELD)
-    hardness: float | None = key(float, None, "hardness: plastic flow pressure (Finnie) and Vickers hardness (Oka)",
-                                 "Pa", low=1e6, high=1e11, optional=True, absent="3 x yield strength")  # fmt: skip
+    hardness: float | None = key(
+        float,
+        None,
+        "hardness: plastic flow pressure (Finnie) and Vickers hardness (Oka)",
+        "Pa",
+        low=1e6,
+        high=1e11,
+        optional=True,
+        absent="3 x yield strength",
+    )
     name: str = key(str, "Ti-6Al-4V", "label of the plate material")
 
     def material(self) -> Material:
@@ -104,16 +126,27 @@ class ImpactSpec(Table):
     speed: float = key(float, 3.0, "impact speed", "m/s", low=0.0, low_open=True, high=1000.0)
     angle: float = key(float, 30.0, "impact angle from the plate normal", "deg", low=0.0, high=90.0, high_open=True)
     friction: float = key(float, 0.3, "Coulomb friction coefficient", low=0.0, high=10.0)
-    restitution: float = key(float, 1.0, "normal restitution setting the Hertz dashpot", low=0.0, low_open=True,
-                             high=1.0)  # fmt: skip
-    normal_model: str = key(str, "thornton", "normal force law (without FE coupling; else the first estimate)",
-                            choices=NORMAL_MODELS)  # fmt: skip
+    restitution: float = key(
+        float, 1.0, "normal restitution setting the Hertz dashpot", low=0.0, low_open=True, high=1.0
+    )
+    normal_model: str = key(
+        str, "thornton", "normal force law (without FE coupling; else the first estimate)", choices=NORMAL_MODELS
+    )
     tangential_model: str = key(str, "hdd", "tangential force law", choices=TANGENTIAL_MODELS)
-    limiting_pressure: float | None = key(float, None, "Thornton limiting pressure", "Pa", low=1e3, high=1e12,
-                                          optional=True, absent="C(nu)*Y of the body that yields first")  # fmt: skip
+    limiting_pressure: float | None = key(
+        float,
+        None,
+        "Thornton limiting pressure",
+        "Pa",
+        low=1e3,
+        high=1e12,
+        optional=True,
+        absent="C(nu)*Y of the body that yields first",
+    )
     scheme: str = key(str, "verlet", "time integration scheme", choices=SCHEMES)
-    time_step: float | None = key(float, None, "time step", "s", low=0.0, low_open=True, optional=True,
-                                  absent="Hertz contact time / 2000")  # fmt: skip
+    time_step: float | None = key(
+        float, None, "time step", "s", low=0.0, low_open=True, optional=True, absent="Hertz contact time / 2000"
+    )
 
 
 @dataclass(frozen=True)
@@ -127,35 +160,54 @@ class WearSpec(Table):
 
     table: ClassVar[str] = "wear"
     law: str = key(str, "local", "wear law (wear.laws)", choices=tuple(LAWS))
-    K: float = key(float, 1e-11, "wear coefficient of Eq. 15", "m^(1-beta) s^(beta-1) Pa^(-alpha)", low=0.0,
-                   high=1e-3)  # fmt: skip
+    K: float = key(float, 1e-11, "wear coefficient of Eq. 15", "m^(1-beta) s^(beta-1) Pa^(-alpha)", low=0.0, high=1e-3)
     alpha: float = key(float, 1.0, "pressure exponent of Eq. 15", low=0.0, high=4.0)
     beta: float = key(float, 0.3, "sliding-speed exponent of Eq. 15", low=0.0, high=4.0)
     pressure: str = key(str, "fe", "contact pressure source", choices=PRESSURE_SOURCES)
     speed: str = key(str, "sliding", "sliding speed of the contact points", choices=SPEED_MODELS)
     points_across: int = key(int, 64, "wear grid points across the largest contact diameter", low=40, high=2000)
     cutting: str = key(str, "local", "the cutting law of the combined law", choices=CUTTING_LAWS)
-    cutting_fraction: float = key(float, 0.5, "Finnie's fraction of particles cutting ideally, c", low=0.0,
-                                  low_open=True, high=10.0)  # fmt: skip
-    force_ratio: float = key(float, 2.0, "Finnie's ratio of vertical to horizontal force on the particle, K", low=0.1,
-                             high=20.0)  # fmt: skip
+    cutting_fraction: float = key(
+        float, 0.5, "Finnie's fraction of particles cutting ideally, c", low=0.0, low_open=True, high=10.0
+    )
+    force_ratio: float = key(
+        float, 2.0, "Finnie's ratio of vertical to horizontal force on the particle, K", low=0.1, high=20.0
+    )
     depth_ratio: float = key(float, 2.0, "Finnie's ratio of contact depth to cut depth, psi", low=0.1, high=20.0)
-    deformation_factor: float | None = key(float, None, "Bitter's deformation wear factor epsilon", "J/m^3", low=1e3,
-                                           high=1e15, optional=True,
-                                           absent="none: the deformation and combined laws need it")  # fmt: skip
-    oka_e90: float = key(float, 6.154e-4, "Oka's erosion ratio at normal incidence, 104 m/s, 326 um", "kg/kg",
-                         low=0.0, low_open=True, high=1.0)  # fmt: skip
-    oka_k2: float | None = key(float, None, "Oka's speed exponent", low=0.5, high=5.0, optional=True,
-                               absent="2.3 Hv^0.038")  # fmt: skip
-    dnv_K: float = key(float, 2e-9, "DNV-RP-O501 material constant K", "(kg/kg) (m/s)^-n", low=0.0, low_open=True,
-                       high=1.0)  # fmt: skip
+    deformation_factor: float | None = key(
+        float,
+        None,
+        "Bitter's deformation wear factor epsilon",
+        "J/m^3",
+        low=1e3,
+        high=1e15,
+        optional=True,
+        absent="none: the deformation and combined laws need it",
+    )
+    oka_e90: float = key(
+        float,
+        6.154e-4,
+        "Oka's erosion ratio at normal incidence, 104 m/s, 326 um",
+        "kg/kg",
+        low=0.0,
+        low_open=True,
+        high=1.0,
+    )
+    oka_k2: float | None = key(
+        float, None, "Oka's speed exponent", low=0.5, high=5.0, optional=True, absent="2.3 Hv^0.038"
+    )
+    dnv_K: float = key(
+        float, 2e-9, "DNV-RP-O501 material constant K", "(kg/kg) (m/s)^-n", low=0.0, low_open=True, high=1.0
+    )
     dnv_n: float = key(float, 2.6, "DNV-RP-O501 speed exponent n", low=0.5, high=5.0)
 
     def check(self) -> None:
         self.wear_law()
         if self.law in ("deformation", "combined") and self.deformation_factor is None:
-            raise ValueError(f"wear.deformation_factor=None: wear.law={self.law!r} needs Bitter's deformation wear "
-                             "factor epsilon (J/m^3)")  # fmt: skip
+            raise ValueError(
+                f"wear.deformation_factor=None: wear.law={self.law!r} needs Bitter's deformation wear "
+                "factor epsilon (J/m^3)"
+            )
 
     def wear_law(self) -> WearLaw:
         """The local law's :class:`wear.WearLaw` (Eq. 15) of this table."""
@@ -177,16 +229,19 @@ class FemSpec(Table):
 
     table: ClassVar[str] = "fem"
     coupling: str = key(str, "two-way", "impact-FE coupling (two-way = the FE normal law)", choices=COUPLINGS)
-    tolerance: float = key(float, 0.005, "coupling tolerance on the max overlap change (relative)", low=1e-6,
-                           high=0.2)  # fmt: skip
+    tolerance: float = key(float, 0.005, "coupling tolerance on the max overlap change (relative)", low=1e-6, high=0.2)
     max_iterations: int = key(int, 8, "most impact runs of the coupling", low=2, high=50)
     load_steps: int = key(int, 16, "FE increments of the loading", low=2, high=2000)
     unload_steps: int = key(int, 8, "FE increments of the unloading", low=1, high=2000)
     overshoot: float = key(float, 0.1, "FE loading past the estimated max overlap (relative)", low=0.02, high=2.0)
     mesh_scale: float = key(float, 2.0, "FE element size factor (> 1 coarser)", low=0.25, high=8.0)
-    model: str = key(str, "axisymmetric", "FE plate: axisymmetric (r, z), or 3d (impactwear run only: half block, "
-                     "Coulomb friction; its impact runs on the plate's tangential law, mindlin_deresiewicz)",
-                     choices=FEM_MODELS)  # fmt: skip
+    model: str = key(
+        str,
+        "axisymmetric",
+        "FE plate: axisymmetric (r, z), or 3d (impactwear run only: half block, "
+        "Coulomb friction; its impact runs on the plate's tangential law, mindlin_deresiewicz)",
+        choices=FEM_MODELS,
+    )
     solid_iterations: int = key(int, 3, "most 3-D plate cycles of the 3-D coupling", low=1, high=20)
     solid_load_steps: int = key(int, 10, "3-D plate increments of the loading", low=2, high=200)
     solid_unload_steps: int = key(int, 6, "3-D plate increments of the unloading", low=1, high=200)
@@ -201,8 +256,9 @@ class OutputSpec(Table):
     figures: bool = key(bool, True, "write the PNG figures")
     render: bool = key(bool, True, "write the rendered 3-D view (needs EGL or OSMesa)")
     plate_mesh: str = key(str, "", 'meshio plate block to deform instead of the generated one ("": generate)')
-    block_thickness: float = key(float, 2e-3, "thickness of the generated plate block", "m", low=0.0,
-                                 low_open=True, high=1.0)  # fmt: skip
+    block_thickness: float = key(
+        float, 2e-3, "thickness of the generated plate block", "m", low=0.0, low_open=True, high=1.0
+    )
 
     def check(self) -> None:
         if self.plate_mesh and not os.path.isfile(self.plate_mesh):
@@ -216,33 +272,60 @@ class ErosionSpec(Table):
     response table's resolution, the seed and the outputs' sampling."""
 
     table: ClassVar[str] = "erosion"
-    concentration: float | None = key(float, None, "particle mass concentration of the stream (or give mass_flux)",
-                                      "kg/m^3", low=0.0, low_open=True, optional=True,
-                                      absent=f"{DEFAULT_CONCENTRATION:g} kg/m^3 unless mass_flux is given")  # fmt: skip
-    mass_flux: float | None = key(float, None, "mass flux through a plane normal to the stream (or give "
-                                  "concentration)", "kg/(m^2 s)", low=0.0, low_open=True, optional=True,
-                                  absent="from concentration")  # fmt: skip
+    concentration: float | None = key(
+        float,
+        None,
+        "particle mass concentration of the stream (or give mass_flux)",
+        "kg/m^3",
+        low=0.0,
+        low_open=True,
+        optional=True,
+        absent=f"{DEFAULT_CONCENTRATION:g} kg/m^3 unless mass_flux is given",
+    )
+    mass_flux: float | None = key(
+        float,
+        None,
+        "mass flux through a plane normal to the stream (or give concentration)",
+        "kg/(m^2 s)",
+        low=0.0,
+        low_open=True,
+        optional=True,
+        absent="from concentration",
+    )
     exposure_time: float = key(float, 3120.0, "exposure time", "s", low=0.0, low_open=True, high=1e10)
-    azimuth: float = key(float, 0.0, "stream direction in the patch, from the grid x axis", "deg", low=-360.0,
-                         high=360.0)  # fmt: skip
+    azimuth: float = key(
+        float, 0.0, "stream direction in the patch, from the grid x axis", "deg", low=-360.0, high=360.0
+    )
     # 2048 at most: the default erode case on 2048² nodes runs in 2.4 min (1.4 GB, 1.4 GB of outputs); on 4096² it
     # did not finish in 25 min (4.9 GB, ~6 GB of outputs written), on 8192² it reached 4.7 GB and did not finish
     grid: int = key(int, 512, "grid nodes per side of the patch", low=16, high=2048)
-    patch_size: float | None = key(float, None, "side of the periodic patch", "m", low=0.0, low_open=True, high=10.0,
-                                   optional=True, absent="grid x contact radius / 4")  # fmt: skip
+    patch_size: float | None = key(
+        float,
+        None,
+        "side of the periodic patch",
+        "m",
+        low=0.0,
+        low_open=True,
+        high=10.0,
+        optional=True,
+        absent="grid x contact radius / 4",
+    )
     seed: int = key(int, 0, "random seed of the impact points", low=0, high=2**63 - 1)
     frames: int = key(int, 10, "surfaces saved in the .pvd series", low=1, high=1000)
     samples: int = key(int, 100, "rows of the mass-loss time series", low=1, high=100000)
-    angle_margin: float = key(float, 20.0, "response table: local angles covered around the stream angle", "deg",
-                              low=0.0, high=45.0)  # fmt: skip
+    angle_margin: float = key(
+        float, 20.0, "response table: local angles covered around the stream angle", "deg", low=0.0, high=45.0
+    )
     angle_step: float = key(float, 2.5, "response table: local angle step", "deg", low=0.1, high=15.0)
     table_speeds: int = key(int, 5, "response table: number of normal speeds", low=2, high=50)
     points_per_length: int = key(int, 12, "response table: footprint points per contact radius", low=4, high=64)
 
     def check(self) -> None:
         if self.concentration is not None and self.mass_flux is not None:
-            raise ValueError(f"erosion.concentration={self.concentration:g} and erosion.mass_flux={self.mass_flux:g} "
-                             "are both given: the stream's supply is one of them (kg/m^3 or kg/(m^2 s))")  # fmt: skip
+            raise ValueError(
+                f"erosion.concentration={self.concentration:g} and erosion.mass_flux={self.mass_flux:g} "
+                "are both given: the stream's supply is one of them (kg/m^3 or kg/(m^2 s))"
+            )
 
     def supply(self) -> dict[str, float]:
         """The stream's supply: ``{"mass_flux": q}`` (kg m⁻² s⁻¹) or ``{"concentration": c}`` (kg/m³)."""
@@ -265,17 +348,38 @@ class RepeatSpec(Table):
     table: ClassVar[str] = "repeat"
     impacts: int = key(int, 100, "number of impacts at the site", low=1, high=1e9)
     geometry_update: bool = key(bool, True, "the wear of each impact moves the FE surface nodes")
-    shakedown_tolerance: float = key(float, 1e-3, "largest plastic strain increment of a shaken-down impact, over "
-                                     "Y/E", low=0.0, low_open=True, high=1.0)  # fmt: skip
-    surface_fraction: float = key(float, 0.1, "surface change per cycle-jump block, fraction of the impact's approach"
-                                  " (max overlap from first contact)", low=0.0, low_open=True, high=1.0)  # fmt: skip
-    max_plastic_impacts: int = key(int, 20, "impacts computed one by one before blocks go on without shakedown",
-                                   low=1, high=100000)  # fmt: skip
+    shakedown_tolerance: float = key(
+        float,
+        1e-3,
+        "largest plastic strain increment of a shaken-down impact, over Y/E",
+        low=0.0,
+        low_open=True,
+        high=1.0,
+    )
+    surface_fraction: float = key(
+        float,
+        0.1,
+        "surface change per cycle-jump block, fraction of the impact's approach (max overlap from first contact)",
+        low=0.0,
+        low_open=True,
+        high=1.0,
+    )
+    max_plastic_impacts: int = key(
+        int, 20, "impacts computed one by one before blocks go on without shakedown", low=1, high=100000
+    )
     save_every: int = key(int, 1, "save the FE mesh of every k-th computed impact (0 = none)", low=0, high=1e9)
-    wear_smoothing: float = key(float, 0.1, "width of the filter of the wear profile on the FE surface, fraction of "
-                                "the contact radius (0 = off)", low=0.0, high=1.0)  # fmt: skip
-    elastic_after_shakedown: bool = key(bool, True, "after a shaken-down impact, solve the next on the plate's "
-                                        "elastic response unless its elastic field yields")  # fmt: skip
+    wear_smoothing: float = key(
+        float,
+        0.1,
+        "width of the filter of the wear profile on the FE surface, fraction of the contact radius (0 = off)",
+        low=0.0,
+        high=1.0,
+    )
+    elastic_after_shakedown: bool = key(
+        bool,
+        True,
+        "after a shaken-down impact, solve the next on the plate's elastic response unless its elastic field yields",
+    )
 
 
 @dataclass(frozen=True)
@@ -333,8 +437,9 @@ class Case:
             return
         ball, plate, radius = self.ball.material(), self.plate.material(), self.ball.radius
         normal_speed, _ = speed_components(self.impact.speed, self.impact.angle)
-        contact_time = hertz_impact(sphere_mass(radius, ball.density), radius, effective_modulus(ball, plate),
-                                    normal_speed).contact_time  # fmt: skip
+        contact_time = hertz_impact(
+            sphere_mass(radius, ball.density), radius, effective_modulus(ball, plate), normal_speed
+        ).contact_time
         if math.isfinite(contact_time) and contact_time > 0.0:
             check_time_step(self.impact.time_step, contact_time, histories=histories, name="impact.time_step")
 
@@ -378,10 +483,20 @@ class Case:
         ``[impact]`` (``overrides`` replace some; with ``history``/``histories`` the time step is checked for the
         memory of the histories, :meth:`check_time_step`)."""
         imp = self.impact
-        args = dict(radius=self.ball.radius, ball=self.ball.material(), plate=self.plate.material(), speed=imp.speed,
-                    angle=imp.angle, friction=imp.friction, restitution=imp.restitution,
-                    normal_model=imp.normal_model, tangential_model=imp.tangential_model,
-                    limiting_pressure=imp.limiting_pressure, scheme=imp.scheme, time_step=imp.time_step)  # fmt: skip
+        args = dict(
+            radius=self.ball.radius,
+            ball=self.ball.material(),
+            plate=self.plate.material(),
+            speed=imp.speed,
+            angle=imp.angle,
+            friction=imp.friction,
+            restitution=imp.restitution,
+            normal_model=imp.normal_model,
+            tangential_model=imp.tangential_model,
+            limiting_pressure=imp.limiting_pressure,
+            scheme=imp.scheme,
+            time_step=imp.time_step,
+        )
         args.update(overrides)
         if args.get("history") or args.get("histories"):
             self.check_time_step(histories=True)

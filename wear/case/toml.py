@@ -126,11 +126,16 @@ def key_reference() -> str:
     for name, table in TABLES.items():
         for k, spec in table.keys().items():
             run = defaults["run"][name][k]
-            other = [f"{job}: {_shown(v[name][k], spec)}" for job, v in defaults.items()
-                     if name in JOBS[job].tables and v[name][k] != run]  # fmt: skip
+            other = [
+                f"{job}: {_shown(v[name][k], spec)}"
+                for job, v in defaults.items()
+                if name in JOBS[job].tables and v[name][k] != run
+            ]
             doc = spec.doc + (f" (absent: {spec.absent})" if spec.optional else "")
-            rows.append(f"| `{name}.{k}` | {_shown(run, spec)} | {spec.valid_range().replace('|', '/')} | {doc} | "
-                        f"{'; '.join(other)} |")  # fmt: skip
+            rows.append(
+                f"| `{name}.{k}` | {_shown(run, spec)} | {spec.valid_range().replace('|', '/')} | {doc} | "
+                f"{'; '.join(other)} |"
+            )
     return "\n".join(rows)
 
 

@@ -7,5 +7,13 @@ from wear.chain.repeat import RepeatResult, repeat
 from wear.chain.restitution import RestitutionSweep, restitution_sweep
 from wear.chain.single import RunResult, run
 
-__all__ = ["IndentRun", "RepeatResult", "RestitutionSweep", "RunResult", "indent_case", "repeat",
-           "restitution_sweep", "run"]  # fmt: skip
+__all__ = [
+    "IndentRun",
+    "RepeatResult",
+    "RestitutionSweep",
+    "RunResult",
+    "indent_case",
+    "repeat",
+    "restitution_sweep",
+    "run",
+]

@@ -36,8 +36,15 @@ from wear.law import WearLaw
 from wear.laws import flow_pressure_of, impact_wear, local_volume, oka_exponents, pressed_area
 from wear.pressure import PressureHistory, SlidingSpeed, pressure_history, sliding_speed
 
-__all__ = ["QUANTITIES", "CalibrationData", "CalibrationResult", "ForwardModel", "calibrate", "law_constants",
-           "read_data"]  # fmt: skip
+__all__ = [
+    "QUANTITIES",
+    "CalibrationData",
+    "CalibrationResult",
+    "ForwardModel",
+    "calibrate",
+    "law_constants",
+    "read_data",
+]
 
 #: Measured quantities a data file may hold (column name → what it is).
 QUANTITIES = {
@@ -54,8 +61,13 @@ _CONSTANTS = {
     "dnv": ("dnv_K", "dnv_n"),
 }
 #: The constant fitted when none is named: each law's scale.
-_SCALE = {"local": "K", "finnie": "cutting_fraction", "deformation": "deformation_factor", "oka": "oka_e90",
-          "dnv": "dnv_K"}  # fmt: skip
+_SCALE = {
+    "local": "K",
+    "finnie": "cutting_fraction",
+    "deformation": "deformation_factor",
+    "oka": "oka_e90",
+    "dnv": "dnv_K",
+}
 #: Constants fitted in log coordinates (positive scales); the others (exponents) as they are.
 _LOG = {"K", "cutting_fraction", "force_ratio", "depth_ratio", "deformation_factor", "oka_e90", "dnv_K"}
 
@@ -112,17 +124,23 @@ def read_data(path: str | os.PathLike) -> CalibrationData:
     measured = [h for h in header if h in QUANTITIES]
     for need in ("angle_deg", "speed_m_s"):
         if need not in header:
-            raise ValueError(f"column {need!r} is missing from data={str(p)!r}: the columns are angle_deg, speed_m_s, "
-                             f"one of {', '.join(QUANTITIES)} and optional case keys (table.key)")  # fmt: skip
+            raise ValueError(
+                f"column {need!r} is missing from data={str(p)!r}: the columns are angle_deg, speed_m_s, "
+                f"one of {', '.join(QUANTITIES)} and optional case keys (table.key)"
+            )
     if len(measured) != 1:
-        raise ValueError(f"data={str(p)!r} has {len(measured)} measured columns {measured}: give exactly one of "
-                         f"{', '.join(QUANTITIES)}")  # fmt: skip
+        raise ValueError(
+            f"data={str(p)!r} has {len(measured)} measured columns {measured}: give exactly one of "
+            f"{', '.join(QUANTITIES)}"
+        )
     keys = [h for h in header if h not in ("angle_deg", "speed_m_s", measured[0])]
     for k in keys:
         table, _, name = k.partition(".")
         if table not in TABLES or name not in TABLES[table].keys():
-            raise ValueError(f"column {k!r} of data={str(p)!r} is not a case key (table.key, e.g. ball.radius) nor "
-                             f"angle_deg, speed_m_s or a measured quantity")  # fmt: skip
+            raise ValueError(
+                f"column {k!r} of data={str(p)!r} is not a case key (table.key, e.g. ball.radius) nor "
+                f"angle_deg, speed_m_s or a measured quantity"
+            )
         if TABLES[table].keys()[name].type not in (int, float):
             raise ValueError(f"column {k!r} of data={str(p)!r} is not a numeric case key")
     if not body:
@@ -135,8 +153,9 @@ def read_data(path: str | os.PathLike) -> CalibrationData:
         cells = dict(zip(header, (c.strip() for c in row), strict=True))
         a = _number(cells["angle_deg"], "angle_deg", i)
         if not 0.0 <= a < 90.0:
-            raise ValueError(f"angle_deg={a:g} in row {i} is out of range: the angle from the normal must be in "
-                             "[0, 90) deg")  # fmt: skip
+            raise ValueError(
+                f"angle_deg={a:g} in row {i} is out of range: the angle from the normal must be in [0, 90) deg"
+            )
         v = _number(cells["speed_m_s"], "speed_m_s", i)
         if not 0.0 < v <= 1000.0:
             raise ValueError(f"speed_m_s={v:g} in row {i} is out of range: must be in (0, 1000] m/s")
@@ -146,15 +165,23 @@ def read_data(path: str | os.PathLike) -> CalibrationData:
         else:
             m = _number(text, measured[0], i)
             if m <= 0.0:
-                raise ValueError(f"{measured[0]}={m:g} in row {i} is out of range: must be > 0 (its log is fitted); "
-                                 "leave it empty to predict the row")  # fmt: skip
+                raise ValueError(
+                    f"{measured[0]}={m:g} in row {i} is out of range: must be > 0 (its log is fitted); "
+                    "leave it empty to predict the row"
+                )
         angle.append(a)
         speed.append(v)
         value.append(m)
         for k in keys:
             extra[k].append(_number(cells[k], k, i))
-    data = CalibrationData(np.array(angle), np.array(speed), measured[0], np.array(value),
-                           {k: np.array(v) for k, v in extra.items()}, str(p))  # fmt: skip
+    data = CalibrationData(
+        np.array(angle),
+        np.array(speed),
+        measured[0],
+        np.array(value),
+        {k: np.array(v) for k, v in extra.items()},
+        str(p),
+    )
     if not data.fitted.any():
         raise ValueError(f"{measured[0]} is empty in every row of data={str(p)!r}: no measured row to fit")
     return data
@@ -201,8 +228,11 @@ class ForwardModel:
                 ph = pressure_history(impact, c.wear.pressure, fe=table, limiting_pressure=c.impact.limiting_pressure)
                 sp = sliding_speed(impact, c.wear.speed)
             density = c.plate.material().density
-            per_volume = {"volume_per_impact_m3": 1.0, "mass_per_impact_kg": density,
-                          "erosion_kg_per_kg": density / sphere_mass(c.ball.radius, c.ball.density)}  # fmt: skip
+            per_volume = {
+                "volume_per_impact_m3": 1.0,
+                "mass_per_impact_kg": density,
+                "erosion_kg_per_kg": density / sphere_mass(c.ball.radius, c.ball.density),
+            }
             rows.append(_Row(impact, ph, sp, work, per_volume[data.quantity]))
         self.rows = rows
         self.constants = [wear_constants(c) for c in cases]
@@ -215,8 +245,11 @@ class ForwardModel:
             groups.setdefault(c.with_(impact={"speed": 1.0, "angle": 0.0}), []).append(i)
         out: list = [None] * len(cases)
         for key, idx in groups.items():
-            kw = estimate_arguments(key, speed=np.array([cases[i].impact.speed for i in idx]),
-                                    angle=np.array([cases[i].impact.angle for i in idx]))  # fmt: skip
+            kw = estimate_arguments(
+                key,
+                speed=np.array([cases[i].impact.speed for i in idx]),
+                angle=np.array([cases[i].impact.angle for i in idx]),
+            )
             batch = simulate_impacts(**kw, histories=True)
             for k, i in enumerate(idx):
                 out[i] = (batch[k], None, None)
@@ -304,7 +337,7 @@ class CalibrationResult:
                 f"{self.data.speed[i]:g} m/s): the law predicts no wear there; "
                 "left out of the fit"
                 for i in self.left_out
-            ],  # fmt: skip
+            ],
             "rms_log_error": f.rms_log_error,
             "residual_degrees_of_freedom": f.dof,
             "correlations": {"names": list(f.names), "matrix": f.correlations.tolist()},
@@ -327,14 +360,18 @@ def calibrate(case: Case, data: CalibrationData, free: tuple[str, ...] | None = 
     free = tuple(default if not free else free)
     for name in free:
         if name not in allowed:
-            raise ValueError(f"--free {name!r} is not a constant of wear.law={case.wear.law!r}: its constants are "
-                             f"{', '.join(allowed)}")  # fmt: skip
+            raise ValueError(
+                f"--free {name!r} is not a constant of wear.law={case.wear.law!r}: its constants are "
+                f"{', '.join(allowed)}"
+            )
     if len(set(free)) != len(free):
         raise ValueError(f"--free {','.join(free)} names a constant twice")
     n_fit = int(data.fitted.sum())
     if n_fit < len(free):
-        raise ValueError(f"data has {n_fit} measured rows for {len(free)} free constants ({', '.join(free)}): give "
-                         "at least as many rows as constants")  # fmt: skip
+        raise ValueError(
+            f"data has {n_fit} measured rows for {len(free)} free constants ({', '.join(free)}): give "
+            "at least as many rows as constants"
+        )
     t0 = time.perf_counter()
     model = ForwardModel(case, data)
     t1 = time.perf_counter()
@@ -353,12 +390,22 @@ def calibrate(case: Case, data: CalibrationData, free: tuple[str, ...] | None = 
     left_out = tuple(int(i) for i in fitted if at_start[i] <= 1e-12 * at_start[fitted].max(initial=0.0))
     rows = np.array([i for i in fitted if i not in left_out], dtype=int)
     if rows.size < len(free):
-        raise ValueError(f"wear.law={case.wear.law!r} predicts no wear at {len(left_out)} of the {n_fit} measured rows "
-                         "(e.g. no sliding at normal incidence): too few rows left to fit")  # fmt: skip
+        raise ValueError(
+            f"wear.law={case.wear.law!r} predicts no wear at {len(left_out)} of the {n_fit} measured rows "
+            "(e.g. no sliding at normal incidence): too few rows left to fit"
+        )
     constants = [_constant(name, start[name]) for name in free]
     result = log_fit(lambda v: model.predict(v)[rows], data.measured[rows], constants)
     t2 = time.perf_counter()
     fitted_case = case.with_(wear=result.as_dict())
     predicted = model.predict(result.as_dict())
-    return CalibrationResult(fitted_case, data, result, start, predicted, left_out,
-                             {"impacts": t1 - t0, "fit": t2 - t1}, result.evaluations / max(t2 - t1, 1e-9))  # fmt: skip
+    return CalibrationResult(
+        fitted_case,
+        data,
+        result,
+        start,
+        predicted,
+        left_out,
+        {"impacts": t1 - t0, "fit": t2 - t1},
+        result.evaluations / max(t2 - t1, 1e-9),
+    )

@@ -48,8 +48,9 @@ def halfspace_check(result, cells: int = 192) -> dict:
     def met(rho):
         return surface_profile(r, dent_depth + wear_depth, rho)
 
-    solution, _ = sphere_on_axisymmetric_surface(plate.radius, met, last.max_force, plate.effective_modulus,
-                                                 2.5 * last.contact_radius, cells)  # fmt: skip
+    solution, _ = sphere_on_axisymmetric_surface(
+        plate.radius, met, last.max_force, plate.effective_modulus, 2.5 * last.contact_radius, cells
+    )
     return {
         "impact": last.first,
         # the check holds for an elastic (shaken-down) impact; with new plastic strain the FE pressure is capped by

@@ -79,8 +79,9 @@ class LogFit:
         return dict(zip(self.names, self.values, strict=True))
 
 
-def log_fit(predict: Callable[[dict[str, float]], np.ndarray], measured: np.ndarray,
-            constants: list[Constant]) -> LogFit:  # fmt: skip
+def log_fit(
+    predict: Callable[[dict[str, float]], np.ndarray], measured: np.ndarray, constants: list[Constant]
+) -> LogFit:
     """Fit ``constants`` so that ``predict(values)`` (positive, one per measured row) matches ``measured``
     (positive) in the log (see the module docstring)."""
     measured = np.asarray(measured, float)
@@ -99,8 +100,9 @@ def log_fit(predict: Callable[[dict[str, float]], np.ndarray], measured: np.ndar
     low, high = (np.array(b) for b in zip(*(c.bounds() for c in constants), strict=True))
     inside = 1e-9 * (1.0 + np.abs(np.where(np.isfinite(low), low, 0.0)))
     x0 = np.clip(x0, np.where(np.isfinite(low), low + inside, low), np.where(np.isfinite(high), high - inside, high))
-    solution = least_squares(residuals, x0, bounds=(low, high), method="trf", xtol=1e-12,
-                             ftol=1e-12, gtol=1e-12, max_nfev=2000)  # fmt: skip
+    solution = least_squares(
+        residuals, x0, bounds=(low, high), method="trf", xtol=1e-12, ftol=1e-12, gtol=1e-12, max_nfev=2000
+    )
     r = solution.fun
     n, p = r.size, len(constants)
     dof = n - p
@@ -112,8 +114,10 @@ def log_fit(predict: Callable[[dict[str, float]], np.ndarray], measured: np.ndar
     statements = []
     for v in null:
         names = [constants[k].name for k in range(p) if abs(v[k]) > LOADING]
-        statements.append(f"the data cannot determine {' and '.join(names)} separately: the residuals do not change "
-                          f"along a combination of them (e.g. a speed exponent from a single speed)")  # fmt: skip
+        statements.append(
+            f"the data cannot determine {' and '.join(names)} separately: the residuals do not change "
+            f"along a combination of them (e.g. a speed exponent from a single speed)"
+        )
     s2 = float(r @ r / dof) if dof > 0 else math.nan
     if dof <= 0:
         statements.append(f"{n} rows for {p} constants: no residual degree of freedom, no interval")

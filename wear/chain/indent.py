@@ -66,16 +66,17 @@ class IndentRun:
             "regime_at_max": res.regime[peak],
             "max_equivalent_plastic_strain": float(res.max_equivalent_plastic_strain.max()),
             "residual_depth_on_axis_m": float(res.residual_depth[0]),
-            "fe_first_yield": None if fy is None else {"force_N": fy.force, "overlap_m": fy.overlap,
-                                                       "depth_m": fy.depth, "radius_m": fy.radius},
-            "first_yield_exact_C": None if exact is None else {"C": exact.coefficient, "force_N": exact.force,
-                                                               "overlap_m": exact.overlap, "depth_m": exact.depth},
-            "first_yield_paper_C_1.6": None if paper is None else {"force_N": paper.force,
-                                                                   "overlap_m": paper.overlap},
+            "fe_first_yield": None
+            if fy is None
+            else {"force_N": fy.force, "overlap_m": fy.overlap, "depth_m": fy.depth, "radius_m": fy.radius},
+            "first_yield_exact_C": None
+            if exact is None
+            else {"C": exact.coefficient, "force_N": exact.force, "overlap_m": exact.overlap, "depth_m": exact.depth},
+            "first_yield_paper_C_1.6": None if paper is None else {"force_N": paper.force, "overlap_m": paper.overlap},
             "steps": int(res.overlap.size),
             "newton_iterations": int(res.newton_iterations.sum()),
             "wall_time_s": self.seconds,
-        }  # fmt: skip
+        }
 
 
 def _overlap_for_force(force: float, radius: float, e_star: float, exact: FirstYield | None) -> float:
@@ -90,8 +91,14 @@ def _overlap_for_force(force: float, radius: float, e_star: float, exact: FirstY
     return 1.25 * w * exact.overlap
 
 
-def indent_case(case: Case, *, max_overlap: float | None = None, max_force: float | None = None,
-                hardening: float = 0.0, mesh: MeshTri | str | None = None) -> IndentRun:  # fmt: skip
+def indent_case(
+    case: Case,
+    *,
+    max_overlap: float | None = None,
+    max_force: float | None = None,
+    hardening: float = 0.0,
+    mesh: MeshTri | str | None = None,
+) -> IndentRun:
     """Press the case's ball into its FE plate and unload (see the module docstring). ``hardening`` H (Pa): linear
     isotropic hardening; ``mesh``: a user mesh (or mesh file) instead of the case's."""
     if max_overlap is not None and max_force is not None:
@@ -121,8 +128,9 @@ def indent_case(case: Case, *, max_overlap: float | None = None, max_force: floa
     if max_force is not None:
         load = fem.indent(radius, plate, loading, ball=ball, mesh=plate_mesh, hardening=hardening, keep_states=True)
         if load.force.max() < max_force:
-            raise ValueError(f"max_force={max_force:g} is out of reach of the estimated path (max "
-                             f"{load.force.max():g} N)")  # fmt: skip
+            raise ValueError(
+                f"max_force={max_force:g} is out of reach of the estimated path (max {load.force.max():g} N)"
+            )
         d_max = float(np.interp(max_force, load.force, load.overlap))
         res = join(load, load.unload_from(d_max, steps_out), below=d_max)
     else:

@@ -43,15 +43,21 @@ def case_plate(case: Case, max_overlap: float, growth: float = 1.0, taper_depth:
     if plate.is_rigid:
         raise ValueError("plate.rigid=true: the FE plate needs a deformable plate (set plate.rigid = false)")
     mesh = case_mesh(case, max_overlap, growth)
-    return fem.Plate(case.ball.radius, plate, max_overlap, ball=None if ball.is_rigid else ball, mesh=mesh,
-                     taper_depth=taper_depth)  # fmt: skip
+    return fem.Plate(
+        case.ball.radius, plate, max_overlap, ball=None if ball.is_rigid else ball, mesh=mesh, taper_depth=taper_depth
+    )
 
 
 def coupling_settings(case: Case) -> fem.CouplingSettings:
     """The coupling's numbers from the case's ``[fem]`` table."""
     f = case.fem
-    return fem.CouplingSettings(tolerance=f.tolerance, max_iterations=f.max_iterations, load_steps=f.load_steps,
-                                unload_steps=f.unload_steps, overshoot=f.overshoot)  # fmt: skip
+    return fem.CouplingSettings(
+        tolerance=f.tolerance,
+        max_iterations=f.max_iterations,
+        load_steps=f.load_steps,
+        unload_steps=f.unload_steps,
+        overshoot=f.overshoot,
+    )
 
 
 def impact_on_law(case: Case) -> Callable[[TabulatedLaw], ImpactResult]:

@@ -44,8 +44,15 @@ from wear.erosion.stamp import stamp_impacts, stamp_impacts_numpy
 from wear.erosion.stream import Stream, impacts_on_patch
 from wear.erosion.table import ResponseTable
 
-__all__ = ["ErosionResult", "erode", "footprint_on_grid", "MAX_IMPACTS", "MAX_PATCH_MEMORY", "patch_memory",
-           "check_patch_memory"]  # fmt: skip
+__all__ = [
+    "ErosionResult",
+    "erode",
+    "footprint_on_grid",
+    "MAX_IMPACTS",
+    "MAX_PATCH_MEMORY",
+    "patch_memory",
+    "check_patch_memory",
+]
 
 #: Largest number of impacts one run accepts.
 MAX_IMPACTS = 2_000_000_000
@@ -65,8 +72,9 @@ def patch_memory(grid: int, frames: int, runs: int = 1) -> float:
     return ((runs + 1) * frames + 6.0) * float(grid) ** 2 * 8.0
 
 
-def check_patch_memory(grid: int, frames: int, runs: int = 1, *, grid_name: str = "grid",
-                       frames_name: str = "frames") -> None:  # fmt: skip
+def check_patch_memory(
+    grid: int, frames: int, runs: int = 1, *, grid_name: str = "grid", frames_name: str = "frames"
+) -> None:
     """A one-line ``ValueError`` naming ``grid_name`` (and ``frames_name``) if :func:`patch_memory` exceeds
     :data:`MAX_PATCH_MEMORY`."""
     need = patch_memory(grid, frames, runs)
@@ -301,10 +309,28 @@ def erode(
             count = int(stop) - done
             positions = rng.random((count, 2)) * patch_size
             kernel(
-                wear, relief, positions, h, disc, disc_norm, direction, stream.speed, table.normal_speed, table.angle,
-                shape, table.volume_m3, table.length_scale, dent_table, float(table.u[0]), float(table.v[0]), du,
-                scratch, dent_scratch, counts, removed,
-            )  # fmt: skip
+                wear,
+                relief,
+                positions,
+                h,
+                disc,
+                disc_norm,
+                direction,
+                stream.speed,
+                table.normal_speed,
+                table.angle,
+                shape,
+                table.volume_m3,
+                table.length_scale,
+                dent_table,
+                float(table.u[0]),
+                float(table.v[0]),
+                du,
+                scratch,
+                dent_scratch,
+                counts,
+                removed,
+            )
             done = int(stop)
             if bar is not None:
                 bar.update(count)
@@ -365,9 +391,14 @@ def _direction(angle: float, azimuth: float) -> np.ndarray:
     """(sin θ cos ψ, sin θ sin ψ, cos θ, cos ψ, sin ψ) of a particle at ``angle`` θ and ``azimuth`` ψ (deg)."""
     theta, psi = math.radians(angle), math.radians(azimuth)
     return np.array(
-        [math.sin(theta) * math.cos(psi), math.sin(theta) * math.sin(psi), math.cos(theta), math.cos(psi),
-         math.sin(psi)]
-    )  # fmt: skip
+        [
+            math.sin(theta) * math.cos(psi),
+            math.sin(theta) * math.sin(psi),
+            math.cos(theta),
+            math.cos(psi),
+            math.sin(psi),
+        ]
+    )
 
 
 def footprint_on_grid(
@@ -405,9 +436,26 @@ def footprint_on_grid(
     side = int(math.ceil(footprint / h)) + 4
     kernel = stamp_impacts if engine == "numba" else stamp_impacts_numpy
     kernel(
-        wear, relief, np.array([point], dtype=float), h, disc, disc_norm, _direction(angle, azimuth), speed,
-        table.normal_speed, table.angle, np.ascontiguousarray(table.shape), table.volume_m3, table.length_scale,
-        np.zeros((0, 0, 0, 0)), float(table.u[0]), float(table.v[0]), float(table.u[1] - table.u[0]),
-        np.zeros(side * side), np.zeros(1), np.zeros(2, dtype=np.int64), np.zeros(1),
-    )  # fmt: skip
+        wear,
+        relief,
+        np.array([point], dtype=float),
+        h,
+        disc,
+        disc_norm,
+        _direction(angle, azimuth),
+        speed,
+        table.normal_speed,
+        table.angle,
+        np.ascontiguousarray(table.shape),
+        table.volume_m3,
+        table.length_scale,
+        np.zeros((0, 0, 0, 0)),
+        float(table.u[0]),
+        float(table.v[0]),
+        float(table.u[1] - table.u[0]),
+        np.zeros(side * side),
+        np.zeros(1),
+        np.zeros(2, dtype=np.int64),
+        np.zeros(1),
+    )
     return wear

@@ -64,9 +64,13 @@ class Footprint:
         largest contact radius ``length_scale`` (m); ``dent`` (same grid, m) optional — e.g. from the coupled
         pipeline's result, to plug the FE pressure and the residual dent into the stream erosion."""
         return cls(
-            x=wear_map.x, y=wear_map.y, wear=wear_map.depth, length_scale=float(length_scale),
-            cutting_volume_m3=float(wear_map.volume_m3), dent=dent,
-        )  # fmt: skip
+            x=wear_map.x,
+            y=wear_map.y,
+            wear=wear_map.depth,
+            length_scale=float(length_scale),
+            cutting_volume_m3=float(wear_map.volume_m3),
+            dent=dent,
+        )
 
 
 @dataclass(frozen=True)
@@ -117,19 +121,42 @@ class ImpactResponse:
         vn = check_array("normal_speed", normal_speeds, low=0.0, low_open=True, units="m/s")
         theta = check_array("angle", angles, low=0.0, high=89.0, units="deg")
         speed = vn / np.cos(np.radians(theta))
-        batch = simulate_impacts(self.radius, self.ball, self.plate, speed, theta, self.friction,
-                                 restitution=self.restitution, normal_model=self.normal_model,
-                                 tangential_model=self.tangential_model, histories=True)  # fmt: skip
+        batch = simulate_impacts(
+            self.radius,
+            self.ball,
+            self.plate,
+            speed,
+            theta,
+            self.friction,
+            restitution=self.restitution,
+            normal_model=self.normal_model,
+            tangential_model=self.tangential_model,
+            histories=True,
+        )
         constants = {**self.constants, "K": self.law.K, "alpha": self.law.alpha, "beta": self.law.beta}
         out = []
         for i in range(speed.size):
             impact = batch[i]
             ph = pressure_history(impact, self.pressure)
-            wm, worn = wear_of_impact(self.wear_law, constants, self.law, impact, ph,
-                                      sliding_speed(impact, self.speed_model), density=self.plate.density,
-                                      points_across=self.points_across)  # fmt: skip
+            wm, worn = wear_of_impact(
+                self.wear_law,
+                constants,
+                self.law,
+                impact,
+                ph,
+                sliding_speed(impact, self.speed_model),
+                density=self.plate.density,
+                points_across=self.points_across,
+            )
             deformation = worn.parts.get("deformation", 0.0)
-            out.append(Footprint(x=wm.x, y=wm.y, wear=wm.depth, length_scale=float(impact.max_contact_radius),
-                                 cutting_volume_m3=worn.volume_m3 - deformation,
-                                 deformation_volume_m3=deformation))  # fmt: skip
+            out.append(
+                Footprint(
+                    x=wm.x,
+                    y=wm.y,
+                    wear=wm.depth,
+                    length_scale=float(impact.max_contact_radius),
+                    cutting_volume_m3=worn.volume_m3 - deformation,
+                    deformation_volume_m3=deformation,
+                )
+            )
         return out

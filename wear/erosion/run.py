@@ -21,8 +21,7 @@ from wear.erosion.response import ImpactResponse
 from wear.erosion.stream import Stream
 from wear.erosion.table import MAX_TABLE_ENTRIES, build_response_table, table_axes
 
-__all__ = ["ErosionRun", "erode_case", "erode_angles", "nominal_contact_radius", "MAX_STREAM_ANGLE",
-           "CELLS_PER_RADIUS"]  # fmt: skip
+__all__ = ["ErosionRun", "erode_case", "erode_angles", "nominal_contact_radius", "MAX_STREAM_ANGLE", "CELLS_PER_RADIUS"]
 
 #: Largest stream angle from the normal (deg): beyond it the response table has no footprints.
 MAX_STREAM_ANGLE = 85.0
@@ -73,8 +72,9 @@ class ErosionRun:
 def _stream_angle(case: Case, angle: float | None) -> float:
     theta = case.impact.angle if angle is None else angle
     if theta > MAX_STREAM_ANGLE:
-        raise ValueError(f"impact.angle={theta:g} is out of range: a stream angle must be in [0, "
-                         f"{MAX_STREAM_ANGLE:g}] deg")  # fmt: skip
+        raise ValueError(
+            f"impact.angle={theta:g} is out of range: a stream angle must be in [0, {MAX_STREAM_ANGLE:g}] deg"
+        )
     return theta
 
 
@@ -82,8 +82,9 @@ def _axes(case: Case, theta: float):
     """The response table's axes (normal speeds m/s, local angles deg) of the case's stream at ``theta`` (deg), refused
     in one line naming the case keys if the table would exceed :data:`wear.erosion.table.MAX_TABLE_ENTRIES`."""
     ero = case.erosion
-    speeds, angles = table_axes(case.impact.speed, theta, angle_margin=ero.angle_margin, angle_step=ero.angle_step,
-                                speeds=ero.table_speeds)  # fmt: skip
+    speeds, angles = table_axes(
+        case.impact.speed, theta, angle_margin=ero.angle_margin, angle_step=ero.angle_step, speeds=ero.table_speeds
+    )
     entries = speeds.size * angles.size
     if entries > MAX_TABLE_ENTRIES:
         raise ValueError(
@@ -108,17 +109,30 @@ def _response(case: Case) -> ImpactResponse:
     pressure = case.wear.pressure
     if pressure == "fe":  # e.g. a run case given to erode: it holds everything the stream needs but this
         pressure = "thornton" if case.impact.normal_model == "thornton" else "hertz"
-        warnings.warn(f"wear.pressure='fe' needs the FE plate, which the stream's batched impacts do not run: the "
-                      f"erosion uses {pressure!r}, the closed form of impact.normal_model", stacklevel=2)  # fmt: skip
+        warnings.warn(
+            f"wear.pressure='fe' needs the FE plate, which the stream's batched impacts do not run: the "
+            f"erosion uses {pressure!r}, the closed form of impact.normal_model",
+            stacklevel=2,
+        )
     ball = case.ball.material()
     if math.isinf(ball.density):
         raise ValueError("ball.density=inf: the particle needs a finite density (kg/m^3)")
     imp, w = case.impact, case.wear
-    return ImpactResponse(radius=case.ball.radius, ball=ball, plate=case.plate.material(), friction=imp.friction,
-                          law=w.wear_law(), pressure=pressure, speed_model=w.speed, restitution=imp.restitution,
-                          normal_model=imp.normal_model, tangential_model=imp.tangential_model,
-                          points_across=w.points_across, wear_law=w.law,
-                          constants={**w.values(), "hardness": case.plate.hardness})  # fmt: skip
+    return ImpactResponse(
+        radius=case.ball.radius,
+        ball=ball,
+        plate=case.plate.material(),
+        friction=imp.friction,
+        law=w.wear_law(),
+        pressure=pressure,
+        speed_model=w.speed,
+        restitution=imp.restitution,
+        normal_model=imp.normal_model,
+        tangential_model=imp.tangential_model,
+        points_across=w.points_across,
+        wear_law=w.law,
+        constants={**w.values(), "hardness": case.plate.hardness},
+    )
 
 
 def _stream(case: Case, theta: float) -> Stream:
@@ -133,8 +147,9 @@ def nominal_contact_radius(case: Case, angle: float | None = None) -> float:
     return float(simulate_impact(**case.impact_arguments(angle=theta), history=False).max_contact_radius)
 
 
-def erode_case(case: Case, *, angle: float | None = None, patch_size: float | None = None,
-               progress: bool = False) -> ErosionRun:  # fmt: skip
+def erode_case(
+    case: Case, *, angle: float | None = None, patch_size: float | None = None, progress: bool = False
+) -> ErosionRun:
     """One erosion of ``case``: the response table over normal speed × local angle (batched impacts and the wear
     law), then the patch eroded by the stream (:func:`wear.erosion.erode`). ``angle`` (deg) and ``patch_size`` (m)
     override ``impact.angle`` and ``erosion.patch_size``; ``progress``: a progress bar on stderr."""
@@ -152,8 +167,16 @@ def erode_case(case: Case, *, angle: float | None = None, patch_size: float | No
         description=f"ImpactResponse(pressure={response.pressure!r}, law: {response.law})",
     )
     t1 = time.perf_counter()
-    result = erode(table, stream, grid=ero.grid, patch_size=ero.patch_size if patch_size is None else patch_size,
-                   seed=ero.seed, frames=ero.frames, samples=ero.samples, progress=progress)  # fmt: skip
+    result = erode(
+        table,
+        stream,
+        grid=ero.grid,
+        patch_size=ero.patch_size if patch_size is None else patch_size,
+        seed=ero.seed,
+        frames=ero.frames,
+        samples=ero.samples,
+        progress=progress,
+    )
     t2 = time.perf_counter()
     seconds = {"table": t1 - t0, "erosion": t2 - t1, "impacts_per_s": result.n_impacts / max(t2 - t1, 1e-9)}
     return ErosionRun(case, result, seconds)

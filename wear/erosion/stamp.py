@@ -45,9 +45,28 @@ def _bracket(axis, value):
 
 @numba.njit(cache=True)
 def stamp_impacts(
-    wear, relief, positions, h, disc, disc_norm, direction, speed, vn_axis, angle_axis, shape, volume, length,
-    dent_table, u0, v0, du, scratch, dent_scratch, counts, removed,
-):  # fmt: skip
+    wear,
+    relief,
+    positions,
+    h,
+    disc,
+    disc_norm,
+    direction,
+    speed,
+    vn_axis,
+    angle_axis,
+    shape,
+    volume,
+    length,
+    dent_table,
+    u0,
+    v0,
+    du,
+    scratch,
+    dent_scratch,
+    counts,
+    removed,
+):
     ny, nx = wear.shape
     nv, nu = shape.shape[2], shape.shape[3]
     has_dent = dent_table.shape[0] > 0
@@ -172,9 +191,28 @@ def stamp_impacts(
 
 
 def stamp_impacts_numpy(
-    wear, relief, positions, h, disc, disc_norm, direction, speed, vn_axis, angle_axis, shape, volume, length,
-    dent_table, u0, v0, du, scratch, dent_scratch, counts, removed,
-):  # fmt: skip
+    wear,
+    relief,
+    positions,
+    h,
+    disc,
+    disc_norm,
+    direction,
+    speed,
+    vn_axis,
+    angle_axis,
+    shape,
+    volume,
+    length,
+    dent_table,
+    u0,
+    v0,
+    du,
+    scratch,
+    dent_scratch,
+    counts,
+    removed,
+):
     """Plain numpy version of :func:`stamp_impacts` (same algorithm, vectorised over the nodes of one
     footprint): the benchmark's reference. ``scratch`` arguments are unused."""
     ny, nx = wear.shape

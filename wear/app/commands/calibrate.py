@@ -24,23 +24,30 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("data", nargs="?", metavar="DATA.csv", help="measured wear (see above)")
     add_case_options(parser, "calibrate")
     parser.add_argument("--law", choices=tuple(LAWS), help="the wear law to fit [wear.law]")
-    parser.add_argument("--free", metavar="K,alpha,...", help="the constants to fit [calibration.free]; default: the "
-                        "law's scale constant")  # fmt: skip
+    parser.add_argument(
+        "--free",
+        metavar="K,alpha,...",
+        help="the constants to fit [calibration.free]; default: the law's scale constant",
+    )
     add_out_option(parser, DEFAULT_OUT)
     parser.add_argument("--quiet", action="store_true", help="no table")
     parser.add_argument("--json", action="store_true", help="print calibration.json to stdout instead of a table")
 
 
 def _table(summary: dict, out: str) -> str:
-    lines = [f"law {summary['law']!r}: {summary['fitted_rows']} rows fitted of {summary['rows']} "
-             f"({summary['quantity']}); RMS log error {summary['rms_log_error']:.3g}"]  # fmt: skip
+    lines = [
+        f"law {summary['law']!r}: {summary['fitted_rows']} rows fitted of {summary['rows']} "
+        f"({summary['quantity']}); RMS log error {summary['rms_log_error']:.3g}"
+    ]
     for name, c in summary["constants"].items():
         interval = c["interval_95"]
         ci = "not determined by the data" if interval is None else f"95% [{interval[0]:.4g}, {interval[1]:.4g}]"
         lines.append(f"  {name} = {c['value']:.6g} {c['units']}  ({ci})".rstrip())
     lines += [f"  note: {s}" for s in summary["statements"]]
-    lines.append(f"{summary['evaluations']} evaluations of the forward model ({summary['evaluations_per_s']:.3g}/s); "
-                 f"output: {out}")  # fmt: skip
+    lines.append(
+        f"{summary['evaluations']} evaluations of the forward model ({summary['evaluations_per_s']:.3g}/s); "
+        f"output: {out}"
+    )
     return "\n".join(lines)
 
 

@@ -16,8 +16,18 @@ from tqdm import tqdm
 from wear.app.outputs.writer import to_jsonable
 from wear.case import JOBS, Case, check_job_case, dump_case, load_case, override_tables
 
-__all__ = ["add_case_options", "add_out_option", "case_from_args", "case_json", "collect_notes", "print_default",
-           "print_json", "print_notes", "progress_bar", "show_progress"]  # fmt: skip
+__all__ = [
+    "add_case_options",
+    "add_out_option",
+    "case_from_args",
+    "case_json",
+    "collect_notes",
+    "print_default",
+    "print_json",
+    "print_notes",
+    "progress_bar",
+    "show_progress",
+]
 
 
 def add_case_options(parser: argparse.ArgumentParser, job: str, *, flag: bool = False) -> None:
@@ -29,24 +39,37 @@ def add_case_options(parser: argparse.ArgumentParser, job: str, *, flag: bool = 
         parser.add_argument("--config", dest="case", metavar="CASE.toml", help=what)
     else:
         parser.add_argument("case", nargs="?", metavar="CASE.toml", help=f"{what}; default: the default case")
-    parser.add_argument("--set", dest="overrides", action="append", default=[], metavar="TABLE.KEY=VALUE",
-                        help="override any case key (a TOML value, e.g. --set impact.angle=45); "
-                        "repeatable")  # fmt: skip
-    parser.add_argument("--print-default", "--print-defaults", dest="print_default", action="store_true",
-                        help=f"print `impactwear {job}`'s default case as TOML (every key it reads, with its units "
-                        "and valid range) and exit")  # fmt: skip
+    parser.add_argument(
+        "--set",
+        dest="overrides",
+        action="append",
+        default=[],
+        metavar="TABLE.KEY=VALUE",
+        help="override any case key (a TOML value, e.g. --set impact.angle=45); repeatable",
+    )
+    parser.add_argument(
+        "--print-default",
+        "--print-defaults",
+        dest="print_default",
+        action="store_true",
+        help=f"print `impactwear {job}`'s default case as TOML (every key it reads, with its units "
+        "and valid range) and exit",
+    )
 
 
 def add_out_option(parser: argparse.ArgumentParser, default: str) -> None:
     """``--out DIR``: a command's output folder (:mod:`wear.app.outputs.folder`)."""
-    parser.add_argument("--out", default=default, metavar="DIR",
-                        help=f"output folder (default: {default}): a new or empty folder, or an earlier output folder "
-                        "of impactwear, whose files are replaced while every other file in it is left alone; a "
-                        "folder holding other files is refused before any work")  # fmt: skip
+    parser.add_argument(
+        "--out",
+        default=default,
+        metavar="DIR",
+        help=f"output folder (default: {default}): a new or empty folder, or an earlier output folder "
+        "of impactwear, whose files are replaced while every other file in it is left alone; a "
+        "folder holding other files is refused before any work",
+    )
 
 
-def case_from_args(args: argparse.Namespace, job: str,
-                   options: dict[str, dict[str, object]] | None = None) -> Case:  # fmt: skip
+def case_from_args(args: argparse.Namespace, job: str, options: dict[str, dict[str, object]] | None = None) -> Case:
     """The checked case of a command: the case file (or ``job``'s default case), then the command's own ``options``
     (tables of values), then each ``--set`` — all laid on at once, so keys that depend on each other may be given
     by different options. A plate model (``fem.model``) the command does not run is refused
@@ -56,8 +79,10 @@ def case_from_args(args: argparse.Namespace, job: str,
     for table, values in override_tables(args.overrides).items():
         if table not in reads:
             key, value = next(iter(values.items()))
-            raise ValueError(f"--set {table}.{key}={value!r}: impactwear {job} does not read [{table}] (it reads "
-                             f"{', '.join(f'[{t}]' for t in reads)})")  # fmt: skip
+            raise ValueError(
+                f"--set {table}.{key}={value!r}: impactwear {job} does not read [{table}] (it reads "
+                f"{', '.join(f'[{t}]' for t in reads)})"
+            )
         tables.setdefault(table, {}).update(values)
     return check_job_case(load_case(args.case, job, args.case_option).with_(**tables), job)
 

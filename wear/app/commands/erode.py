@@ -46,8 +46,10 @@ def parse_angles(text: str) -> list[float]:
         raise ValueError(f"--angles={text!r} is empty: give e.g. 0,15,30,45,60,75")
     for a in angles:
         if not 0.0 <= a <= MAX_STREAM_ANGLE:
-            raise ValueError(f"--angles: angle={a:g} is out of range: stream angle from the normal must be in [0, "
-                             f"{MAX_STREAM_ANGLE:g}] deg")  # fmt: skip
+            raise ValueError(
+                f"--angles: angle={a:g} is out of range: stream angle from the normal must be in [0, "
+                f"{MAX_STREAM_ANGLE:g}] deg"
+            )
     return angles
 
 
@@ -68,11 +70,15 @@ def main(args: argparse.Namespace) -> int:
         if args.json:
             print_json(summary)
         r, result = summary["results"], run.result
-        say(f"erode: {r['impacts']} impacts on a {result.patch_size * 1e3:.4g} mm patch ({result.x.size}^2 nodes), "
-            f"{summary['seconds']['erosion']:.3g} s")  # fmt: skip
+        say(
+            f"erode: {r['impacts']} impacts on a {result.patch_size * 1e3:.4g} mm patch ({result.x.size}^2 nodes), "
+            f"{summary['seconds']['erosion']:.3g} s"
+        )
         say(f"  table: {summary['table']['resolution']}")
-        say(f"  mass loss {r['mass_loss_kg']:.6g} kg ({r['mass_loss_per_area_kg_m2']:.6g} kg/m^2), erosion rate "
-            f"{r['erosion_rate_kg_per_kg']:.6g} kg/kg, max depth {r['max_depth_m'] * 1e6:.4g} um -> {out}")  # fmt: skip
+        say(
+            f"  mass loss {r['mass_loss_kg']:.6g} kg ({r['mass_loss_per_area_kg_m2']:.6g} kg/m^2), erosion rate "
+            f"{r['erosion_rate_kg_per_kg']:.6g} kg/kg, max depth {r['max_depth_m'] * 1e6:.4g} um -> {out}"
+        )
         return 0
     with collect_notes() as notes:
         rows = write_erosion_angles(erode_angles(case, angles, progress=progress), out)

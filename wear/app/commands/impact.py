@@ -87,10 +87,13 @@ def main(args: argparse.Namespace) -> int:
         return 0
     ball, plate, imp = case.ball, case.plate, case.impact
     plate_text = "rigid" if plate.rigid else f"{plate.name} (E {plate.E / 1e9:g} GPa, nu {plate.nu:g})"
-    print(f"impact: {ball.name} ball R {ball.radius * 1e3:g} mm (E {ball.E / 1e9:g} GPa, nu {ball.nu:g}) "
-          f"on {plate_text}")  # fmt: skip
-    print(f"        {imp.speed:g} m/s at {imp.angle:g} deg from the normal, mu {imp.friction:g}, "
-          f"e {imp.restitution:g}, {imp.normal_model} / {imp.tangential_model}, {imp.scheme} scheme")  # fmt: skip
+    print(
+        f"impact: {ball.name} ball R {ball.radius * 1e3:g} mm (E {ball.E / 1e9:g} GPa, nu {ball.nu:g}) on {plate_text}"
+    )
+    print(
+        f"        {imp.speed:g} m/s at {imp.angle:g} deg from the normal, mu {imp.friction:g}, "
+        f"e {imp.restitution:g}, {imp.normal_model} / {imp.tangential_model}, {imp.scheme} scheme"
+    )
     width = max(len(r[0]) for r in _ROWS)
     for label, attr, unit, scale in _ROWS:
         value = getattr(result, attr)

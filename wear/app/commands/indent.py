@@ -44,10 +44,14 @@ _OPTIONS = {
 def configure(parser: argparse.ArgumentParser) -> None:
     add_case_options(parser, "indent", flag=True)
     group = parser.add_mutually_exclusive_group()
-    group.add_argument("--max-overlap", type=float, metavar="M",
-                       help="largest overlap δ_max (m); with neither this nor --max-force the path loads to "
-                       "w = δ/δ_c = 20 (plastic plate) or to a contact radius a = 0.05 R (elastic), then "
-                       "unloads")  # fmt: skip
+    group.add_argument(
+        "--max-overlap",
+        type=float,
+        metavar="M",
+        help="largest overlap δ_max (m); with neither this nor --max-force the path loads to "
+        "w = δ/δ_c = 20 (plastic plate) or to a contact radius a = 0.05 R (elastic), then "
+        "unloads",
+    )
     group.add_argument("--max-force", type=float, metavar="N", help="largest force (N): δ_max found by the FE")
     for name, (key, doc) in _OPTIONS.items():
         kind = int if name.endswith("steps") else float
@@ -77,8 +81,9 @@ def main(args: argparse.Namespace) -> int:
     if args.max_force is not None:
         check_number("--max-force", args.max_force, low=0.0, low_open=True, units="N")
     with collect_notes() as notes:
-        run = indent_case(case, max_overlap=args.max_overlap, max_force=args.max_force, hardening=args.hardening,
-                          mesh=args.mesh)  # fmt: skip
+        run = indent_case(
+            case, max_overlap=args.max_overlap, max_force=args.max_force, hardening=args.hardening, mesh=args.mesh
+        )
         out = Path(args.out)
         summary = write_indent(run, out, figures=not args.no_figures, notes=notes)
     print_notes("indent", summary["notes"])
@@ -87,12 +92,18 @@ def main(args: argparse.Namespace) -> int:
     elif not args.quiet:
         fy = summary["fe_first_yield"]
         ex = summary["first_yield_exact_C"]
-        print(f"max overlap {summary['max_overlap_m']:.4g} m, max force {summary['max_force_N']:.4g} N, "
-              f"contact radius {summary['max_contact_radius_m']:.4g} m, regime {summary['regime_at_max']}")  # fmt: skip
+        print(
+            f"max overlap {summary['max_overlap_m']:.4g} m, max force {summary['max_force_N']:.4g} N, "
+            f"contact radius {summary['max_contact_radius_m']:.4g} m, regime {summary['regime_at_max']}"
+        )
         if fy is not None and ex is not None:
             paper = summary["first_yield_paper_C_1.6"]["force_N"]
-            print(f"first yield: FE {fy['force_N']:.4g} N at depth {fy['depth_m']:.3g} m; exact C={ex['C']:.4f} "
-                  f"{ex['force_N']:.4g} N; paper C=1.6 {paper:.4g} N")  # fmt: skip
-        print(f"residual dent on the axis {summary['residual_depth_on_axis_m']:.4g} m; "
-              f"{summary['steps']} steps in {summary['wall_time_s']:.1f} s; outputs in {out}")  # fmt: skip
+            print(
+                f"first yield: FE {fy['force_N']:.4g} N at depth {fy['depth_m']:.3g} m; exact C={ex['C']:.4f} "
+                f"{ex['force_N']:.4g} N; paper C=1.6 {paper:.4g} N"
+            )
+        print(
+            f"residual dent on the axis {summary['residual_depth_on_axis_m']:.4g} m; "
+            f"{summary['steps']} steps in {summary['wall_time_s']:.1f} s; outputs in {out}"
+        )
     return 0 if math.isfinite(summary["max_force_N"]) else 1

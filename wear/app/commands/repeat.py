@@ -31,8 +31,9 @@ def _integer(name: str, text: str) -> int:
     try:
         value = float(text)
     except ValueError:
-        raise ValueError(f"--{name}={text!r} is not a number: the number of impacts must be an integer in "
-                         "[1, 1e9]") from None  # fmt: skip
+        raise ValueError(
+            f"--{name}={text!r} is not a number: the number of impacts must be an integer in [1, 1e9]"
+        ) from None
     if not value.is_integer():
         raise ValueError(f"--{name}={text} is not an integer: the number of impacts must be an integer in [1, 1e9]")
     return int(value)
@@ -51,21 +52,39 @@ def _table(summary: dict, out: str) -> str:
     after = summary["after_last_impact"]
     check = summary["halfspace_check"]
     rows = [
-        ("impacts (computed; of them elastic)",
-         f"{summary['impacts']} ({summary['computed_impacts']}; {summary['elastic_computed_impacts']})", ""),
-        ("shakedown", "none" if summary["shakedown_impact"] is None
-         else f"at impact {summary['shakedown_impact']}", ""),
-        ("normal restitution first / last computed", f"{first['normal_restitution']:.4g} / "
-                                                      f"{last['normal_restitution']:.4g}", ""),
-        ("max pressure first / last computed", f"{first['max_pressure'] / 1e9:.4g} / "
-                                                f"{last['max_pressure'] / 1e9:.4g}", "GPa"),
-        ("last computed: max pressure FE / half-space",
-         f"{check['fe_max_pressure_Pa'] / 1e9:.4g} / {check['halfspace_max_pressure_Pa'] / 1e9:.4g}", "GPa"),
+        (
+            "impacts (computed; of them elastic)",
+            f"{summary['impacts']} ({summary['computed_impacts']}; {summary['elastic_computed_impacts']})",
+            "",
+        ),
+        (
+            "shakedown",
+            "none" if summary["shakedown_impact"] is None else f"at impact {summary['shakedown_impact']}",
+            "",
+        ),
+        (
+            "normal restitution first / last computed",
+            f"{first['normal_restitution']:.4g} / {last['normal_restitution']:.4g}",
+            "",
+        ),
+        (
+            "max pressure first / last computed",
+            f"{first['max_pressure'] / 1e9:.4g} / {last['max_pressure'] / 1e9:.4g}",
+            "GPa",
+        ),
+        (
+            "last computed: max pressure FE / half-space",
+            f"{check['fe_max_pressure_Pa'] / 1e9:.4g} / {check['halfspace_max_pressure_Pa'] / 1e9:.4g}",
+            "GPa",
+        ),
         ("dent depth after the last impact", f"{after['dent_depth_m'] * 1e6:.4g}", "um"),
-        ("wear: max depth / volume", f"{after['total_wear_max_depth_m'] * 1e6:.4g} um / "
-                                     f"{after['total_wear_volume_m3']:.4g}", "m^3"),
+        (
+            "wear: max depth / volume",
+            f"{after['total_wear_max_depth_m'] * 1e6:.4g} um / {after['total_wear_volume_m3']:.4g}",
+            "m^3",
+        ),
         ("wall time", f"{summary['wall_time_s']:.1f}", "s"),
-    ]  # fmt: skip
+    ]
     width = max(len(r[0]) for r in rows)
     lines = [f"{label:<{width}}  {value} {unit}".rstrip() for label, value, unit in rows]
     lines.append(f"output: {out}")

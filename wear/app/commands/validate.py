@@ -47,8 +47,10 @@ def main(args: argparse.Namespace) -> int:
     command += "".join(f" --only {shlex.quote(s)}" for s in args.only or ())
     write_report(path, render_report(result, command))
     for c in result.failed:
-        print(f"FAIL [{c.group}] {c.quantity} ({c.case}): obtained {c.obtained}, reference {c.reference}, "
-              f"error {c.error:.4g} > tolerance {c.tolerance:.4g}")  # fmt: skip
+        print(
+            f"FAIL [{c.group}] {c.quantity} ({c.case}): obtained {c.obtained}, reference {c.reference}, "
+            f"error {c.error:.4g} > tolerance {c.tolerance:.4g}"
+        )
     n, bad = len(result.checks), len(result.failed)
     print(f"{n - bad}/{n} checks passed; report: {path}")
     return 1 if bad else 0

@@ -13,8 +13,11 @@ from wear.chain.calibrate import CalibrationResult
 
 __all__ = ["plot_calibration"]
 
-_LABELS = {"erosion_kg_per_kg": "erosion ratio (kg/kg)", "mass_per_impact_kg": "mass worn per impact (kg)",
-           "volume_per_impact_m3": "volume worn per impact (m³)"}  # fmt: skip
+_LABELS = {
+    "erosion_kg_per_kg": "erosion ratio (kg/kg)",
+    "mass_per_impact_kg": "mass worn per impact (kg)",
+    "volume_per_impact_m3": "volume worn per impact (m³)",
+}
 
 
 def _panel(ax, x, group, measured, predicted, xlabel: str, label: str) -> None:
@@ -43,7 +46,10 @@ def plot_calibration(result: CalibrationResult, path: str | os.PathLike) -> Path
     a1.set_ylabel(_LABELS[d.quantity])
     f = result.fit
     text = ", ".join(f"{n} = {v:.4g}" for n, v in zip(f.names, f.values, strict=True))
-    fig.suptitle(f"wear.law = {result.case.wear.law!r}: {text} (RMS log error {f.rms_log_error:.3f})\n"
-                 "markers: measured; lines: predicted; x: rows without a measurement", fontsize=9)  # fmt: skip
+    fig.suptitle(
+        f"wear.law = {result.case.wear.law!r}: {text} (RMS log error {f.rms_log_error:.3f})\n"
+        "markers: measured; lines: predicted; x: rows without a measurement",
+        fontsize=9,
+    )
     fig.tight_layout()
     return save_figure(fig, path)

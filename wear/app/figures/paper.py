@@ -255,8 +255,14 @@ def plot_wear_laws(curves: list[dict], data_angle, data_rate, speeds, path, sour
     styles = iter(("--", ":", "-."))
     for k, c in enumerate(curves):
         style, colour = (next(styles), "k") if c.get("reference") else ("-", COLORS[k % len(COLORS)])
-        ax.semilogy(c["angles"], np.where(np.asarray(c["rate"]) > 0, c["rate"], np.nan), style, color=colour,
-                    lw=1.3, label=c["label"])  # fmt: skip
+        ax.semilogy(
+            c["angles"],
+            np.where(np.asarray(c["rate"]) > 0, c["rate"], np.nan),
+            style,
+            color=colour,
+            lw=1.3,
+            label=c["label"],
+        )
         ax2.loglog(c["speeds"], c["rate_vs_speed"], style, color=colour, lw=1.3)
     ax.plot(data_angle, data_rate, "ko", ms=4, label="calibration data (Oka et al. 2005 curve, 50 m/s)")
     top = max(np.nanmax(c["rate"]) for c in curves)
@@ -270,7 +276,13 @@ def plot_wear_laws(curves: list[dict], data_angle, data_rate, speeds, path, sour
     ax2.grid(alpha=0.3, which="both")
     for s in speeds:
         ax2.axvline(s, color="0.7", lw=0.8)
-    fig.legend(*ax.get_legend_handles_labels(), loc="lower center", bbox_to_anchor=(0.5, 0.05), ncol=3, fontsize=7,
-               frameon=False)  # fmt: skip
+    fig.legend(
+        *ax.get_legend_handles_labels(),
+        loc="lower center",
+        bbox_to_anchor=(0.5, 0.05),
+        ncol=3,
+        fontsize=7,
+        frameon=False,
+    )
     fig.subplots_adjust(bottom=0.34, wspace=0.25, top=0.93)
     return save_sourced(fig, path, source)

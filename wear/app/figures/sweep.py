@@ -75,8 +75,9 @@ def panel_results(
             continue
         if units.get(name) and magnitude[name] <= ROUND_OFF * unit_scale[units[name]]:
             continue
-        if any(name in (key, f"result.{key}") or _same_as_input(values, [r.get(key) for r in ok_rows])
-               for key in varying):  # fmt: skip
+        if any(
+            name in (key, f"result.{key}") or _same_as_input(values, [r.get(key) for r in ok_rows]) for key in varying
+        ):
             continue
         panels.append(name)
     return panels
@@ -151,8 +152,13 @@ def plot_sweep(
                 if x is not None:
                     pts[x] = _number(r.get(name)) if r["status"] == "ok" else math.nan
             xs = sorted(pts)
-            ax.plot([x / x_scale for x in xs], [pts[x] / y_scale for x in xs], marker="o", ms=3,
-                    label=None if lv is None else f"{lv}")  # fmt: skip
+            ax.plot(
+                [x / x_scale for x in xs],
+                [pts[x] / y_scale for x in xs],
+                marker="o",
+                ms=3,
+                label=None if lv is None else f"{lv}",
+            )
         ax.set_xlabel(f"{x_key} [{x_unit}]" if x_unit else x_key)
         ax.set_title(f"{name} [{y_unit}]" if y_unit else name, fontsize=9)
         if x_labels is not None:

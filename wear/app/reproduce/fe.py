@@ -43,8 +43,9 @@ def indent(radius: float, material: Material, overlaps, elements: tuple[int, int
     """``fem.indent`` with a rigid ball on a case mesh with ``elements`` = (P2 elements across the largest contact
     radius, across the first-yield contact radius)."""
     overlaps = np.asarray(overlaps, dtype=float)
-    mesh = fem.plate_mesh(radius, material, float(overlaps.max()), contact_elements=elements[0],
-                          yield_elements=elements[1])  # fmt: skip
+    mesh = fem.plate_mesh(
+        radius, material, float(overlaps.max()), contact_elements=elements[0], yield_elements=elements[1]
+    )
     return fem.indent(radius=radius, plate=material, overlaps=overlaps, mesh=mesh)
 
 
@@ -94,10 +95,11 @@ def fig_yield_onset(out: Path, quick: bool) -> FigureReport:
     rep = FigureReport("fig_yield_onset", "First yield: FE against Eq. 18 (C = 1.6 and the exact C(ν))")
     rows = yield_onset_rows(quick)
     plots.plot_yield_onset(
-        rows, out / f"{rep.name}.png",
+        rows,
+        out / f"{rep.name}.png",
         "FE: fem.indent (this toolkit, axisymmetric J2 plate, rigid ball, E 210 GPa); F_c = π³(C Y)³R²/(6E*²) "
         "(errata Eq. 18) with C(ν) exact (Johnson 1985 §6.2) and with the paper's C = 1.6",
-    )  # fmt: skip
+    )
     ratio = np.array([r["fe"] / r["exact"] for r in rows])
     paper = np.array([r["paper"] / r["exact"] for r in rows])
     worst = int(np.nanargmax(np.abs(ratio - 1)))
@@ -167,17 +169,35 @@ def pressure_regimes(quick: bool) -> dict:
         a_h = (3 * force * radius / (4 * e_star)) ** (1 / 3)
         p0_h = 3 * force / (2 * math.pi * a_h**2)
         rr = np.linspace(0, 1.3 * a, 300)
-        loading.append(dict(label=f"w = {w:g} ({res.regime[k]})", r=r, p=pressure[k], ref_r=rr,
-                            ref_p=hertz_pressure(rr, a_h, p0_h), scale_r=a, scale_p=force / (math.pi * a * a),
-                            ratio=float(res.max_pressure[k] / res.mean_pressure[k])))  # fmt: skip
+        loading.append(
+            dict(
+                label=f"w = {w:g} ({res.regime[k]})",
+                r=r,
+                p=pressure[k],
+                ref_r=rr,
+                ref_p=hertz_pressure(rr, a_h, p0_h),
+                scale_r=a,
+                scale_p=force / (math.pi * a * a),
+                ratio=float(res.max_pressure[k] / res.mean_pressure[k]),
+            )
+        )
     path = unloading_path(fy.overlap, quick)
     res = indent(radius, mat, path, (16, 10) if quick else (24, 14))
     r, pressure = _sorted(res)
     k_star = int(np.argmax(path))
     a_star, f_star = float(res.contact_radius[k_star]), float(res.force[k_star])
     p_star = f_star / (math.pi * a_star**2)
-    unloading = [dict(label="a/a* = 1 (start of unloading, w = 50)", r=r, p=pressure[k_star], ref_r=r,
-                      ref_p=np.where(r < a_star, p_star, 0.0), scale_r=a_star, scale_p=p_star)]  # fmt: skip
+    unloading = [
+        dict(
+            label="a/a* = 1 (start of unloading, w = 50)",
+            r=r,
+            p=pressure[k_star],
+            ref_r=r,
+            ref_p=np.where(r < a_star, p_star, 0.0),
+            scale_r=a_star,
+            scale_p=p_star,
+        )
+    ]
     rms = {}
     after = np.arange(k_star + 1, len(path))
     for frac in UNLOADING_FRACTIONS:
@@ -186,8 +206,17 @@ def pressure_regimes(quick: bool) -> dict:
         ref = mesarovic_johnson_pressure(r, a, a_star, p_star)
         inside = r <= a_star
         rms[frac] = float(np.sqrt(np.mean((pressure[k][inside] - ref[inside]) ** 2)) / p_star)
-        unloading.append(dict(label=f"a/a* = {a / a_star:.2f} (RMS {rms[frac]:.1%} of p*)", r=r, p=pressure[k],
-                              ref_r=r, ref_p=ref, scale_r=a_star, scale_p=p_star))  # fmt: skip
+        unloading.append(
+            dict(
+                label=f"a/a* = {a / a_star:.2f} (RMS {rms[frac]:.1%} of p*)",
+                r=r,
+                p=pressure[k],
+                ref_r=r,
+                ref_p=ref,
+                scale_r=a_star,
+                scale_p=p_star,
+            )
+        )
     return dict(loading=loading, unloading=unloading, rms=rms, a_star=a_star, p_star=p_star)
 
 
@@ -195,10 +224,12 @@ def fig_pressure_regimes(out: Path, quick: bool) -> FigureReport:
     rep = FigureReport("fig_pressure_regimes", "Pressure profiles from elastic to fully plastic, and unloading")
     d = pressure_regimes(quick)
     plots.plot_pressure_regimes(
-        d["loading"], d["unloading"], out / f"{rep.name}.png",
+        d["loading"],
+        d["unloading"],
+        out / f"{rep.name}.png",
         "FE: fem.indent (this toolkit; steel plate E 210 GPa, ν 0.3, Y 210 MPa, rigid ball R 10 mm); Hertz Eq. 16 "
         "at the FE force; Mesarovic & Johnson 2000 (Eq. 19) from the FE's a*, p* = F*/(πa*²) after a load to w = 50",
-    )  # fmt: skip
+    )
     ratios = {s["label"]: s["ratio"] for s in d["loading"]}
     rep.numbers = {f"p_max/p_mean at {k}": v for k, v in ratios.items()}
     rep.numbers.update({f"RMS(FE - Eq. 19)/p* at a/a* = {k:g}": v for k, v in d["rms"].items()})
@@ -266,8 +297,17 @@ def regime_map(quick: bool) -> dict:
             e_th[i, j] = float(thornton_restitution(v_ratio[i, j]))
     if not np.any(np.isfinite(e_fe)):
         raise RuntimeError("every coupled FE run of the regime map failed: " + "; ".join(failed))
-    return dict(speeds=speeds, yields=yields, regime=regime, ratio=ratio, e_fe=e_fe, e_thornton=e_th,
-                speed_ratio=v_ratio, failed=failed, case=base)  # fmt: skip
+    return dict(
+        speeds=speeds,
+        yields=yields,
+        regime=regime,
+        ratio=ratio,
+        e_fe=e_fe,
+        e_thornton=e_th,
+        speed_ratio=v_ratio,
+        failed=failed,
+        case=base,
+    )
 
 
 def fig_regime_map(out: Path, quick: bool) -> FigureReport:
@@ -275,11 +315,17 @@ def fig_regime_map(out: Path, quick: bool) -> FigureReport:
     d = regime_map(quick)
     c = d["case"]
     plots.plot_regime_map(
-        d["speeds"], d["yields"], d["regime"], d["ratio"], d["e_fe"], d["e_thornton"], out / f"{rep.name}.png",
+        d["speeds"],
+        d["yields"],
+        d["regime"],
+        d["ratio"],
+        d["e_fe"],
+        d["e_thornton"],
+        out / f"{rep.name}.png",
         f"this toolkit: wear.run, two-way impact-FE coupling, normal impacts of the default case "
         f"({c.ball.name} R {c.ball.radius * 1e3:g} mm on {c.plate.name}, E {c.plate.E / 1e9:g} GPa) with the plate "
         "yield strength varied; Thornton 1997 closed form for e",
-    )  # fmt: skip
+    )
     diff = np.abs(d["e_fe"] / d["e_thornton"] - 1)
     rep.numbers = {
         "V/V_y range": f"{np.nanmin(d['speed_ratio']):.3g}-{np.nanmax(d['speed_ratio']):.3g}",
@@ -327,21 +373,30 @@ def fig_restitution(out: Path, quick: bool) -> FigureReport:
     difference = e_fe / e_th - 1.0
     curve = np.geomspace(1.0, 100.0, 200)
     plots.plot_restitution(
-        ratios, e_fe, curve, thornton_restitution(curve), out / f"{rep.name}.png",
+        ratios,
+        e_fe,
+        curve,
+        thornton_restitution(curve),
+        out / f"{rep.name}.png",
         f"this toolkit: wear.chain.restitution.restitution_sweep (two-way impact-FE coupling, {case.ball.name} on "
         f"{case.plate.name}, V_y = {v_y:.3g} m/s); Thornton 1997, J. Appl. Mech. 64:383",
-    )  # fmt: skip
+    )
     rep.numbers = {f"e_FE at V/V_y = {x:g}": float(e) for x, e in zip(ratios, e_fe, strict=True)}
     rep.numbers.update({f"(e_FE - e_T)/e_T at {x:g}": float(d) for x, d in zip(ratios, difference, strict=True)})
     rep.numbers["FE runs failed"] = len(failed)
     low = np.abs(difference[ratios <= 2.0])
     rep.paper = "No such figure (the paper has no restitution model beyond its dashpot, Eq. 6)."
     rep.ours = (
-        "Coupled FE normal restitution at V/V_y = " + ", ".join(f"{x:g}" for x in ratios) + ": "
-        + ", ".join(f"{e:.3f}" for e in e_fe) + "; Thornton: " + ", ".join(f"{e:.3f}" for e in e_th) + "."
+        "Coupled FE normal restitution at V/V_y = "
+        + ", ".join(f"{x:g}" for x in ratios)
+        + ": "
+        + ", ".join(f"{e:.3f}" for e in e_fe)
+        + "; Thornton: "
+        + ", ".join(f"{e:.3f}" for e in e_th)
+        + "."
         + (f" For V/V_y ≤ 2 they differ by at most {low.max():.1%}." if low.size else "")
         + (" FE runs that failed: " + "; ".join(failed) + "." if failed else "")
-    )  # fmt: skip
+    )
     rep.differences = (
         "Both are near-Hertz just above V_y. Further up, Thornton's limiting pressure (no hardening of the mean "
         "pressure, Hertz-shaped unloading with an enlarged radius) and the FE plate (contact pressure rising "

@@ -66,10 +66,14 @@ def fig04(out: Path, quick: bool) -> FigureReport:
     )
     dev = np.abs(model / closed - 1.0)
     plots.plot_peak_force(
-        angles, speeds, model, closed, out / f"{rep.name}.png",
+        angles,
+        speeds,
+        model,
+        closed,
+        out / f"{rep.name}.png",
         "H-DD model (this toolkit, e = 0.98 dashpot) vs Hertz closed form F_max = (4/3)E*√R δ_max^1.5, "
         "δ_max = (15 m v_n² / (16E*√R))^(2/5) (errata Eqs. 4, 10-11); alumina on glass (Kharaz et al. 2001 setup)",
-    )  # fmt: skip
+    )
     rep.numbers = {
         "max |F_model/F_Hertz - 1|": float(dev.max()),
         "F_max at 3.9 m/s, 0 deg (N)": float(model[-1, 0]),
@@ -102,10 +106,15 @@ def fig05(out: Path, quick: bool) -> FigureReport:
     da, dc = data["centre_rebound_angle_deg"]
     rms = kharaz_rms()["centre_rebound_angle_deg"]
     plots.plot_rebound_angles(
-        angles, b.rebound_angle, b.contact_point_rebound_angle, da, dc, out / f"{rep.name}.png",
+        angles,
+        b.rebound_angle,
+        b.contact_point_rebound_angle,
+        da,
+        dc,
+        out / f"{rep.name}.png",
         f"model: H-DD (this toolkit), e = 0.98, μ = 0.092; points: {KHARAZ_SOURCE}",
         note=f"RMS model - data {rms:.2f}°",
-    )  # fmt: skip
+    )
     i_min = int(np.argmin(b.contact_point_rebound_angle))
     negative = angles[b.contact_point_rebound_angle < 0.0]
     rep.numbers = {
@@ -141,10 +150,15 @@ def fig06(out: Path, quick: bool) -> FigureReport:
     data = kharaz_data()
     rms = kharaz_rms()
     plots.plot_spin(
-        angles, b.spin, *data["spin_rad_per_s"], b.tangential_restitution, *data["tangential_restitution"],
-        out / f"{rep.name}.png", f"model: H-DD (this toolkit), e = 0.98, μ = 0.092; points: {KHARAZ_SOURCE}",
+        angles,
+        b.spin,
+        *data["spin_rad_per_s"],
+        b.tangential_restitution,
+        *data["tangential_restitution"],
+        out / f"{rep.name}.png",
+        f"model: H-DD (this toolkit), e = 0.98, μ = 0.092; points: {KHARAZ_SOURCE}",
         note=f"RMS {rms['spin_rad_per_s']:.0f} rad/s",
-    )  # fmt: skip
+    )
     i = int(np.argmax(b.spin))
     rep.numbers = {
         "RMS spin (rad/s)": rms["spin_rad_per_s"],
@@ -181,9 +195,14 @@ def _wear_mass_series(setup: dict, angles, pressure: str, fe_table: Callable | N
     masses = []
     for a in angles:
         imp = simulate_impact(
-            setup["radius"], setup["ball"], setup["plate"], setup["speed"], float(a), setup["friction"],
+            setup["radius"],
+            setup["ball"],
+            setup["plate"],
+            setup["speed"],
+            float(a),
+            setup["friction"],
             restitution=setup["restitution"],
-        )  # fmt: skip
+        )
         fe = fe_table(imp) if fe_table is not None else None
         masses.append(wear_from_impact(imp, law, pressure=pressure, speed="sliding", fe=fe).mass_kg)
     return np.array(masses)
@@ -214,10 +233,11 @@ def fig09(out: Path, quick: bool) -> FigureReport:
     )
     law = f"K = {WEAR_LAW['K']:g} m^0.7 s^-0.7 Pa^-1"
     plots.plot_wear_mass(
-        series, out / f"{rep.name}.png",
+        series,
+        out / f"{rep.name}.png",
         f"this toolkit: H-DD impact + Eq. 15 (dw/dt = K p^α v^β, w a depth, {law}, gross-sliding speed), "
         "integrated over the moving contact patch; mass = plate density × worn volume",
-    )  # fmt: skip
+    )
     peaks = [_peak(s["angles"], s["mass"]) for s in series]
     names = ["default run case (FE)", "Kharaz case", "steel on aluminium"]
     rep.numbers = {}
@@ -260,11 +280,14 @@ def fig11(out: Path, quick: bool) -> FigureReport:
     )
     onset = math.degrees(math.atan(3.5 * k["friction"] * (1.0 + k["restitution"])))
     plots.plot_sliding_duration(
-        angles, speeds, ratio, out / f"{rep.name}.png",
+        angles,
+        speeds,
+        ratio,
+        out / f"{rep.name}.png",
         "this toolkit (H-DD, alumina on glass, μ 0.092, e 0.98); t_s = time in gross sliding, t* = contact time; "
         "rigid-body sliding-throughout limit tan θ = 3.5 μ (1 + e)",
         rigid_body=(onset, f"rigid body: slides throughout above {onset:.1f}°"),
-    )  # fmt: skip
+    )
     spread = float(np.max(np.ptp(ratio, axis=0)))
     rep.numbers = {"max spread of t_s/t* across speeds": spread, "rigid-body limit (deg)": onset}
     rep.paper = (

@@ -263,8 +263,10 @@ def parse_sweep(data: Mapping, *, source: str = "") -> SweepSpec:
         for key in flat:
             if tables is not None and key.split(".")[0] not in tables:
                 where = f"grid.{key}" if axes is not None else f"{label}.{key}"
-                raise ValueError(f"{where}: the {stage} stage does not read [{key.split('.')[0]}]; it reads "
-                                 f"{', '.join(f'[{t}]' for t in tables)}")  # fmt: skip
+                raise ValueError(
+                    f"{where}: the {stage} stage does not read [{key.split('.')[0]}]; it reads "
+                    f"{', '.join(f'[{t}]' for t in tables)}"
+                )
     cases: list[SweepCase] = []
     seen: dict[str, int] = {}
     for i, (flat, label) in enumerate(zip(overrides, labels, strict=True)):

@@ -30,7 +30,7 @@ def chung_ooi_test2(quick: bool) -> list[Check]:
         ("Al alloy R 0.1 m, 0.2 m/s", Material(70e9, 0.30, 2699.0), 0.1, 0.2, 49.717e-6, 11.370e3, 731.66e-6),
         ("Mg alloy R 0.1 m, 0.2 m/s", Material(40e9, 0.35, 1800.0), 0.1, 0.2, 52.123e-6, 7232.7, 767.07e-6),
         ("Al oxide R 2.5 mm, 3.9 m/s", AL_OXIDE, 2.5e-3, 3.9, 8.0888e-6, 615.35, 6.1045e-6),
-    ]  # fmt: skip
+    ]
     out = []
     for label, material, radius, speed, overlap, force, time in cases:
         r = simulate_impact(radius, material, RIGID, speed, 0.0, 0.0, history=False)
@@ -49,21 +49,36 @@ def chung_ooi_test3(quick: bool) -> list[Check]:
     for material in (AL_OXIDE, Material(E=100e9, nu=0.25, density=7000.0, name="cast iron")):
         es = np.array([0.2, 0.4, 0.6, 0.8])
         got = np.array(
-            [simulate_impact(2.5e-3, material, RIGID, 3.9, 0.0, 0.0, restitution=e, history=False).normal_restitution
-             for e in es]
-        )  # fmt: skip
+            [
+                simulate_impact(2.5e-3, material, RIGID, 3.9, 0.0, 0.0, restitution=e, history=False).normal_restitution
+                for e in es
+            ]
+        )
         worst = int(np.argmax(np.abs(got / es - 1)))
         out.append(
-            relative("contact", f"normal restitution (worst of e = 0.2-0.8: e = {es[worst]:g})",
-                     f"{material.name} R 2.5 mm on rigid, 3.9 m/s", es[worst], f"{CHUNG_OOI}, test 3",
-                     got[worst], 5e-3)
-        )  # fmt: skip
+            relative(
+                "contact",
+                f"normal restitution (worst of e = 0.2-0.8: e = {es[worst]:g})",
+                f"{material.name} R 2.5 mm on rigid, 3.9 m/s",
+                es[worst],
+                f"{CHUNG_OOI}, test 3",
+                got[worst],
+                5e-3,
+            )
+        )
     b = simulate_impacts(2.5e-3, AL_OXIDE, RIGID, [0.1, 1.0, 10.0], 0.0, 0.0, restitution=0.5)
     worst = float(b.normal_restitution[np.argmax(np.abs(b.normal_restitution - 0.5))])
     out.append(
-        relative("contact", "normal restitution at 0.1, 1, 10 m/s (worst)", "Al oxide on rigid, e = 0.5 asked", 0.5,
-                 "errata Eq. 6 (Tsuji et al. 1992 form): e independent of speed", worst, 5e-3)
-    )  # fmt: skip
+        relative(
+            "contact",
+            "normal restitution at 0.1, 1, 10 m/s (worst)",
+            "Al oxide on rigid, e = 0.5 asked",
+            0.5,
+            "errata Eq. 6 (Tsuji et al. 1992 form): e independent of speed",
+            worst,
+            5e-3,
+        )
+    )
     return out
 
 
@@ -77,10 +92,11 @@ def chung_ooi_test4(quick: bool) -> list[Check]:
     out = [
         relative("contact", "tangential restitution", case, 0.8456, src, r.tangential_restitution, 5e-3),
         relative("contact", "spin after impact", case, 461.26, src, r.spin, 5e-3, "rad/s"),
-        relative("contact", "contact-point rebound angle", case, 28.712, src, r.contact_point_rebound_angle, 5e-3,
-                 "deg"),
+        relative(
+            "contact", "contact-point rebound angle", case, 28.712, src, r.contact_point_rebound_angle, 5e-3, "deg"
+        ),
         relative("contact", "centre rebound angle", case, 45.221, src, r.rebound_angle, 5e-3, "deg"),
-    ]  # fmt: skip
+    ]
     e, mu = 0.98, 0.092
     angles = np.arange(40.0, 86.0, 5.0 if quick else 1.0)
     b = simulate_impacts(2.5e-3, AL_OXIDE, RIGID, 3.9, angles, mu, restitution=e)
@@ -110,8 +126,9 @@ def maw_barber_fawcett(quick: bool) -> list[Check]:
 
     def batch(psi1, model="hdd"):
         angle = np.degrees(np.arctan(mu * psi1))
-        return simulate_impacts(radius, steel, RIGID, 1.0 / np.cos(np.radians(angle)), angle, mu,
-                                tangential_model=model)  # fmt: skip
+        return simulate_impacts(
+            radius, steel, RIGID, 1.0 / np.cos(np.radians(angle)), angle, mu, tangential_model=model
+        )
 
     psi1 = np.array([6.0, 7.0, 8.0, 10.0, 15.0, 20.0])
     b = batch(psi1)
@@ -122,10 +139,18 @@ def maw_barber_fawcett(quick: bool) -> list[Check]:
     ratio = radius * np.abs(b.spin) / mu
     j = int(np.argmax(np.abs(ratio - 5)))
     out = [
-        absolute("contact", f"Ψ2 = Ψ1 − 7 (worst Ψ1 = {psi1[k]:g})", case, psi1[k] - 7, src, psi2[k], 0.035,
-                 measure="absolute (0.5% of 7)"),
+        absolute(
+            "contact",
+            f"Ψ2 = Ψ1 − 7 (worst Ψ1 = {psi1[k]:g})",
+            case,
+            psi1[k] - 7,
+            src,
+            psi2[k],
+            0.035,
+            measure="absolute (0.5% of 7)",
+        ),
         relative("contact", f"Rω/(μV_n) = 5 (worst Ψ1 = {psi1[j]:g})", case, 5.0, src, ratio[j], 5e-3),
-    ]  # fmt: skip
+    ]
     step = 0.01 if quick else 0.002
     for model, divisor in (("hdd", 2.0), ("mindlin", 3.0), ("mindlin_deresiewicz", 2.0)):
         ref = 7.0 - (2 - 0.3) / (divisor * (1 - 0.3))
@@ -134,9 +159,16 @@ def maw_barber_fawcett(quick: bool) -> list[Check]:
         slides = bb.sliding_time >= (bb.steps - 1) * bb.time_step * (1 - 1e-9)
         first = float(grid[np.argmax(slides)])
         out.append(
-            relative("contact", f"smallest Ψ1 sliding throughout ({model})", case.replace(", Ψ1 = 6-20", ""), ref,
-                     "Maw, Barber & Fawcett; Di Renzo & Di Maio 2005", first, 1e-2)
-        )  # fmt: skip
+            relative(
+                "contact",
+                f"smallest Ψ1 sliding throughout ({model})",
+                case.replace(", Ψ1 = 6-20", ""),
+                ref,
+                "Maw, Barber & Fawcett; Di Renzo & Di Maio 2005",
+                first,
+                1e-2,
+            )
+        )
     return out
 
 
@@ -169,14 +201,27 @@ def kharaz_2001(quick: bool) -> list[Check]:
         ("tangential_restitution", "tangential restitution", 0.06, ""),
     )
     checks = []
-    for model, case in (("hdd", "alumina R 2.5 mm on soda-lime glass, 3.9 m/s"),
-                        ("mindlin_deresiewicz", "the same, Mindlin–Deresiewicz tangential law")):  # fmt: skip
+    for model, case in (
+        ("hdd", "alumina R 2.5 mm on soda-lime glass, 3.9 m/s"),
+        ("mindlin_deresiewicz", "the same, Mindlin–Deresiewicz tangential law"),
+    ):
         rms = kharaz_rms(model)
         checks += [
-            Check("contact", f"RMS model − measured {label} ({data[key][0].size} points)", case, "measured points",
-                  src, rms[key], rms[key], tol, "RMS", unit, error_units=unit)
+            Check(
+                "contact",
+                f"RMS model − measured {label} ({data[key][0].size} points)",
+                case,
+                "measured points",
+                src,
+                rms[key],
+                rms[key],
+                tol,
+                "RMS",
+                unit,
+                error_units=unit,
+            )
             for key, label, tol, unit in rows
-        ]  # fmt: skip
+        ]
     return checks
 
 
@@ -200,11 +245,26 @@ def integration_and_energy(quick: bool) -> list[Check]:
     order = float(np.mean(np.log2(np.array(errors[:-1]) / np.array(errors[1:]))))
     r = simulate_impact(2.5e-3, AL_OXIDE, RIGID, 3.9, 30.0, 0.3, restitution=0.7, history=False)
     return [
-        absolute("contact", "observed order of convergence (velocity Verlet)", "steel R 5 mm, 2 m/s, 20°, μ 0.3",
-                 2.0, "second-order scheme (state at t_c/2, Δt = t_c/200-800)", order, 0.15),
-        relative("contact", "energy lost = normal work + friction work", "Al oxide, 3.9 m/s, 30°, μ 0.3, e 0.7",
-                 r.normal_work + r.friction_work, "conservation of energy", r.energy_in - r.energy_out, 1e-4, "J"),
-    ]  # fmt: skip
+        absolute(
+            "contact",
+            "observed order of convergence (velocity Verlet)",
+            "steel R 5 mm, 2 m/s, 20°, μ 0.3",
+            2.0,
+            "second-order scheme (state at t_c/2, Δt = t_c/200-800)",
+            order,
+            0.15,
+        ),
+        relative(
+            "contact",
+            "energy lost = normal work + friction work",
+            "Al oxide, 3.9 m/s, 30°, μ 0.3, e 0.7",
+            r.normal_work + r.friction_work,
+            "conservation of energy",
+            r.energy_in - r.energy_out,
+            1e-4,
+            "J",
+        ),
+    ]
 
 
 @register("contact")
@@ -213,39 +273,97 @@ def closed_forms(quick: bool) -> list[Check]:
     coefficient C(0.3) = 1.6128 at z = 0.481a (Johnson 1985 §6.2; errata Eq. 18), Green's (2005) fit, and the
     force carried by the Eq. 16 and Eq. 19 profiles (scipy quadrature)."""
     out = [
-        relative("contact", "Hertz contact radius", "E* 7.5 MPa, R 1 m, F 1e4 N", 0.1, "MOOSE contact Hertz benchmark",
-                 theory.hertz_contact_radius_from_force(1e4, 1.0, 7.5e6), 1e-6, "m"),
-        relative("contact", "Hertz overlap", "E* 7.5 MPa, R 1 m, F 1e4 N", 0.01, "MOOSE contact Hertz benchmark",
-                 theory.hertz_overlap(1e4, 1.0, 7.5e6), 1e-6, "m"),
-        absolute("contact", "first-yield coefficient C(ν) = p0/Y", "ν = 0.3", 1.6128,
-                 "Johnson 1985 §6.2; errata Eq. 18", theory.yield_coefficient(0.3), 1e-4),
-        absolute("contact", "first-yield depth z/a", "ν = 0.3", 0.481, "Johnson 1985 §6.2 (0.48a)",
-                 theory.yield_depth_ratio(0.3), 1e-3),
-    ]  # fmt: skip
+        relative(
+            "contact",
+            "Hertz contact radius",
+            "E* 7.5 MPa, R 1 m, F 1e4 N",
+            0.1,
+            "MOOSE contact Hertz benchmark",
+            theory.hertz_contact_radius_from_force(1e4, 1.0, 7.5e6),
+            1e-6,
+            "m",
+        ),
+        relative(
+            "contact",
+            "Hertz overlap",
+            "E* 7.5 MPa, R 1 m, F 1e4 N",
+            0.01,
+            "MOOSE contact Hertz benchmark",
+            theory.hertz_overlap(1e4, 1.0, 7.5e6),
+            1e-6,
+            "m",
+        ),
+        absolute(
+            "contact",
+            "first-yield coefficient C(ν) = p0/Y",
+            "ν = 0.3",
+            1.6128,
+            "Johnson 1985 §6.2; errata Eq. 18",
+            theory.yield_coefficient(0.3),
+            1e-4,
+        ),
+        absolute(
+            "contact",
+            "first-yield depth z/a",
+            "ν = 0.3",
+            0.481,
+            "Johnson 1985 §6.2 (0.48a)",
+            theory.yield_depth_ratio(0.3),
+            1e-3,
+        ),
+    ]
     nus = np.linspace(0.1, 0.45, 8)
     dev = [abs(theory.yield_coefficient(n) / float(theory.green_yield_coefficient(n)) - 1) for n in nus]
     k = int(np.argmax(dev))
     out.append(
-        relative("contact", f"C(ν) vs Green's fit (worst ν = {nus[k]:.2f})", "ν = 0.10-0.45",
-                 float(theory.green_yield_coefficient(nus[k])), "Green 2005, Proc. IMechE J 219 (fit within 0.1%)",
-                 theory.yield_coefficient(nus[k]), 1e-3)
-    )  # fmt: skip
+        relative(
+            "contact",
+            f"C(ν) vs Green's fit (worst ν = {nus[k]:.2f})",
+            "ν = 0.10-0.45",
+            float(theory.green_yield_coefficient(nus[k])),
+            "Green 2005, Proc. IMechE J 219 (fit within 0.1%)",
+            theory.yield_coefficient(nus[k]),
+            1e-3,
+        )
+    )
     a, p0 = 1e-4, 2e9
     force = 2 * math.pi * quad(lambda r: r * float(theory.hertz_pressure(r, a, p0)), 0, a, epsrel=1e-12)[0]
     out.append(
-        relative("contact", "∫ p dA of Eq. 16 (corrected Hertz profile)", "a 0.1 mm, p0 2 GPa",
-                 2 / 3 * math.pi * a * a * p0, "Johnson 1985: F = 2πa²p0/3", force, 1e-8, "N")
-    )  # fmt: skip
+        relative(
+            "contact",
+            "∫ p dA of Eq. 16 (corrected Hertz profile)",
+            "a 0.1 mm, p0 2 GPa",
+            2 / 3 * math.pi * a * a * p0,
+            "Johnson 1985: F = 2πa²p0/3",
+            force,
+            1e-8,
+            "N",
+        )
+    )
     a_star, p_star, x = 2e-4, 1.5e9, 0.6
-    f_mj = 2 * math.pi * quad(
-        lambda r: r * float(theory.mesarovic_johnson_pressure(r, x * a_star, a_star, p_star)), 0, x * a_star,
-        epsrel=1e-12, limit=200,
-    )[0]  # fmt: skip
+    f_mj = (
+        2
+        * math.pi
+        * quad(
+            lambda r: r * float(theory.mesarovic_johnson_pressure(r, x * a_star, a_star, p_star)),
+            0,
+            x * a_star,
+            epsrel=1e-12,
+            limit=200,
+        )[0]
+    )
     out.append(
-        relative("contact", "∫ p dA of Eq. 19 at a/a* = 0.6", "a* 0.2 mm, p* 1.5 GPa",
-                 float(theory.mesarovic_johnson_force(x * a_star, a_star, p_star)),
-                 "Mesarovic & Johnson 2000: F/F* = (2/π)[asin x − x√(1−x²)]", f_mj, 1e-6, "N")
-    )  # fmt: skip
+        relative(
+            "contact",
+            "∫ p dA of Eq. 19 at a/a* = 0.6",
+            "a* 0.2 mm, p* 1.5 GPa",
+            float(theory.mesarovic_johnson_force(x * a_star, a_star, p_star)),
+            "Mesarovic & Johnson 2000: F/F* = (2/π)[asin x − x√(1−x²)]",
+            f_mj,
+            1e-6,
+            "N",
+        )
+    )
     return out
 
 
@@ -290,8 +408,15 @@ def tabulated_law(quick: bool) -> list[Check]:
     lo = np.linspace(0, 2 * h.max_overlap, 3000)
     um = np.linspace(0.05, 2.0, 40) * h.max_overlap
     uo = np.array([np.linspace(d, 0.0, 400) for d in um])
-    law = TabulatedLaw(lo, theory.hertz_force(lo, radius, e_star), np.sqrt(radius * lo), um, uo,
-                       theory.hertz_force(uo, radius, e_star), np.sqrt(radius * uo))  # fmt: skip
+    law = TabulatedLaw(
+        lo,
+        theory.hertz_force(lo, radius, e_star),
+        np.sqrt(radius * lo),
+        um,
+        uo,
+        theory.hertz_force(uo, radius, e_star),
+        np.sqrt(radius * uo),
+    )
     speed = 2.0 / math.cos(math.radians(30))
     t = simulate_impact(radius, steel, RIGID, speed, 30.0, 0.3, normal_model="tabulated", force_law=law, history=False)
     case = "steel R 5 mm on rigid, Hertz table, v_n 2 m/s, 30°"
@@ -307,9 +432,16 @@ def tabulated_law(quick: bool) -> list[Check]:
     vy = yield_velocity(radius, ball, RIGID)
     b = simulate_impacts(radius, ball, RIGID, 5.0 * vy, 0.0, 0.0, normal_model="tabulated", force_law=law)
     out.append(
-        relative("contact", "normal restitution, table of Thornton's curves", "Al ball R 5 mm, Y 100 MPa, V/V_y = 5",
-                 float(theory.thornton_restitution(5.0)), "Thornton 1997 closed form", b.normal_restitution[0], 5e-3)
-    )  # fmt: skip
+        relative(
+            "contact",
+            "normal restitution, table of Thornton's curves",
+            "Al ball R 5 mm, Y 100 MPa, V/V_y = 5",
+            float(theory.thornton_restitution(5.0)),
+            "Thornton 1997 closed form",
+            b.normal_restitution[0],
+            5e-3,
+        )
+    )
     return out
 
 
@@ -327,8 +459,24 @@ def contact_halfspace(quick: bool) -> list[Check]:
     case = f"sphere R 2.5 mm, E* 150 GPa, 200 N, {cells // 4} cells across a"
     src = "Hertz (Johnson 1985 §4.2)"
     return [
-        relative("contact", "half-space solver: peak pressure", case, float(theory.hertz_peak_pressure(force, radius,
-                 e_star)), src, sol.max_pressure, 0.01, "Pa"),
-        relative("contact", "half-space solver: approach", case, float(theory.hertz_overlap(force, radius, e_star)),
-                 src, sol.approach, 0.01, "m"),
-    ]  # fmt: skip
+        relative(
+            "contact",
+            "half-space solver: peak pressure",
+            case,
+            float(theory.hertz_peak_pressure(force, radius, e_star)),
+            src,
+            sol.max_pressure,
+            0.01,
+            "Pa",
+        ),
+        relative(
+            "contact",
+            "half-space solver: approach",
+            case,
+            float(theory.hertz_overlap(force, radius, e_star)),
+            src,
+            sol.approach,
+            0.01,
+            "m",
+        ),
+    ]

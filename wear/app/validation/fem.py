@@ -35,8 +35,9 @@ def _indent(radius, plate, overlaps, elements: tuple[int, int], **kwargs):
     """``fem.indent`` (rigid ball) on a case mesh with ``elements`` = (P2 elements across the largest contact
     radius, across the first-yield contact radius; 0 = no first-yield box)."""
     overlaps = np.asarray(overlaps, dtype=float)
-    mesh = fem.plate_mesh(radius, plate, float(overlaps.max()), contact_elements=elements[0],
-                          yield_elements=elements[1])  # fmt: skip
+    mesh = fem.plate_mesh(
+        radius, plate, float(overlaps.max()), contact_elements=elements[0], yield_elements=elements[1]
+    )
     return fem.indent(radius=radius, plate=plate, overlaps=overlaps, mesh=mesh, **kwargs)
 
 
@@ -64,17 +65,28 @@ def fem_hertz(quick: bool) -> list[Check]:
     out = [
         relative("fem", "force", case, f_ref, src, float(res.force[-1]), 0.01, "N"),
         relative("fem", "contact radius", case, a_h, src, a, 0.03, "m"),
-        Check("fem", "pressure profile", case, p0, src, float(np.max(res.pressure[-1])), rms, 0.05,
-              "RMS(p − Hertz)/p0 inside a", "Pa"),
-    ]  # fmt: skip
+        Check(
+            "fem",
+            "pressure profile",
+            case,
+            p0,
+            src,
+            float(np.max(res.pressure[-1])),
+            rms,
+            0.05,
+            "RMS(p − Hertz)/p0 inside a",
+            "Pa",
+        ),
+    ]
     nu = 0.3
     moose = Material(E=7.5e6 * (1 - nu**2), nu=nu, density=1000.0)
     res = _indent(1.0, moose, [0.005, 0.01], (12, 0) if quick else (24, 0))
     case = "MOOSE: E* 7.5 MPa, R 1 m, δ 0.01 m"
     src = "MOOSE contact module Hertz benchmark"
     out.append(relative("fem", "force at δ = 0.01 m", case, 1e4, src, float(res.force[-1]), 0.02, "N"))
-    out.append(relative("fem", "contact radius at δ = 0.01 m", case, 0.1, src, float(res.contact_radius[-1]), 0.02,
-                        "m"))  # fmt: skip
+    out.append(
+        relative("fem", "contact radius at δ = 0.01 m", case, 0.1, src, float(res.contact_radius[-1]), 0.02, "m")
+    )
     return out
 
 
@@ -88,18 +100,40 @@ def fem_first_yield(quick: bool) -> list[Check]:
     fy = res.first_yield
     case = f"{CASE}, Y 210 MPa"
     out = [
-        relative("fem", "first-yield force", case, fc.force, "F_c, errata Eq. 18 with exact C(0.3) = 1.6128",
-                 math.nan if fy is None else fy.force, 0.03, "N"),
-        absolute("fem", "first-yield depth / a_c", case, 0.481, "Johnson 1985 §6.2 (z = 0.481a)",
-                 math.nan if fy is None else fy.depth / fc.contact_radius, 0.03),
-    ]  # fmt: skip
+        relative(
+            "fem",
+            "first-yield force",
+            case,
+            fc.force,
+            "F_c, errata Eq. 18 with exact C(0.3) = 1.6128",
+            math.nan if fy is None else fy.force,
+            0.03,
+            "N",
+        ),
+        absolute(
+            "fem",
+            "first-yield depth / a_c",
+            case,
+            0.481,
+            "Johnson 1985 §6.2 (z = 0.481a)",
+            math.nan if fy is None else fy.depth / fc.contact_radius,
+            0.03,
+        ),
+    ]
     d09 = float((0.9 * fc.force * 3 / (4 * E_STAR * math.sqrt(R))) ** (2 / 3))
     path = np.concatenate([np.linspace(0, d09, 4)[1:], np.linspace(d09, 0, 4)[1:]])
     res = _indent(R, _plate(), path, (8, 8) if quick else (16, 16))
     out.append(
-        absolute("fem", "max equivalent plastic strain after 0.9 F_c", case, 0.0, "elastic below F_c (Eq. 18)",
-                 float(np.max(res.max_equivalent_plastic_strain)), 1e-12)
-    )  # fmt: skip
+        absolute(
+            "fem",
+            "max equivalent plastic strain after 0.9 F_c",
+            case,
+            0.0,
+            "elastic below F_c (Eq. 18)",
+            float(np.max(res.max_equivalent_plastic_strain)),
+            1e-12,
+        )
+    )
     return out
 
 
@@ -132,24 +166,49 @@ def fem_elastic_plastic(quick: bool) -> list[Check]:
         k = int(np.argmin(np.abs(w_load - w)))
         p_ref, a_ref = _kogut_etsion(w)
         out.append(relative("fem", f"P/P_c at w = {w:g}", CASE + ", Y 210 MPa", p_ref, src, res.force[k] / pc, 0.15))
-        out.append(relative("fem", f"A/A_c at w = {w:g}", CASE + ", Y 210 MPa", a_ref, src,
-                            math.pi * res.contact_radius[k] ** 2 / ac, 0.15))  # fmt: skip
+        out.append(
+            relative(
+                "fem",
+                f"A/A_c at w = {w:g}",
+                CASE + ", Y 210 MPa",
+                a_ref,
+                src,
+                math.pi * res.contact_radius[k] ** 2 / ac,
+                0.15,
+            )
+        )
     regimes = [res.regime[i] for i in range(w_load.size)]
     surface = [w for w, g in zip(w_load, regimes, strict=True) if g in ("surface-plastic", "fully-plastic")]
     w_surface = float(surface[0]) if surface else math.inf
     out.append(
-        Check("fem", "w at which the plastic zone reaches the surface", CASE + ", Y 210 MPa", "4 ≤ w ≤ 10",
-              "Kogut & Etsion 2002", w_surface, max(4.0 - w_surface, w_surface - 10.0, 0.0),
-              0.0, "distance outside [4, 10]")
-    )  # fmt: skip
+        Check(
+            "fem",
+            "w at which the plastic zone reaches the surface",
+            CASE + ", Y 210 MPa",
+            "4 ≤ w ≤ 10",
+            "Kogut & Etsion 2002",
+            w_surface,
+            max(4.0 - w_surface, w_surface - 10.0, 0.0),
+            0.0,
+            "distance outside [4, 10]",
+        )
+    )
     k_star = w_load.size - 1
     k1 = k_star + 1
     stiffness = (res.force[k_star] - res.force[k1]) / (path[k_star] - path[k1])
     a_mid = 0.5 * (res.contact_radius[k_star] + res.contact_radius[k1])
     out.append(
-        relative("fem", "unloading stiffness dF/dδ at w = 50", CASE + ", Y 210 MPa", 2 * E_STAR * a_mid,
-                 "exact for elastic unloading: 2E*a (Johnson 1985 Eq. 3.22)", stiffness, 0.03, "N/m")
-    )  # fmt: skip
+        relative(
+            "fem",
+            "unloading stiffness dF/dδ at w = 50",
+            CASE + ", Y 210 MPa",
+            2 * E_STAR * a_mid,
+            "exact for elastic unloading: 2E*a (Johnson 1985 Eq. 3.22)",
+            stiffness,
+            0.03,
+            "N/m",
+        )
+    )
     a_star, f_star = float(res.contact_radius[k_star]), float(res.force[k_star])
     p_star = f_star / (math.pi * a_star**2)
     r = np.asarray(res.surface_r)
@@ -162,11 +221,19 @@ def fem_elastic_plastic(quick: bool) -> list[Check]:
         inside = r <= a_star
         rms = float(np.sqrt(np.mean((res.pressure[k][inside] - ref[inside]) ** 2)) / p_star)
         out.append(
-            Check("fem", f"unloading pressure on the axis, a/a* = {a / a_star:.2f}", CASE + ", Y 210 MPa, from w = 50",
-                  float(ref[axis]), "Mesarovic & Johnson 2000 (Eq. 19) with the FE's a*, p*",
-                  float(res.pressure[k][axis]),
-                  rms, 0.15, "RMS(p − Eq. 19)/p* over r ≤ a*", "Pa")
-        )  # fmt: skip
+            Check(
+                "fem",
+                f"unloading pressure on the axis, a/a* = {a / a_star:.2f}",
+                CASE + ", Y 210 MPa, from w = 50",
+                float(ref[axis]),
+                "Mesarovic & Johnson 2000 (Eq. 19) with the FE's a*, p*",
+                float(res.pressure[k][axis]),
+                rms,
+                0.15,
+                "RMS(p − Eq. 19)/p* over r ≤ a*",
+                "Pa",
+            )
+        )
     return out
 
 
@@ -191,10 +258,11 @@ def fem_worn_surface(quick: bool) -> list[Check]:
     case = f"elastic {CASE}, worn pit 0.5 a₀²/R deep, a₀ wide"
     src = "half-space BEM (Love 1929; Polonsky & Keer 1999), same gap and force"
     return [
-        relative("fem", "peak pressure on a worn pit", case, bem.max_pressure, src, float(res.pressure[-1].max()),
-                 0.03, "Pa"),
+        relative(
+            "fem", "peak pressure on a worn pit", case, bem.max_pressure, src, float(res.pressure[-1].max()), 0.03, "Pa"
+        ),
         relative("fem", "approach on a worn pit", case, bem.approach, src, float(res.overlap[-1]), 0.01, "m"),
-    ]  # fmt: skip
+    ]
 
 
 @register("fem")
@@ -218,8 +286,17 @@ def fem_elastic_reload(quick: bool) -> list[Check]:
     case = f"{CASE}, Y 210 MPa, dent of 8 δ_y, elastic reload"
     src = "half-space BEM (Love 1929; Polonsky & Keer 1999), the dent's gap, same force"
     return [
-        relative("fem", "peak pressure, elastic reload of a dent", case, bem.max_pressure, src,
-                 float(res.max_pressure[0]), 0.03, "Pa"),
-        relative("fem", "approach, elastic reload of a dent", case, bem.approach, src, float(res.overlap[0]), 0.02,
-                 "m"),
-    ]  # fmt: skip
+        relative(
+            "fem",
+            "peak pressure, elastic reload of a dent",
+            case,
+            bem.max_pressure,
+            src,
+            float(res.max_pressure[0]),
+            0.03,
+            "Pa",
+        ),
+        relative(
+            "fem", "approach, elastic reload of a dent", case, bem.approach, src, float(res.overlap[0]), 0.02, "m"
+        ),
+    ]

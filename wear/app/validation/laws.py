@@ -23,8 +23,9 @@ from wear.chain.trends import law_trends
 from wear.laws import dnv_angle_function, finnie_volume, oka_erosion_ratio
 
 #: The calibration case: silica sand on carbon steel (impactwear calibrate's default) of Oka's hardness.
-CASE = default_case("calibrate").with_(plate={"hardness": OKA_CARBON_STEEL["hardness"]},
-                                       wear={"deformation_factor": 1e10})  # fmt: skip
+CASE = default_case("calibrate").with_(
+    plate={"hardness": OKA_CARBON_STEEL["hardness"]}, wear={"deformation_factor": 1e10}
+)
 CASE_TEXT = "silica sand R 150 um on carbon steel (Y 350 MPa, H 1.4 GPa), Thornton"
 
 
@@ -44,16 +45,43 @@ def wear_law_closed_forms(quick: bool) -> list[Check]:
     return [
         absolute("wear", "Finnie angle of maximum", "K = 2", 16.8450, "Finnie 1960: tan 2a = K/3", peak, 0.01, "deg"),
         absolute("wear", "Finnie at normal incidence", "K = 2", 0.0, "Finnie 1960", float(v[0] / v.max()), 1e-12),
-        relative("wear", "DNV F(a), normal incidence", "ductile", 0.6, "DNV-RP-O501 (2015) Eq. 3.3",
-                 float(dnv_angle_function(0.0)), 1e-9),
-        relative("wear", "DNV F(a), 30 deg from the surface", "ductile", dnv30, "DNV-RP-O501 (2015), by hand",
-                 float(dnv_angle_function(60.0)), 1e-9),
-        relative("wear", "Oka E at the reference point", "Hv 1.8 GPa, 104 m/s, 326 um, 90 deg", 6.154e-4,
-                 "Oka et al. 2005 (E = E90 there)", float(oka_erosion_ratio(104.0, 0.0, 1.8e9, 326e-6, 6.154e-4)),
-                 1e-12),
-        relative("wear", "Oka E at 30 deg from the surface", "Hv 1.8 GPa, 104 m/s, 326 um", oka30,
-                 "Oka et al. 2005, by hand", float(oka_erosion_ratio(104.0, 60.0, 1.8e9, 326e-6, 6.154e-4)), 1e-12),
-    ]  # fmt: skip
+        relative(
+            "wear",
+            "DNV F(a), normal incidence",
+            "ductile",
+            0.6,
+            "DNV-RP-O501 (2015) Eq. 3.3",
+            float(dnv_angle_function(0.0)),
+            1e-9,
+        ),
+        relative(
+            "wear",
+            "DNV F(a), 30 deg from the surface",
+            "ductile",
+            dnv30,
+            "DNV-RP-O501 (2015), by hand",
+            float(dnv_angle_function(60.0)),
+            1e-9,
+        ),
+        relative(
+            "wear",
+            "Oka E at the reference point",
+            "Hv 1.8 GPa, 104 m/s, 326 um, 90 deg",
+            6.154e-4,
+            "Oka et al. 2005 (E = E90 there)",
+            float(oka_erosion_ratio(104.0, 0.0, 1.8e9, 326e-6, 6.154e-4)),
+            1e-12,
+        ),
+        relative(
+            "wear",
+            "Oka E at 30 deg from the surface",
+            "Hv 1.8 GPa, 104 m/s, 326 um",
+            oka30,
+            "Oka et al. 2005, by hand",
+            float(oka_erosion_ratio(104.0, 60.0, 1.8e9, 326e-6, 6.154e-4)),
+            1e-12,
+        ),
+    ]
 
 
 @register("wear")
@@ -66,11 +94,28 @@ def deformation_wear_onset(quick: bool) -> list[Check]:
     data = CalibrationData(np.zeros(2), np.array([0.95 * v_y, 1.2 * v_y]), "volume_per_impact_m3", np.ones(2), {})
     below, above = ForwardModel(case, data).predict({})
     return [
-        absolute("wear", "deformation wear below V_y", CASE_TEXT, 0.0, "Thornton 1997: no plastic work below V_y",
-                 below, 0.0, "m^3"),
-        Check("wear", "deformation wear above V_y", CASE_TEXT, "> 0", "Thornton 1997: plastic work above V_y",
-              f"{above:.3e}", 0.0 if above > 0 else math.inf, 0.0, "error"),
-    ]  # fmt: skip
+        absolute(
+            "wear",
+            "deformation wear below V_y",
+            CASE_TEXT,
+            0.0,
+            "Thornton 1997: no plastic work below V_y",
+            below,
+            0.0,
+            "m^3",
+        ),
+        Check(
+            "wear",
+            "deformation wear above V_y",
+            CASE_TEXT,
+            "> 0",
+            "Thornton 1997: plastic work above V_y",
+            f"{above:.3e}",
+            0.0 if above > 0 else math.inf,
+            0.0,
+            "error",
+        ),
+    ]
 
 
 _ROUND_TRIP = (
@@ -124,15 +169,30 @@ def calibration_round_trip(quick: bool) -> list[Check]:
         result = calibrate(case, CalibrationData(a[keep], v[keep], "erosion_kg_per_kg", noisy, {}), tuple(truth))
         for name, value, interval in zip(result.fit.names, result.fit.values, result.fit.intervals, strict=True):
             out.append(_inside(f"calibrated {name} ({law})", truth[name], value, interval))
-    single = CalibrationData(angles, np.full(angles.size, 50.0), "erosion_kg_per_kg",
-                             ForwardModel(CASE.with_(wear={"law": "dnv"}), CalibrationData(
-                                 angles, np.full(angles.size, 50.0), "erosion_kg_per_kg", angles, {})).predict({}),
-                             {})  # fmt: skip
+    single = CalibrationData(
+        angles,
+        np.full(angles.size, 50.0),
+        "erosion_kg_per_kg",
+        ForwardModel(
+            CASE.with_(wear={"law": "dnv"}),
+            CalibrationData(angles, np.full(angles.size, 50.0), "erosion_kg_per_kg", angles, {}),
+        ).predict({}),
+        {},
+    )
     result = calibrate(CASE.with_(wear={"law": "dnv"}), single, ("dnv_K", "dnv_n"))
-    out.append(Check("wear", "dnv_n from a single speed", "50 m/s, 10 angles", "not determined",
-                     "identifiability (the exponent trades off against K)",
-                     "not determined" if not result.fit.determined[1] else f"{result.fit.values[1]:.4g}",
-                     0.0 if not result.fit.determined[1] else math.inf, 0.0, "error"))  # fmt: skip
+    out.append(
+        Check(
+            "wear",
+            "dnv_n from a single speed",
+            "50 m/s, 10 angles",
+            "not determined",
+            "identifiability (the exponent trades off against K)",
+            "not determined" if not result.fit.determined[1] else f"{result.fit.values[1]:.4g}",
+            0.0 if not result.fit.determined[1] else math.inf,
+            0.0,
+            "error",
+        )
+    )
     return out
 
 
@@ -145,14 +205,26 @@ def laws_against_measured_trends(quick: bool) -> list[Check]:
     fit = calibrate(CASE.with_(wear={"law": "combined"}), oka_curve((30.0, 60.0)), ("K", "beta", "deformation_factor"))
     trends = law_trends(fit.case)
     out = []
-    for name, value in (("velocity_exponent", trends.velocity_exponent), ("peak_angle_deg", trends.peak_angle),
-                        ("normal_to_max", trends.normal_to_max)):  # fmt: skip
+    for name, value in (
+        ("velocity_exponent", trends.velocity_exponent),
+        ("peak_angle_deg", trends.peak_angle),
+        ("normal_to_max", trends.normal_to_max),
+    ):
         lo, hi = MEASURED_EROSION[name]
-        out.append(absolute("wear", f"combined law: {name.replace('_', ' ')}", "calibrated on Oka's curve, 2 speeds",
-                            0.5 * (lo + hi), f"measured range [{lo:g}, {hi:g}] (Finnie; Oka 2005; DNV; Hutchings "
-                            "1981)", value, 0.5 * (hi - lo)))  # fmt: skip
+        out.append(
+            absolute(
+                "wear",
+                f"combined law: {name.replace('_', ' ')}",
+                "calibrated on Oka's curve, 2 speeds",
+                0.5 * (lo + hi),
+                f"measured range [{lo:g}, {hi:g}] (Finnie; Oka 2005; DNV; Hutchings 1981)",
+                value,
+                0.5 * (hi - lo),
+            )
+        )
     dnv = calibrate(CASE.with_(wear={"law": "dnv"}), oka_curve((30.0, 60.0)), ("dnv_K", "dnv_n"))
     k2 = 2.3 * (OKA_CARBON_STEEL["hardness"] / 1e9) ** 0.038
-    out.append(relative("wear", "DNV exponent fitted to Oka's curve", "2 speeds", k2, OKA_SOURCE, dnv.fit.values[1],
-                        0.01))  # fmt: skip
+    out.append(
+        relative("wear", "DNV exponent fitted to Oka's curve", "2 speeds", k2, OKA_SOURCE, dnv.fit.values[1], 0.01)
+    )
     return out

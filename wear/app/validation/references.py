@@ -57,8 +57,16 @@ def kharaz_data() -> dict[str, tuple[np.ndarray, np.ndarray]]:
 def kharaz_batch(angles, tangential_model: str = "hdd") -> BatchResult:
     """The Kharaz setup simulated at ``angles`` (deg from the normal) with the engine's ``tangential_model``."""
     k = KHARAZ
-    return simulate_impacts(k["radius"], k["ball"], k["plate"], k["speed"], angles, k["friction"], k["restitution"],
-                            tangential_model=tangential_model)  # fmt: skip
+    return simulate_impacts(
+        k["radius"],
+        k["ball"],
+        k["plate"],
+        k["speed"],
+        angles,
+        k["friction"],
+        k["restitution"],
+        tangential_model=tangential_model,
+    )
 
 
 def _rms(model, data) -> float:
@@ -90,8 +98,11 @@ def unloading_path_w(quick: bool) -> tuple[np.ndarray, np.ndarray]:
         w_load = np.array([0.25, 0.5, 0.75, 1, 1.25, 1.5, 2, 3, 4, 5, 6, 8, 10, 14, 20, 30, 40, 50], dtype=float)
         w_unload = np.concatenate([[50.0 * 0.995], np.linspace(49.0, 29.0, 11)])
     else:
-        w_load = np.unique(np.concatenate([np.linspace(0.25, 2, 8), np.linspace(2.5, 6, 8), np.linspace(7, 20, 14),
-                                           np.linspace(22, 50, 15)]))  # fmt: skip
+        w_load = np.unique(
+            np.concatenate(
+                [np.linspace(0.25, 2, 8), np.linspace(2.5, 6, 8), np.linspace(7, 20, 14), np.linspace(22, 50, 15)]
+            )
+        )
         w_unload = np.concatenate([[50.0 * 0.995], np.linspace(49.0, 28.0, 22)])
     return w_load, w_unload
 
@@ -100,8 +111,12 @@ def unloading_path_w(quick: bool) -> tuple[np.ndarray, np.ndarray]:
 #: their correlation's angle and speed dependence (n₁ = 0.71 H_v^0.14, n₂ = 2.4 H_v^−0.94, k₂ = 2.3 H_v^0.038). Its
 #: scale E90 (kg/kg at 104 m/s, 326 µm) is the sand–steel value of the Ansys Fluent Theory Guide's Oka example
 #: (6.154e-4): it only scales the curve, which every law is calibrated to.
-OKA_CARBON_STEEL = {"hardness": 1.4e9, "diameter": 300e-6, "e90": 6.154e-4,
-                    "angles": (0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 55.0, 60.0, 65.0, 70.0, 75.0, 80.0)}  # fmt: skip
+OKA_CARBON_STEEL = {
+    "hardness": 1.4e9,
+    "diameter": 300e-6,
+    "e90": 6.154e-4,
+    "angles": (0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 55.0, 60.0, 65.0, 70.0, 75.0, 80.0),
+}
 OKA_SOURCE = "Oka, Okamura & Yoshida 2005, Wear 259: 95-109 (correlation, carbon steel Hv 1.4 GPa, SiO2 300 um)"
 
 #: The measured ranges of ductile metals: velocity exponent (Finnie; Oka et al. 2005; DNV-RP-O501 n = 2.6), the angle

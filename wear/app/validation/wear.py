@@ -55,18 +55,32 @@ def steady_track(quick: bool) -> list[Check]:
         K = 1e-13 * 1e9 ** (1.0 - alpha)  # depths of ~10 nm whatever α (K in m^(1-β) s^(β-1) Pa^(-α))
         t = np.linspace(0.0, 8 * a / v, 9)
         ph = hertz_pressure_history(t, v * t, np.full(t.size, a), np.full(t.size, force))
-        wm = integrate_wear(ph, SlidingSpeed(t, np.full(t.size, v)), WearLaw(K, alpha, beta), density=7800.0,
-                            points_across=64 if quick else 160)  # fmt: skip
+        wm = integrate_wear(
+            ph,
+            SlidingSpeed(t, np.full(t.size, v)),
+            WearLaw(K, alpha, beta),
+            density=7800.0,
+            points_across=64 if quick else 160,
+        )
         h = wm.depth[:, np.argmin(np.abs(wm.x - 4 * a))]
         shape = math.sqrt(math.pi) * gamma(alpha / 2 + 1) / gamma(alpha / 2 + 1.5)
         exact = K * v ** (beta - 1) * p0**alpha * a * np.clip(1 - (wm.y / a) ** 2, 0, None) ** ((alpha + 1) / 2)
         exact *= shape
         err = float(np.max(np.abs(h - exact)) / exact.max())
         out.append(
-            Check("wear", f"track depth h(y), α = {alpha:g}, β = {beta:g}", "a 0.1 mm, p0 1.2 GPa, v 2 m/s",
-                  float(exact.max()), "closed form", float(h.max()), err, 0.01,
-                  "max |Δh| / max h", "m")
-        )  # fmt: skip
+            Check(
+                "wear",
+                f"track depth h(y), α = {alpha:g}, β = {beta:g}",
+                "a 0.1 mm, p0 1.2 GPa, v 2 m/s",
+                float(exact.max()),
+                "closed form",
+                float(h.max()),
+                err,
+                0.01,
+                "max |Δh| / max h",
+                "m",
+            )
+        )
     return out
 
 
@@ -87,10 +101,17 @@ def impulse_identity(quick: bool) -> list[Check]:
         vn, _ = speed_components(imp.speed, angle)
         expected = law.K * imp.mass * vn * (1.0 + imp.normal_restitution)
         out.append(
-            relative("wear", f"worn volume = K m V_n (1+e), {source} pressure", f"{CASE}, 5 m/s, {angle:g}°, "
-                     f"{model} impact" + (f", e {e:g}" if model == "hertz" else ""), expected,
-                     "conservation of momentum", wm.volume_m3, 5e-3, "m³")
-        )  # fmt: skip
+            relative(
+                "wear",
+                f"worn volume = K m V_n (1+e), {source} pressure",
+                f"{CASE}, 5 m/s, {angle:g}°, {model} impact" + (f", e {e:g}" if model == "hertz" else ""),
+                expected,
+                "conservation of momentum",
+                wm.volume_m3,
+                5e-3,
+                "m³",
+            )
+        )
     return out
 
 
@@ -131,10 +152,19 @@ def hertz_impact_profile(quick: bool) -> list[Check]:
         ("2-D depth map centreline", case, line / wm.centreline().max(), quadrature, "quadrature (this module)", 0.01),
     )
     return [
-        Check("wear", f"h(0.75 a_max)/h(0), {label}", where, float(ref[3]), src, float(got[3]),
-              float(np.max(np.abs(got - ref))), tol, measure)
+        Check(
+            "wear",
+            f"h(0.75 a_max)/h(0), {label}",
+            where,
+            float(ref[3]),
+            src,
+            float(got[3]),
+            float(np.max(np.abs(got - ref))),
+            tol,
+            measure,
+        )
         for label, where, got, ref, src, tol in rows
-    ]  # fmt: skip
+    ]
 
 
 @register("wear")
@@ -155,14 +185,37 @@ def sliding_and_additivity(quick: bool) -> list[Check]:
     law1 = WearLaw(1e-12, 1.0, 1.0)
     wm1 = wear_from_impact(archard, law1, pressure="hertz", speed="sliding")
     return [
-        absolute("wear", "worn volume, normal impact, β = 0.3, sliding speed", f"{CASE}, 5 m/s, 0°", 0.0,
-                 "no slip at normal incidence", wm0.volume_m3, 0.0, "m³"),
-        relative("wear", "worn volume of 5 identical impacts", f"{CASE}, 5 m/s, 55°", 5 * one.volume_m3,
-                 "additivity of Eq. 15", many.volume_m3, 1e-12, "m³"),
-        relative("wear", "worn volume, α = 1, β = 1, sliding throughout", f"{CASE}, 5 m/s, 70°, e 0.9",
-                 law1.K * archard.friction_work / archard.friction, "Archard: V = K W_f / μ", wm1.volume_m3, 5e-3,
-                 "m³"),
-    ]  # fmt: skip
+        absolute(
+            "wear",
+            "worn volume, normal impact, β = 0.3, sliding speed",
+            f"{CASE}, 5 m/s, 0°",
+            0.0,
+            "no slip at normal incidence",
+            wm0.volume_m3,
+            0.0,
+            "m³",
+        ),
+        relative(
+            "wear",
+            "worn volume of 5 identical impacts",
+            f"{CASE}, 5 m/s, 55°",
+            5 * one.volume_m3,
+            "additivity of Eq. 15",
+            many.volume_m3,
+            1e-12,
+            "m³",
+        ),
+        relative(
+            "wear",
+            "worn volume, α = 1, β = 1, sliding throughout",
+            f"{CASE}, 5 m/s, 70°, e 0.9",
+            law1.K * archard.friction_work / archard.friction,
+            "Archard: V = K W_f / μ",
+            wm1.volume_m3,
+            5e-3,
+            "m³",
+        ),
+    ]
 
 
 @register("wear")
@@ -209,11 +262,26 @@ def erosion_flux_balance(quick: bool) -> list[Check]:
     n_expected = conc * speed * math.cos(math.radians(angle)) * result.patch_size**2 * exposure / m_p
     case = "silica R 100 µm on steel, 20 m/s, 45°, c 0.464 kg/m³, 20 s"
     return [
-        absolute("wear", "number of impacts on the patch", case, round(n_expected), "flux balance c V cos θ A T / m_p",
-                 result.n_impacts, 0.0),
-        relative("wear", "eroded mass (flat plate)", case, result.n_impacts * single.volume_m3 * steel.density,
-                 "N × single-impact chain × density", float(result.mass_loss_kg[-1]), 5e-3, "kg"),
-    ]  # fmt: skip
+        absolute(
+            "wear",
+            "number of impacts on the patch",
+            case,
+            round(n_expected),
+            "flux balance c V cos θ A T / m_p",
+            result.n_impacts,
+            0.0,
+        ),
+        relative(
+            "wear",
+            "eroded mass (flat plate)",
+            case,
+            result.n_impacts * single.volume_m3 * steel.density,
+            "N × single-impact chain × density",
+            float(result.mass_loss_kg[-1]),
+            5e-3,
+            "kg",
+        ),
+    ]
 
 
 @register("wear")
@@ -227,20 +295,31 @@ def coupling(quick: bool) -> list[Check]:
     elastic = base.with_(plate={"yield_strength": None}, impact={"angle": 0.0})
     res = run(elastic)
     ball, plate = elastic.ball.material(), elastic.plate.material()
-    ref = hertz_impact(sphere_mass(elastic.ball.radius, ball.density), elastic.ball.radius, e_star_of(ball, plate),
-                       elastic.impact.speed)  # fmt: skip
+    ref = hertz_impact(
+        sphere_mass(elastic.ball.radius, ball.density),
+        elastic.ball.radius,
+        e_star_of(ball, plate),
+        elastic.impact.speed,
+    )
     case = f"{ball.name} R {elastic.ball.radius * 1e3:g} mm on elastic {plate.name}, {elastic.impact.speed:g} m/s"
     src = "Hertz impact closed form (errata Eqs. 10-11)"
     out = [
         relative("wear", "coupled FE impact: max force", case, ref.max_force, src, res.impact.max_force, 0.01, "N"),
-        relative("wear", "coupled FE impact: contact time", case, ref.contact_time, src, res.impact.contact_time,
-                 0.01, "s"),
-    ]  # fmt: skip
+        relative(
+            "wear", "coupled FE impact: contact time", case, ref.contact_time, src, res.impact.contact_time, 0.01, "s"
+        ),
+    ]
     sweep = restitution_sweep(base, [1.5, 2.0])
     for x, e, e_t in zip(sweep.speed_ratio, sweep.restitution, sweep.thornton, strict=True):
         out.append(
-            relative("wear", f"coupled FE normal restitution at V/V_y = {x:g}",
-                     f"{base.ball.name} on {base.plate.name} (Y {base.plate.yield_strength / 1e6:g} MPa), normal",
-                     e_t, "Thornton 1997, J. Appl. Mech. 64:383", e, 0.05)
-        )  # fmt: skip
+            relative(
+                "wear",
+                f"coupled FE normal restitution at V/V_y = {x:g}",
+                f"{base.ball.name} on {base.plate.name} (Y {base.plate.yield_strength / 1e6:g} MPa), normal",
+                e_t,
+                "Thornton 1997, J. Appl. Mech. 64:383",
+                e,
+                0.05,
+            )
+        )
     return out
