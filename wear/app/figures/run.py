@@ -41,12 +41,10 @@ def force_overlap(result, path) -> Path:
     ax1.legend(loc="upper right", fontsize=8)
     ax1.set_title(f"impact ({result.impact.normal_model} normal law)")
     ax3.plot(h.overlap * 1e6, h.normal_force, "C0", label="impact")
-    fe = result.fe
-    if fe is not None:
-        ax3.plot(np.asarray(fe.overlap) * 1e6, fe.force, "k.", ms=3, label="FE steps (axisymmetric)")
-    if result.solid is not None:
-        steps = result.solid.solid
-        ax3.plot(steps.overlap[:-1] * 1e6, steps.normal_force[:-1], "C3x", ms=4, label="3-D plate steps")
+    for (overlap, force, label), (style, size) in zip(
+        result.plate.force_steps(), (("k.", 3), ("C3x", 4)), strict=False
+    ):
+        ax3.plot(overlap * 1e6, force, style, ms=size, label=label)
     ax3.set_xlabel("overlap (µm)")
     ax3.set_ylabel("normal force (N)")
     ax3.legend(fontsize=8)
@@ -109,9 +107,9 @@ def cross_sections(result, path) -> Path:
     the axisymmetric plate's dent it started from, centred at the same point."""
     s = result.surface
     axisymmetric = None
-    if result.solid is not None and result.fe is not None:
-        order = np.argsort(result.fe.surface_r)
-        r_fe, h_fe = np.asarray(result.fe.surface_r)[order], np.asarray(result.fe.residual_depth)[order]
+    start = result.plate.start_dent()
+    if start is not None:
+        r_fe, h_fe = start
 
         def axisymmetric(offset):
             return np.interp(np.abs(offset), r_fe, h_fe, right=0.0)
@@ -166,16 +164,10 @@ def restitution_comparison(speed_ratio, coupled_restitution, path, thornton=None
 def plastic_zone(result, path) -> Path:
     """The 3-D plate's equivalent plastic strain on the plane of incidence y = 0 (elements with a face on it), x
     along the impact against depth, after the impact."""
-    solid = result.solid.solid
-    mesh = solid.solver.disc.mesh
-    on_plane = np.abs(mesh.p[1]) <= 1e-9 * float(np.ptp(mesh.p[0]))
-    touching = on_plane[mesh.t].sum(axis=0) >= 3
-    centroid = mesh.p[:, mesh.t[:, touching]].mean(axis=1)
-    eps = solid.final.alpha.mean(axis=1)[touching]
-    a = float(np.max(solid.contact_radius))
-    near = (np.abs(centroid[0] - result.surface.dent_centre[0]) < 3.0 * a) & (centroid[2] > -3.0 * a)
+    x, z, eps, a = result.plate.plastic_section()
+    near = (np.abs(x - result.surface.dent_centre[0]) < 3.0 * a) & (z > -3.0 * a)
     fig, ax = plt.subplots(figsize=(8, 4))
-    art = ax.tricontourf(centroid[0, near] * 1e6, centroid[2, near] * 1e6, eps[near], levels=12, cmap="magma_r")
+    art = ax.tricontourf(x[near] * 1e6, z[near] * 1e6, eps[near], levels=12, cmap="magma_r")
     fig.colorbar(art, ax=ax, label="equivalent plastic strain")
     ax.set_aspect("equal")
     ax.set_xlabel("x along the impact (µm), plane of incidence y = 0")
@@ -194,6 +186,6 @@ def write_run_figures(result, folder: str | os.PathLike) -> list[Path]:
         wear_map(result, folder / "wear_map.png"),
         cross_sections(result, folder / "cross_sections.png"),
     ]
-    if result.solid is not None:
+    if result.plate.plastic_section() is not None:
         paths.append(plastic_zone(result, folder / "plastic_zone.png"))
     return paths

@@ -22,8 +22,6 @@ from wear.app.outputs.folder import output_folder
 from wear.app.outputs.render import render_surface, rendering_available
 from wear.app.outputs.writer import versions, write_csv, write_json, write_mesh, write_npz
 from wear.chain.single import RunResult
-from wear.integrate import axisymmetric_wear_depth
-from wear.pressure import sliding_speed
 from wear.surface import deform_plate_mesh, plate_block_mesh, surface_mesh
 
 __all__ = ["write_run", "history_columns", "HISTORY_COLUMNS", "PRESSURE_ABOUT"]
@@ -64,8 +62,12 @@ def history_columns(history: History) -> dict[str, np.ndarray]:
     return {label: np.asarray(getattr(history, attr), dtype=float) for attr, label in HISTORY_COLUMNS.items()}
 
 
-def write_run(result: RunResult, out: str | os.PathLike, progress: Callable[[str], None] | None = None,
-              notes: Sequence[str] = ()) -> dict:  # fmt: skip
+def write_run(
+    result: RunResult,
+    out: str | os.PathLike,
+    progress: Callable[[str], None] | None = None,
+    notes: Sequence[str] = (),
+) -> dict:
     """Write the whole output folder of ``result`` atomically; returns the summary. ``progress(stage)`` is called
     at "meshes", "figures", "render"; ``notes`` (what the run said, e.g. its warnings) go into the summary with the
     writer's own."""
@@ -79,17 +81,17 @@ def write_run(result: RunResult, out: str | os.PathLike, progress: Callable[[str
         write_csv(tmp / "history.csv", history_columns(result.impact.history))
         ph = result.pressure
         radius = ph.extent[:, None] * np.sqrt(np.clip(1.0 - ph.s[None, :] ** 2, 0.0, None))
-        arrays = {"time_s": ph.time, "contact_x_m": ph.contact_x, "extent_m": ph.extent, "pressure_Pa": ph.pressure,
-                  "r_m": radius, "s": ph.s, "source": np.array(ph.source),
-                  "about": np.array(PRESSURE_ABOUT)}  # fmt: skip
-        if result.coupling is not None:
-            ft, fr, fp = result.coupling.pressure_table
-            arrays.update(fe_time_s=ft, fe_surface_r_m=fr, fe_pressure_Pa=fp)
-        if result.solid is not None:
-            s = result.solid.solid
-            arrays.update(fe3d_time_s=result.solid.times, fe3d_surface_xy_m=s.surface_vertices[:, :2],
-                          fe3d_pressure_Pa=s.pressure, fe3d_shear_Pa=s.shear, fe3d_sticking=s.sticking,
-                          fe3d_slip_m=s.slip)  # fmt: skip
+        arrays = {
+            "time_s": ph.time,
+            "contact_x_m": ph.contact_x,
+            "extent_m": ph.extent,
+            "pressure_Pa": ph.pressure,
+            "r_m": radius,
+            "s": ph.s,
+            "source": np.array(ph.source),
+            "about": np.array(PRESSURE_ABOUT),
+        }
+        arrays.update(result.plate.pressure_arrays())
         write_npz(tmp / "pressure.npz", arrays)
         surf_mesh = surface_mesh(result.surface)
         write_mesh(tmp / "surface.vtu", surf_mesh)
@@ -103,10 +105,9 @@ def write_run(result: RunResult, out: str | os.PathLike, progress: Callable[[str
             write_mesh(tmp / "plate.vtu", deform_plate_mesh(user, result.surface))
         else:
             write_mesh(tmp / "plate.vtu", plate_block_mesh(result.surface, case.output.block_thickness))
-        if result.solid is not None:
-            write_mesh(tmp / "plate_fe.vtu", result.solid.solid.to_meshio())
-        elif result.fe is not None:
-            write_mesh(tmp / "plate_fe.vtu", _plate_fe(result))
+        plate_fe = result.plate.fe_mesh(case, result.pressure)
+        if plate_fe is not None:
+            write_mesh(tmp / "plate_fe.vtu", plate_fe)
         times["meshes"] = time.perf_counter() - t0
         if case.output.figures:
             notify("figures")
@@ -129,29 +130,3 @@ def write_run(result: RunResult, out: str | os.PathLike, progress: Callable[[str
         summary["files"] = [*sorted(p.name for p in Path(tmp).iterdir()), "summary.json"]
         write_json(tmp / "summary.json", summary)
     return summary
-
-
-def _plate_fe(result: RunResult) -> meshio.Mesh:
-    """The FE plate after the impact: points (r, z, 0) m, point data ``u`` (m) and ``max_pressure`` (Pa: the largest
-    contact pressure each surface node carried during the impact — after the rebound the pressure itself is 0), cell
-    data ``von_mises`` (Pa) and ``equivalent_plastic_strain``. For a normal impact the surface nodes are also moved
-    down by the axisymmetric wear depth h(r) (point data ``wear_depth``, m); an oblique impact's wear is not
-    axisymmetric and is in ``surface.vtu`` only."""
-    mesh = result.fe.to_meshio()
-    pts = np.asarray(mesh.points, dtype=float)
-    u = np.asarray(mesh.point_data["u"], dtype=float)
-    undeformed_z = pts[:, 1] - u[:, 1]
-    undeformed_r = pts[:, 0] - u[:, 0]
-    on_surface = np.abs(undeformed_z) <= 1e-9 * float(np.ptp(pts[:, 0]))
-    point_data = {k: v for k, v in mesh.point_data.items() if k != "pressure"}
-    fe = result.fe
-    order = np.argsort(fe.surface_r)
-    peak = np.interp(undeformed_r, fe.surface_r[order], np.max(fe.pressure, axis=0)[order], right=0.0)
-    point_data["max_pressure"] = np.where(on_surface, peak, 0.0)
-    if result.case.impact.angle == 0.0:
-        h = axisymmetric_wear_depth(result.pressure, sliding_speed(result.impact, result.case.wear.speed),
-                                    result.case.wear.wear_law(), undeformed_r)  # fmt: skip
-        wear = np.where(on_surface & (undeformed_r >= 0), h, 0.0)
-        pts[:, 1] -= wear
-        point_data["wear_depth"] = wear
-    return meshio.Mesh(pts, mesh.cells, point_data=point_data, cell_data=dict(mesh.cell_data))
