@@ -13,8 +13,9 @@ import pytest
 
 from wear.app.cli import main
 from wear.app.sweep.spec import parse_sweep
-from wear.case import JOBS, Case, dump_case
+from wear.case import FEM_MODELS, JOBS, Case, dump_case
 from wear.chain.calibrate import calibrate, read_data
+from wear.chain.plates import PLATES
 from wear.chain.repeat import repeat
 
 AXISYMMETRIC_ONLY = ("repeat", "calibrate", "indent")
@@ -91,3 +92,9 @@ def test_indent_and_repeat_summaries_name_the_plate(tmp_path, capsys):
     assert main(["repeat", str(case), "--out", str(tmp_path / "repeat"), "--json"]) == 0
     saved = json.loads((tmp_path / "repeat" / "summary.json").read_text())
     assert saved["fem_model"] == "axisymmetric"
+
+
+def test_every_plate_model_of_the_schema_has_a_plate():
+    """The case schema's plate models (``fem.model``'s choices) are the chain's (wear.chain.plates.PLATES): a model
+    the schema accepts has a plate to run, and a plate the chain has can be chosen."""
+    assert tuple(PLATES) == FEM_MODELS
