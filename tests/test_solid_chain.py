@@ -17,7 +17,7 @@ from contact.theory import first_yield
 from wear import run
 from wear.app.cli import main
 from wear.case import JOBS
-from wear.chain.solid_plate import SOLID_PLASTIC_REGIME
+from wear.chain.solid_run import SOLID_PLASTIC_REGIME
 from wear.surface import DeformedSurface
 
 REDUCED = {"model": "3d", "mesh_scale": 2.0, "solid_load_steps": 5, "solid_unload_steps": 3, "solid_iterations": 2}
@@ -48,7 +48,7 @@ def test_frictionless_worn_volume_near_the_axisymmetric_chain(frictionless):
     """Reference: the axisymmetric chain's local wear law over its FE pressure p(r/a, t). The 3-D wear interpolates
     its fields linearly in time at fixed plate points (wear.solid_wear), which loses p^α at the growing contact
     edge between steps: within 10 % on the reduced path."""
-    from wear.chain.axisymmetric_plate import impact_wear
+    from wear.chain.axisymmetric_run import impact_wear
 
     r = frictionless
     ph, wm, worn = impact_wear(r.case, r.coupling.impact, r.coupling.pressure_table, r.coupling.plastic_work)

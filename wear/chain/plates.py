@@ -6,11 +6,11 @@ its coupling's and its own blocks of ``summary.json``, its arrays of ``pressure.
 what the figures draw of it. :data:`PLATES` names the models: a new plate model is a class beside these (its FE in
 a folder of :mod:`fem`) and one line there.
 
-- :class:`wear.chain.axisymmetric_plate.NoPlate` (``fem.coupling = "none"``): the impact on its own normal law, no
+- :class:`wear.chain.axisymmetric_run.NoPlateRun` (``fem.coupling = "none"``): the impact on its own normal law, no
   dent;
-- :class:`wear.chain.axisymmetric_plate.AxisymmetricPlate`: the (r, z) frictionless FE plate, two-way
+- :class:`wear.chain.axisymmetric_run.AxisymmetricRun`: the (r, z) frictionless FE plate, two-way
   (:func:`fem.couple`) or one-way (:func:`fem.indent_impact`);
-- :class:`wear.chain.solid_plate.SolidPlate`: the 3-D half plate with Coulomb friction (:mod:`wear.chain.solid`),
+- :class:`wear.chain.solid_run.SolidRun`: the 3-D half plate with Coulomb friction (:mod:`wear.chain.solid`),
   started from the axisymmetric coupled impact.
 """
 
@@ -27,21 +27,21 @@ import fem
 from contact import ImpactResult
 from fem.solid_coupling import SolidCoupledImpact
 from wear.case import Case
-from wear.chain.axisymmetric_plate import AxisymmetricPlate, NoPlate, Wear, one_way
+from wear.chain.axisymmetric_run import AxisymmetricRun, NoPlateRun, Wear, one_way
 from wear.chain.plate import case_plate, coupling_settings, impact_on_law
 from wear.chain.solid import check_solid_case, solid_case, solid_impact
-from wear.chain.solid_plate import SolidPlate
+from wear.chain.solid_run import SolidRun
 from wear.integrate import WearMap
 from wear.pressure import PressureHistory
 from wear.surface import DeformedSurface
 
-__all__ = ["PLATES", "PlateModel", "PlateOfRun", "couple_plate", "prepare_case"]
+__all__ = ["PLATES", "PlateModel", "PlateRun", "couple_plate", "prepare_case"]
 
 #: A stage runner: ``timed(stage, function, *args)`` runs ``function(*args)`` and records its wall time (s).
 Timed = Callable[..., object]
 
 
-class PlateOfRun(Protocol):
+class PlateRun(Protocol):
     """What a run asks of the plate its impact acted on."""
 
     #: ``fem.model`` of the plate ("axisymmetric", "3d"), None without an FE plate.
@@ -49,7 +49,7 @@ class PlateOfRun(Protocol):
     #: The final impact (coupled to the plate where it is two-way).
     impact: ImpactResult
     #: The axisymmetric plate of the run (itself, or the one a 3-D plate started from; None without one).
-    axisymmetric: AxisymmetricPlate | None
+    axisymmetric: AxisymmetricRun | None
     #: The impact coupled to the 3-D plate (None on another plate).
     solid: SolidCoupledImpact | None
 
@@ -102,29 +102,29 @@ class PlateOfRun(Protocol):
         ...
 
 
-def _axisymmetric(case: Case, estimate: ImpactResult, timed: Timed) -> PlateOfRun:
+def _axisymmetric(case: Case, estimate: ImpactResult, timed: Timed) -> PlateRun:
     """The case's impact on the axisymmetric plate, coupled as ``fem.coupling`` says."""
     mode = case.fem.coupling
     if mode == "two-way":
         plate = timed("fem", case_plate, case, (1.0 + case.fem.overshoot) * estimate.max_overlap)
         settings = coupling_settings(case)
         coupled = timed("coupling", fem.couple, plate, impact_on_law(case), estimate.max_overlap, settings)
-        return AxisymmetricPlate(coupled.impact, coupled.cycle, coupled, coupled.pressure_table)
+        return AxisymmetricRun(coupled.impact, coupled.cycle, coupled, coupled.pressure_table)
     if mode == "one-way":
         fe = timed("fem", one_way, case, estimate)
         timed("coupling", lambda: None)
         rows = fem.contact_pressure(fe.pressure, fe.surface_r, fe.contact_radius)
         table = (np.asarray(fe.time, float), np.asarray(fe.surface_r, float), rows)
-        return AxisymmetricPlate(estimate, fe, None, table)
-    return NoPlate(estimate)
+        return AxisymmetricRun(estimate, fe, None, table)
+    return NoPlateRun(estimate)
 
 
-def _solid(case: Case, estimate: ImpactResult, timed: Timed) -> PlateOfRun:
+def _solid(case: Case, estimate: ImpactResult, timed: Timed) -> PlateRun:
     """The case's impact on the 3-D plate, started from the axisymmetric coupled impact (the cheapest start
     measured: its normal law is the 3-D one's within about 1 % at μ = 0)."""
     start = _axisymmetric(case, estimate, timed)
     coupled = timed("plate3d", solid_impact, case, start.impact)
-    return SolidPlate(coupled, start)
+    return SolidRun(coupled, start)
 
 
 def _solid_case(case: Case) -> Case:
@@ -140,7 +140,7 @@ class PlateModel:
     normal law."""
 
     prepare: Callable[[Case], Case]
-    couple: Callable[[Case, ImpactResult, Timed], PlateOfRun]
+    couple: Callable[[Case, ImpactResult, Timed], PlateRun]
 
 
 #: The plate models by ``fem.model``.
@@ -155,7 +155,7 @@ def prepare_case(case: Case) -> Case:
     return PLATES[case.fem.model].prepare(case)
 
 
-def couple_plate(case: Case, estimate: ImpactResult, timed: Timed | None = None) -> PlateOfRun:
+def couple_plate(case: Case, estimate: ImpactResult, timed: Timed | None = None) -> PlateRun:
     """The case's impact coupled to the plate of ``fem.model`` (:data:`PLATES`), starting from ``estimate`` (the
     impact on the case's own normal law); ``timed(stage, function, *args)`` runs each stage (default: untimed)."""
 

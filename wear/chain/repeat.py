@@ -65,7 +65,7 @@ import fem
 from contact import effective_modulus
 from contact.theory import speed_components
 from wear.case import Case, check_job_case
-from wear.chain.axisymmetric_plate import impact_wear
+from wear.chain.axisymmetric_run import impact_wear
 from wear.chain.plate import case_plate, coupling_settings, impact_on_law
 from wear.chain.records import ComputedImpact, ImpactRecord, RepeatResult, yield_strain
 from wear.chain.single import estimate_impact

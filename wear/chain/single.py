@@ -37,7 +37,7 @@ from fem import CoupledImpact, PlateCycle
 from fem.axisymmetric.result import IndentationResult
 from fem.solid_coupling import SolidCoupledImpact
 from wear.case import JOBS, Case
-from wear.chain.plates import PlateOfRun, couple_plate, prepare_case
+from wear.chain.plates import PlateRun, couple_plate, prepare_case
 from wear.integrate import WearMap
 from wear.laws import LAWS, ImpactWear
 from wear.pressure import PressureHistory
@@ -61,7 +61,7 @@ class RunResult:
     """Everything one :func:`run` produced (SI units).
 
     ``estimate`` (the impact on the case's own normal model), ``impact`` (:class:`contact.ImpactResult`, the final
-    impact: coupled if two-way), ``plate`` (the plate the impact acted on, :class:`wear.chain.plates.PlateOfRun`:
+    impact: coupled if two-way), ``plate`` (the plate the impact acted on, :class:`wear.chain.plates.PlateRun`:
     what the outputs and figures ask for), ``pressure`` (:class:`wear.PressureHistory`), ``wear``
     (:class:`wear.WearMap`), ``worn`` (the wear law's volumes by mechanism, :class:`wear.laws.ImpactWear`),
     ``surface`` (:class:`wear.surface.DeformedSurface`), ``yield_info`` (dict: ``F_y_paper`` Eq. 18 with C = 1.6,
@@ -74,7 +74,7 @@ class RunResult:
     case: Case
     estimate: ImpactResult
     impact: ImpactResult
-    plate: PlateOfRun
+    plate: PlateRun
     pressure: PressureHistory
     wear: WearMap
     worn: ImpactWear
@@ -172,7 +172,7 @@ class RunResult:
 
 def _yield_info(case: Case, ball: Material, plate: Material) -> dict:
     """First yield by the closed forms (N, m/s); the plate the impact ran on adds its own
-    (:meth:`wear.chain.plates.PlateOfRun.yield_info`)."""
+    (:meth:`wear.chain.plates.PlateRun.yield_info`)."""
     info: dict[str, float | str | None] = {
         "F_y_paper": None,
         "F_c_exact": None,

@@ -26,7 +26,7 @@ from contact import simulate_impact
 from contact.results import OUTPUT_UNITS
 from fem import worst_regime
 from wear.case import STAGES, Case, check_job_case, default_case
-from wear.chain.axisymmetric_plate import one_way
+from wear.chain.axisymmetric_run import one_way
 from wear.chain.calibrate import calibrate, read_data
 from wear.chain.repeat import repeat
 from wear.chain.single import run

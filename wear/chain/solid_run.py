@@ -1,4 +1,4 @@
-"""The 3-D plate of a run (SI units): what a run asks of it (:class:`wear.chain.plates.PlateOfRun`) — its wear,
+"""The 3-D plate of a run (SI units): what a run asks of it (:class:`wear.chain.plates.PlateRun`) — its wear,
 dent, first yield, regime, summary blocks, arrays and meshes; the axisymmetric plate it started from is kept."""
 
 from __future__ import annotations
@@ -13,13 +13,13 @@ from contact import ImpactResult
 from fem import worst_regime
 from fem.solid_coupling import SolidCoupledImpact
 from wear.case import Case
-from wear.chain.axisymmetric_plate import AxisymmetricPlate, Wear
+from wear.chain.axisymmetric_run import AxisymmetricRun, Wear
 from wear.chain.solid import solid_surface, solid_wear
 from wear.integrate import WearMap
 from wear.pressure import PressureHistory
 from wear.surface import DeformedSurface
 
-__all__ = ["SOLID_PLASTIC_REGIME", "SolidPlate"]
+__all__ = ["SOLID_PLASTIC_REGIME", "SolidRun"]
 
 #: The regime of a 3-D plate that yielded: its plastic strain says that it yielded, not where (the regimes of
 #: :data:`fem.REGIMES` are classified on the axisymmetric plate's surface layer).
@@ -27,12 +27,12 @@ SOLID_PLASTIC_REGIME = "plastic (3-D plate: extent not classified)"
 
 
 @dataclass(frozen=True, eq=False)
-class SolidPlate:
+class SolidRun:
     """The 3-D half plate with friction: ``coupled`` the impact coupled to it, ``start`` the axisymmetric coupled
     impact it started from."""
 
     coupled: SolidCoupledImpact
-    start: AxisymmetricPlate
+    start: AxisymmetricRun
     model: str | None = "3d"
 
     @property
@@ -40,7 +40,7 @@ class SolidPlate:
         return self.coupled.impact
 
     @property
-    def axisymmetric(self) -> AxisymmetricPlate:
+    def axisymmetric(self) -> AxisymmetricRun:
         return self.start
 
     @property

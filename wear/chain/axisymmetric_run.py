@@ -1,5 +1,5 @@
 """The axisymmetric plate of a run, and the run without an FE plate (SI units): what a run asks of them
-(:class:`wear.chain.plates.PlateOfRun`) — their wear, dent, first yield, regime, summary blocks, arrays and meshes."""
+(:class:`wear.chain.plates.PlateRun`) — their wear, dent, first yield, regime, summary blocks, arrays and meshes."""
 
 from __future__ import annotations
 
@@ -19,7 +19,7 @@ from wear.laws import ImpactWear, wear_of_impact
 from wear.pressure import PressureHistory, pressure_history, sliding_speed
 from wear.surface import DeformedSurface
 
-__all__ = ["AxisymmetricPlate", "NoPlate", "Wear", "impact_wear", "one_way"]
+__all__ = ["AxisymmetricRun", "NoPlateRun", "Wear", "impact_wear", "one_way"]
 
 #: What a plate's wear stage returns: (pressure history, wear map, worn volumes).
 Wear = tuple[PressureHistory, WearMap, ImpactWear]
@@ -64,12 +64,12 @@ def _flat_surface(impact: ImpactResult, wm: WearMap, r: np.ndarray, depth: np.nd
 
 
 @dataclass(frozen=True, eq=False)
-class NoPlate:
+class NoPlateRun:
     """No FE plate (``fem.coupling = "none"``): the impact on its own normal law."""
 
     impact: ImpactResult
     model: str | None = None
-    axisymmetric: AxisymmetricPlate | None = None
+    axisymmetric: AxisymmetricRun | None = None
     solid: SolidCoupledImpact | None = None
 
     def wear(self, case: Case) -> Wear:
@@ -112,7 +112,7 @@ class NoPlate:
 
 
 @dataclass(frozen=True, eq=False)
-class AxisymmetricPlate:
+class AxisymmetricRun:
     """The axisymmetric FE plate: ``fe`` its cycle (two-way, :class:`fem.PlateCycle`) or its indentation along the
     impact (one-way, :class:`fem.IndentationResult`), ``coupled`` the coupled impact (two-way, else None),
     ``fe_table`` its (time s, r m, pressure Pa) table on the impact's time axis."""
@@ -125,7 +125,7 @@ class AxisymmetricPlate:
     solid: SolidCoupledImpact | None = None
 
     @property
-    def axisymmetric(self) -> AxisymmetricPlate:
+    def axisymmetric(self) -> AxisymmetricRun:
         return self
 
     def wear(self, case: Case) -> Wear:
@@ -146,7 +146,7 @@ class AxisymmetricPlate:
     def regime(self, info: dict) -> str:
         if len(self.fe.regime):
             return worst_regime(self.fe.regime)
-        return NoPlate(self.impact).regime(info)
+        return NoPlateRun(self.impact).regime(info)
 
     def peak_pressure(self) -> tuple[float | None, str]:
         return float(np.max(self.fe.pressure)), "FE plate"
