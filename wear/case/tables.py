@@ -18,8 +18,8 @@ from typing import Any, ClassVar
 
 from contact import Material, effective_modulus
 from contact.impact import TANGENTIAL_MODELS as ENGINE_TANGENTIAL_MODELS
-from contact.impact import check_time_step
 from contact.theory import hertz_impact, speed_components, sphere_mass
+from contact.timestep import check_time_step
 from wear.case.schema import Table, key
 from wear.law import WearLaw
 from wear.laws import CUTTING_LAWS, LAWS
@@ -431,7 +431,7 @@ class Case:
     def check_time_step(self, histories: bool = False) -> None:
         """A one-line ``ValueError`` naming ``impact.time_step`` if the given time step is not within [t_c/2e7, t_c/10]
         of the Hertz contact time t_c of the case's ball, plate and normal speed (t_c/2e6 for an impact that keeps
-        its time ``histories``): :func:`contact.impact.check_time_step`, checked when the case is built so that a
+        its time ``histories``): :func:`contact.timestep.check_time_step`, checked when the case is built so that a
         time step that would run for hours is refused before any work."""
         if self.impact.time_step is None:
             return
