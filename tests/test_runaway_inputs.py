@@ -17,7 +17,7 @@ from wear import WearLaw
 from wear.app.cli import main
 from wear.case import Case, default_case
 from wear.erosion import ImpactResponse, Stream, build_response_table, erode, erode_angles, erode_case, table_axes
-from wear.erosion.patch import MAX_PATCH_MEMORY, check_patch_memory, patch_memory
+from wear.erosion.memory import MAX_PATCH_MEMORY, check_patch_memory, patch_memory
 from wear.erosion.table import MAX_TABLE_ENTRIES
 
 ALUMINA = Material(E=380e9, nu=0.23, density=4000.0)
