@@ -22,8 +22,9 @@ import numpy as np
 
 from contact.materials import Material
 from wear import Case, WearLaw, integrate_wear, pressure_history, run, sliding_speed, surface_grid
+from wear.accumulate import accumulate_depth, powered_table
 from wear.app.outputs.run import write_run
-from wear.integrate import _accumulate, integrate_wear_numpy, powered_table, wear_substeps
+from wear.integrate import integrate_wear_numpy, wear_substeps
 
 TARGET_UPDATES_PER_S = 1e8
 
@@ -93,7 +94,7 @@ def bench_integration(points_across=(64, 160), repeats: int = 5) -> list[dict]:
             table = powered_table(ph, lw.alpha)
             depth = np.zeros((y.size, x.size))
             args = (x[0], x[1] - x[0], y, sub.contact_x, sub.step, sub.fraction, sub.weight, ph.extent, table)
-            kernel = best_of(lambda args=args, depth=depth: _accumulate(depth, *args), repeats)
+            kernel = best_of(lambda args=args, depth=depth: accumulate_depth(depth, *args), repeats)
             a = integrate_wear(ph, speed, lw, density=PLATE.density, points_across=n)
             b = integrate_wear_numpy(ph, speed, lw, density=PLATE.density, points_across=n)
             diff = float(np.abs(a.depth - b.depth).max() / a.max_depth_m)

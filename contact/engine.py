@@ -16,6 +16,10 @@ velocity; the Hertz dashpot uses the predicted velocity v + a Δt, which keeps t
 The batch kernel runs impacts in parallel (``prange``); one impact's state lives in registers. Results
 of one impact do not depend on the batch it runs in (same floating-point operations, no fastmath).
 SI units throughout.
+
+One concept longer than ~400 lines: the step, the single-impact loop, the SIMD lane block and the batch driver stay
+in one file because numba inlines ``inline="always"`` kernels and checks its cache only against the file that
+defines a kernel, so a kernel split from its callers would leave their caches stale.
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """Inputs that would run for hours or fill the memory are refused up front, in one line naming the key.
 
-The time step against the Hertz contact time of the case (contact.impact.check_time_step: at most 2e7 steps per
+The time step against the Hertz contact time of the case (contact.timestep.check_time_step: at most 2e7 steps per
 contact, 2e6 with time histories), the erosion patch's memory ((runs + 1) x frames + 6 grid² float64 arrays, at
 most 2 GB; grid at most 2048 in a case) and the response table's size (at most 2000 impacts). Each refusal must
 come before any heavy work: the tests time it.
@@ -12,12 +12,12 @@ import tracemalloc
 import pytest
 
 from contact import Material, effective_modulus, simulate_impact, simulate_impacts, theory
-from contact.impact import MAX_HISTORY_STEPS, MAX_STEPS, check_time_step
+from contact.timestep import MAX_HISTORY_STEPS, MAX_STEPS, check_time_step
 from wear import WearLaw
 from wear.app.cli import main
 from wear.case import Case, default_case
 from wear.erosion import ImpactResponse, Stream, build_response_table, erode, erode_angles, erode_case, table_axes
-from wear.erosion.patch import MAX_PATCH_MEMORY, check_patch_memory, patch_memory
+from wear.erosion.memory import MAX_PATCH_MEMORY, check_patch_memory, patch_memory
 from wear.erosion.table import MAX_TABLE_ENTRIES
 
 ALUMINA = Material(E=380e9, nu=0.23, density=4000.0)

@@ -13,9 +13,7 @@ Accuracy (measured in tests/test_wear_integrate.py, default 64 points across, 25
 the worn volume of an impact with α = 1, β = 0 equals K × normal impulse = K m V_n (1 + e) within 0.05%
 (any source, any angle); a steady Hertz track matches its closed-form depth within 0.03% of the maximum
 depth for α ≥ 1 and 0.1% for α = 0.5; h(r)/h(0) of a normal Hertz impact matches the quadrature within
-3e-4. To keep pow() out of the inner loop the kernel interpolates p^α (tabulated once per sample), not p,
-in s and in time: on dense impact histories the two differ by < 1e-5 of the volume, with a coarse 40-step
-FE table by < 0.7% (α = 0.5) — the same order as the time interpolation itself.
+3e-4. The kernel (:mod:`wear.accumulate`) interpolates p^α, not p, in s and in time.
 """
 
 from __future__ import annotations
@@ -23,10 +21,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numba
 import numpy as np
 
 from contact.checks import check_number
+from wear.accumulate import accumulate_depth, accumulate_depth_numpy, powered_table
 from wear.law import WearLaw
 from wear.pressure import PressureHistory, SlidingSpeed, pressure_history, sliding_speed
 
@@ -169,92 +167,6 @@ def wear_substeps(
     )
 
 
-@numba.njit(cache=True, inline="always")
-def _lookup(table, step, q, last):
-    # linear interpolation of table[step] at s = √q, q = 1 − r²/extent² ∈ (0, 1]
-    u = math.sqrt(q) * last
-    k = min(int(u), last - 1)
-    f = u - k
-    return table[step, k] * (1.0 - f) + table[step, k + 1] * f
-
-
-def powered_table(pressure: PressureHistory, alpha: float) -> np.ndarray:
-    """p^α at the table entries (Pa^α), 0 where p = 0 (so α = 0 wears only where there is pressure)."""
-    p = pressure.pressure
-    if alpha == 1.0:
-        return p
-    return np.where(p > 0.0, np.maximum(p, 1e-300) ** alpha, 0.0)
-
-
-@numba.njit(cache=True, parallel=True, fastmath=True)
-def _accumulate(depth, x0, dx, y, sub_x, sub_step, sub_frac, sub_weight, extent, table):
-    # table holds p^α: interpolating p^α rather than p keeps pow() out of the inner loop
-    ny, nx = depth.shape
-    last = table.shape[1] - 1
-    for j in numba.prange(ny):
-        y2 = y[j] * y[j]
-        row = depth[j]
-        for s in range(sub_x.size):
-            i0 = sub_step[s]
-            w1 = sub_frac[s]
-            w0 = 1.0 - w1
-            # a sample that does not contribute (zero weight or no contact) is given radius 0
-            a0 = extent[i0] if w0 > 0.0 else 0.0
-            a1 = extent[i0 + 1] if w1 > 0.0 else 0.0
-            reach = max(a0, a1)
-            if y2 >= reach * reach:
-                continue
-            half = math.sqrt(reach * reach - y2)
-            xc = sub_x[s]
-            lo = max(0, int(math.ceil((xc - half - x0) / dx)))
-            hi = min(nx - 1, int(math.floor((xc + half - x0) / dx)))
-            weight = sub_weight[s]
-            if a1 == 0.0:  # the common case: a sub-step on a sample
-                inv0 = 1.0 / (a0 * a0)
-                c0 = weight * w0
-                for i in range(lo, hi + 1):
-                    d = x0 + i * dx - xc
-                    q0 = 1.0 - (d * d + y2) * inv0
-                    if q0 > 0.0:
-                        row[i] += c0 * _lookup(table, i0, q0, last)
-                continue
-            inv0 = 1.0 / (a0 * a0) if a0 > 0.0 else 0.0
-            inv1 = 1.0 / (a1 * a1)
-            for i in range(lo, hi + 1):
-                d = x0 + i * dx - xc
-                r2 = d * d + y2
-                p = 0.0
-                q0 = 1.0 - r2 * inv0
-                if q0 > 0.0 and a0 > 0.0:
-                    p += w0 * _lookup(table, i0, q0, last)
-                q1 = 1.0 - r2 * inv1
-                if q1 > 0.0:
-                    p += w1 * _lookup(table, i0 + 1, q1, last)
-                row[i] += weight * p
-
-
-def _accumulate_numpy(depth, x0, dx, y, sub, extent, table):
-    """Plain numpy version of :func:`_accumulate` (same algorithm, one sub-step at a time): the reference."""
-    nx = depth.shape[1]
-    last = table.shape[1] - 1
-    x = x0 + dx * np.arange(nx)
-    for xc, i0, w1, weight in zip(sub.contact_x, sub.step, sub.fraction, sub.weight, strict=True):
-        reach = max(extent[i0], extent[i0 + 1])
-        lo = max(0, math.ceil((xc - reach - x0) / dx))
-        hi = min(nx - 1, math.floor((xc + reach - x0) / dx))
-        rows = np.flatnonzero(np.abs(y) < reach)
-        r = np.hypot(x[lo : hi + 1][None, :] - xc, y[rows][:, None])
-        p = np.zeros_like(r)
-        for step, w in ((i0, 1.0 - w1), (i0 + 1, w1)):
-            a = extent[step]
-            if a > 0.0:
-                inside = r < a
-                s = np.sqrt(1.0 - (r[inside] / a) ** 2)
-                p[inside] += w * np.interp(s, np.linspace(0.0, 1.0, last + 1), table[step])
-        if rows.size:
-            depth[rows[0] : rows[-1] + 1, lo : hi + 1] += weight * p
-
-
 def integrate_volume(x, y, depth) -> float:
     """Volume (m³) under ``depth`` (m, shape (ny, nx)) on the uniform grid ``x``, ``y`` (m): the trapezoidal
     rule, which equals Σ w Δx Δy here because the depth vanishes on the grid border."""
@@ -338,11 +250,11 @@ def integrate_wear(
     table = powered_table(pressure, law.alpha)
     if sub.weight.size:
         if engine == "numba":
-            _accumulate(
+            accumulate_depth(
                 depth, float(x[0]), dx, y, sub.contact_x, sub.step, sub.fraction, sub.weight, pressure.extent, table
             )
         else:
-            _accumulate_numpy(depth, float(x[0]), dx, y, sub, pressure.extent, table)
+            accumulate_depth_numpy(depth, float(x[0]), dx, y, sub, pressure.extent, table)
     return wear_map(x, y, depth, density, scar_threshold)
 
 

@@ -52,6 +52,7 @@ import numpy as np
 from contact.checks import check_array, check_choice, check_number
 from contact.materials import effective_modulus
 from contact.theory import PAPER_YIELD_COEFFICIENT, default_limiting_pressure, first_yield
+from wear.pressure_profiles import mesarovic_johnson_radius_fraction, truncated_hertz_rows
 
 __all__ = [
     "PRESSURE_SOURCES",
@@ -169,27 +170,6 @@ def _checked_impact_arrays(time, contact_x, contact_radius, normal_force):
     return t, x, a, f
 
 
-def _truncated_hertz_rows(s, contact_radius, force, limiting_pressure) -> np.ndarray:
-    """Rows p(s) of Hertz profiles carrying ``force`` over ``contact_radius``, truncated at ``limiting_pressure``."""
-    a2 = contact_radius**2
-    with np.errstate(divide="ignore", invalid="ignore"):
-        mean = np.where(a2 > 0.0, force / (math.pi * a2), 0.0)
-    shape = s  # Hertz: p = p₀ √(1 − r²/a²) = p₀ s
-    p0 = 1.5 * mean
-    truncated = p0 > limiting_pressure
-    rows = p0[:, None] * shape[None, :]
-    if np.any(truncated):
-        # F/(πa²p_y) = 1 − q²/3, q = p_y/p₀ ∈ [0, 1)
-        ratio = mean[truncated] / limiting_pressure
-        q = np.sqrt(np.maximum(3.0 * (1.0 - ratio), 0.0))
-        p0_t = limiting_pressure / np.maximum(q, 1e-12)  # q = 0 rows are uniform, set below
-        trunc_rows = np.minimum(p0_t[:, None] * shape[None, :], limiting_pressure)
-        uniform = ratio >= 1.0  # cannot be carried below p_y: keep the force, uniform pressure
-        trunc_rows[uniform] = mean[truncated][uniform, None]
-        rows[truncated] = trunc_rows
-    return rows
-
-
 def hertz_pressure_history(
     time, contact_x, contact_radius, normal_force, *, limiting_pressure: float = math.inf, points: int = DEFAULT_POINTS
 ) -> PressureHistory:
@@ -204,22 +184,9 @@ def hertz_pressure_history(
     p_y = check_number("limiting_pressure", limiting_pressure, low=0.0, low_open=True, units="Pa", allow_inf=True)
     m = int(check_number("points", points, low=3, high=100_000))
     s = np.linspace(0.0, 1.0, m)
-    rows = _truncated_hertz_rows(s, a, f, p_y)
+    rows = truncated_hertz_rows(s, a, f, p_y)
     rows[a <= 0.0] = 0.0
     return PressureHistory(t, x, a, rows, source="hertz" if math.isinf(p_y) else "thornton")
-
-
-def _mj_radius_fraction(force_fraction: np.ndarray) -> np.ndarray:
-    """Solve F/F* = (2/π)[arcsin x − x√(1−x²)] for x = a/a* ∈ [0, 1] (monotonic; bisection to 1e-15)."""
-    target = np.clip(force_fraction, 0.0, 1.0)
-    lo, hi = np.zeros_like(target), np.ones_like(target)
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        g = 2.0 / math.pi * (np.arcsin(mid) - mid * np.sqrt(1.0 - mid * mid))
-        below = g < target
-        lo = np.where(below, mid, lo)
-        hi = np.where(below, hi, mid)
-    return 0.5 * (lo + hi)
 
 
 def paper_pressure_history(
@@ -258,7 +225,7 @@ def paper_pressure_history(
     check_choice("loading_after_yield", loading_after_yield, ("flat", "hertz"))
     m = int(check_number("points", points, low=3, high=100_000))
     s = np.linspace(0.0, 1.0, m)
-    rows = _truncated_hertz_rows(s, a, f, math.inf)
+    rows = truncated_hertz_rows(s, a, f, math.inf)
     extent = a.copy()
     k_star = int(np.argmax(d))
     loading = np.arange(t.size) <= k_star
@@ -276,7 +243,7 @@ def paper_pressure_history(
     rows[above] = (f[above] / (math.pi * a_star**2))[:, None]
     extent[above] = a_star
     mj = unload & ~above
-    xfrac = _mj_radius_fraction(f[mj] / f_star)
+    xfrac = mesarovic_johnson_radius_fraction(f[mj] / f_star)
     a_now = xfrac * a_star
     extent[mj] = a_now
     den = np.sqrt(np.maximum(a_star**2 - a_now**2, 1e-300 * a_star**2))

@@ -1,5 +1,5 @@
-"""The case: every table and key defined once (:mod:`wear.case.tables`), each job's default case
-(:mod:`wear.case.jobs`) and case files (:mod:`wear.case.toml`).
+"""The case: every table and key defined once (:mod:`wear.case.tables`), the whole case (:mod:`wear.case.case`),
+each job's default case (:mod:`wear.case.jobs`) and case files (:mod:`wear.case.toml`).
 
 >>> from wear.case import Case, default_case, dump_case
 >>> Case().impact.speed                      # impactwear run's default (m/s)
@@ -12,6 +12,7 @@ Traceback (most recent call last):
 ValueError: impact.angle=120 is out of range: impact angle from the plate normal must be in [0, 90) deg
 """
 
+from wear.case.case import Case
 from wear.case.check import check_job_case
 from wear.case.jobs import JOBS, STAGES, Job, Stage, default_case
 from wear.case.schema import Key, Table, key
@@ -21,7 +22,6 @@ from wear.case.tables import (
     TABLES,
     BallSpec,
     CalibrationSpec,
-    Case,
     ErosionSpec,
     FemSpec,
     ImpactSpec,

@@ -3,8 +3,8 @@ key, its value and what the job accepts)."""
 
 from __future__ import annotations
 
+from wear.case.case import Case
 from wear.case.jobs import JOBS
-from wear.case.tables import Case
 
 __all__ = ["check_job_case"]
 

@@ -19,7 +19,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from typing import Any
 
-from wear.case.tables import FEM_MODELS, Case
+from wear.case.case import Case
+from wear.case.tables import FEM_MODELS
 
 __all__ = ["Job", "JOBS", "STAGES", "Stage", "default_case"]
 

@@ -15,9 +15,10 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from wear.case.case import Case
 from wear.case.jobs import JOBS, default_case
 from wear.case.schema import Key
-from wear.case.tables import TABLES, Case
+from wear.case.tables import TABLES
 
 if sys.version_info >= (3, 11):
     import tomllib

@@ -33,132 +33,22 @@ angle. Mass loss = ρ_plate h² Σ w; erosion rate = mass loss / mass of particl
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 
 import numpy as np
 from tqdm import tqdm
 
 from contact.checks import check_bool, check_choice, check_number
 from contact.theory import speed_components
+from wear.erosion.memory import check_patch_memory
+from wear.erosion.result import ErosionResult
 from wear.erosion.stamp import stamp_impacts, stamp_impacts_numpy
 from wear.erosion.stream import Stream, impacts_on_patch
 from wear.erosion.table import ResponseTable
 
-__all__ = [
-    "ErosionResult",
-    "erode",
-    "footprint_on_grid",
-    "MAX_IMPACTS",
-    "MAX_PATCH_MEMORY",
-    "patch_memory",
-    "check_patch_memory",
-]
+__all__ = ["erode", "footprint_on_grid", "MAX_IMPACTS"]
 
 #: Largest number of impacts one run accepts.
 MAX_IMPACTS = 2_000_000_000
-#: Largest estimated memory of the patch arrays (:func:`patch_memory`, B): 2 GB, refused up front rather than found
-#: out as a swapping machine. Measured on the default erode case (10 frames, 2 cores), resident memory above the
-#: interpreter's / the estimate: grid 1024 0.17 / 0.22 GB, 2048 0.72 / 0.87 GB, 4096 2.9 / 3.5 GB; 1024 with 100
-#: frames 1.65 / 1.73 GB. A fixed bound, not a share of this machine's memory, so that a case valid on one machine is
-#: valid on every one.
-MAX_PATCH_MEMORY = 2e9
-
-
-def patch_memory(grid: int, frames: int, runs: int = 1) -> float:
-    """Estimated peak memory (B) of the patch arrays of ``runs`` erosions of a ``grid`` × ``grid`` patch saving
-    ``frames`` surfaces each, all results kept (as :func:`wear.erosion.erode_angles` does): every result's frames,
-    the running erosion's list of frames before it stacks them, and six more grid² arrays (wear, relief, the surface
-    and the slope's temporaries), float64."""
-    return ((runs + 1) * frames + 6.0) * float(grid) ** 2 * 8.0
-
-
-def check_patch_memory(
-    grid: int, frames: int, runs: int = 1, *, grid_name: str = "grid", frames_name: str = "frames"
-) -> None:
-    """A one-line ``ValueError`` naming ``grid_name`` (and ``frames_name``) if :func:`patch_memory` exceeds
-    :data:`MAX_PATCH_MEMORY`."""
-    need = patch_memory(grid, frames, runs)
-    if need <= MAX_PATCH_MEMORY:
-        return
-    per_node = MAX_PATCH_MEMORY / (8.0 * float(grid) ** 2)
-    most_frames = int((per_node - 6.0) // (runs + 1))
-    most_grid = math.isqrt(int(MAX_PATCH_MEMORY / (8.0 * ((runs + 1) * frames + 6.0))))
-    fix = f"give {grid_name} <= {most_grid}" + (f" or {frames_name} <= {most_frames}" if most_frames >= 1 else "")
-    runs_text = f" and {runs} stream angles" if runs > 1 else ""
-    raise ValueError(
-        f"{grid_name}={grid} with {frames_name}={frames}{runs_text} needs ~{need / 1e9:.3g} GB for the patch arrays "
-        f"(({runs + 1} x frames + 6) x grid^2 x 8 B): at most {MAX_PATCH_MEMORY / 1e9:g} GB; {fix}"
-    )
-
-
-@dataclass(frozen=True, eq=False)
-class ErosionResult:
-    """Result of :func:`erode` (SI units).
-
-    ``x``, ``y`` (n,) node coordinates (m); ``wear`` (n, n) worn depth (m); ``dent`` (n, n) or None;
-    ``initial`` (n, n) the initial surface depth (m) or None;
-    ``time`` (k,) s, ``impacts`` (k,), ``particle_mass_kg`` (k,) particles delivered, ``mass_loss_kg`` (k,)
-    = ρ h² Σ w, ``erosion_rate`` (k,) kg/kg (cumulative), ``max_depth_m`` (k,), ``rms_slope`` (k,) of the
-    surface, sampled along the run; ``frame_time`` (f,) s and ``frames`` (f, n, n) the surface at saved
-    times; counts ``n_impacts``, ``shadowed`` (did not hit: local angle ≥ 89°) and ``clamped`` (local normal
-    speed or angle outside the table, clamped to it); ``removed_m3`` Σ of the stamped volumes (m³).
-    """
-
-    x: np.ndarray
-    y: np.ndarray
-    wear: np.ndarray
-    dent: np.ndarray | None
-    initial: np.ndarray | None
-    time: np.ndarray
-    impacts: np.ndarray
-    particle_mass_kg: np.ndarray
-    mass_loss_kg: np.ndarray
-    erosion_rate: np.ndarray
-    max_depth_m: np.ndarray
-    rms_slope: np.ndarray
-    frame_time: np.ndarray
-    frames: np.ndarray
-    n_impacts: int
-    shadowed: int
-    clamped: int
-    removed_m3: float
-    stream: Stream
-    table: ResponseTable = field(repr=False)
-    seed: int = 0
-
-    @property
-    def spacing(self) -> float:
-        """Grid spacing h (m)."""
-        return float(self.x[1] - self.x[0])
-
-    @property
-    def patch_size(self) -> float:
-        """Side of the square periodic patch (m)."""
-        return self.spacing * self.x.size
-
-    @property
-    def surface(self) -> np.ndarray:
-        """Surface depth (m, into the plate) = initial + wear + dent, shape (n, n)."""
-        out = self.wear.copy()
-        for part in (self.initial, self.dent):
-            if part is not None:
-                out += part
-        return out
-
-    @property
-    def interval_erosion_rate(self) -> np.ndarray:
-        """Erosion rate between successive samples (kg/kg; first entry 0): shows how the surface feedback
-        changes the rate as the surface roughens."""
-        dm = np.diff(self.mass_loss_kg)
-        dp = np.diff(self.particle_mass_kg)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            rate = np.where(dp > 0, dm / np.where(dp > 0, dp, 1.0), 0.0)
-        return np.concatenate([[0.0], rate])
-
-    @property
-    def final_erosion_rate(self) -> float:
-        """Erosion rate over the whole exposure (kg of plate per kg of particles)."""
-        return float(self.erosion_rate[-1])
 
 
 def _rms_slope(surface: np.ndarray, h: float) -> float:
@@ -195,8 +85,8 @@ def erode(
     surface of a previous run (its worn mass is not counted again).
     Raises ValueError naming the parameter for an impossible stream (``concentration``/``mass_flux`` denser
     than close-packed particles), a patch smaller than a particle or a footprint (``patch_size``), a grid
-    that does not resolve the contact (``grid``/``patch_size``), patch arrays beyond :data:`MAX_PATCH_MEMORY`
-    (``grid``/``frames``), or too many impacts (``exposure_time``).
+    that does not resolve the contact (``grid``/``patch_size``), patch arrays beyond
+    :data:`wear.erosion.memory.MAX_PATCH_MEMORY` (``grid``/``frames``), or too many impacts (``exposure_time``).
     """
     if not isinstance(table, ResponseTable):
         raise ValueError(f"table={table!r} is not a wear.erosion.table.ResponseTable (build_response_table)")

@@ -16,8 +16,10 @@ from dataclasses import dataclass
 
 from contact import simulate_impact
 from wear.case import JOBS, Case
-from wear.erosion.patch import ErosionResult, check_patch_memory, erode
+from wear.erosion.memory import check_patch_memory
+from wear.erosion.patch import erode
 from wear.erosion.response import ImpactResponse
+from wear.erosion.result import ErosionResult
 from wear.erosion.stream import Stream
 from wear.erosion.table import MAX_TABLE_ENTRIES, build_response_table, table_axes
 
