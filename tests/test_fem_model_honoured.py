@@ -14,7 +14,8 @@ import pytest
 from wear.app.cli import main
 from wear.app.sweep.spec import parse_sweep
 from wear.case import JOBS, Case, dump_case
-from wear.chain.calibrate import calibrate, read_data
+from wear.chain.calibrate import calibrate
+from wear.chain.calibration_data import read_data
 from wear.chain.repeat import repeat
 
 AXISYMMETRIC_ONLY = ("repeat", "calibrate", "indent")

@@ -26,7 +26,8 @@ from contact import simulate_impact
 from contact.results import OUTPUT_UNITS
 from fem import worst_regime
 from wear.case import STAGES, Case, check_job_case, default_case
-from wear.chain.calibrate import calibrate, read_data
+from wear.chain.calibrate import calibrate
+from wear.chain.calibration_data import read_data
 from wear.chain.repeat import repeat
 from wear.chain.single import one_way, run
 from wear.erosion.run import erode_case
