@@ -20,9 +20,8 @@ plane z = 0; on a dented or worn plate the sphere first touches the surface at �
 law shifted by δ₀ (δ' = δ − δ₀). :func:`couple_elastic` solves the same impact on the plate's elastic response
 (:func:`fem.elastic_reload`, the plate's state unchanged) while that response yields nowhere.
 
-The FE pressure p(r, t) along the impact (:func:`pressure_table`) is the cycle's nodal pressure with each FE step
-placed at the impact time where the impact reaches that overlap (on the loading branch before t(δ_max), on the
-unloading branch after it).
+The force law is :func:`fem.force_law.force_law`, the plate's cycle :class:`fem.plate_cycle.PlateCycle`, and the FE
+pressure p(r, t) along the impact :func:`fem.pressure_table.pressure_table`.
 """
 
 from __future__ import annotations
@@ -32,27 +31,25 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 from typing import Protocol
 
-import meshio
 import numpy as np
 
 from contact import ImpactResult, TabulatedLaw
 from contact.impact import ForceLawRangeError
 from fem.axisymmetric.reload import elastic_reload
-from fem.axisymmetric.result import FirstYieldPoint, IndentationResult, join, loading_branch, unloading_curve
+from fem.axisymmetric.result import IndentationResult
 from fem.axisymmetric.solver import PlateState
 from fem.core.increments import ConvergenceError
+from fem.force_law import force_law
+from fem.plate_cycle import PlateCycle
+from fem.pressure_table import contact_pressure, pressure_table
 
 __all__ = [
     "UNLOAD_MARGIN",
     "CouplingSettings",
     "CoupledImpact",
-    "PlateCycle",
     "couple",
     "couple_elastic",
-    "contact_pressure",
-    "force_law",
     "loading_path",
-    "pressure_table",
 ]
 
 #: Relative margin above the impact's δ_max at which the plate starts unloading: the impact's own maximum (on the
@@ -105,94 +102,6 @@ def loading_path(max_overlap: float, steps: int, first_yield_overlap: float | No
     if first_yield_overlap is not None and 0.5 * first_yield_overlap < path[0]:
         path = np.r_[0.5 * first_yield_overlap, path]
     return path
-
-
-def force_law(
-    loading: IndentationResult,
-    unloading: IndentationResult | None = None,
-    first_contact: float = 0.0,
-    effective_modulus: float | None = None,
-    points: int = 41,
-    shear_strength: float = math.inf,
-) -> TabulatedLaw:
-    r"""The plate's force law from first contact (δ' = δ − ``first_contact``, m): the loading branch and the
-    unloading curve from its top (``unloading``), or, without one, a provisional elastic curve of Hertz form
-    :math:`F = F^*\left(\frac{\delta - \delta_p}{\delta^* - \delta_p}\right)^{3/2}`, with
-    :math:`\delta^* - \delta_p = 3F^*/(4E^*a^*)` so that dF/dδ = 2E*a* at the start (exact for elastic unloading;
-    ``effective_modulus`` E*, Pa), which cannot change δ_max. The law carries the plate surface's
-    ``shear_strength`` (Pa, the limit of the impact's slip traction: :attr:`contact.TabulatedLaw.shear_strength`;
-    the 3-D plate's, :mod:`fem.solid_coupling`; ∞ here by default: the axisymmetric plate is frictionless)."""
-    d, f, a = loading_branch(loading.overlap, loading.force, loading.contact_radius, first_contact)
-    if unloading is None:
-        d_star, f_star, a_star = d[-1], f[-1], a[-1]
-        drop = min(3.0 * f_star / (4.0 * effective_modulus * max(a_star, 1e-300)), d_star)
-        s = np.linspace(1.0, 0.0, points)
-        return TabulatedLaw(
-            d,
-            f,
-            a,
-            np.array([d_star]),
-            (d_star - drop + s * drop)[None, :],
-            (f_star * s**1.5)[None, :],
-            (a_star * np.sqrt(s))[None, :],
-            shear_strength,
-        )
-    top, grid, force, radius = unloading_curve(unloading.overlap, unloading.force, unloading.contact_radius, points)
-    top, grid = top - first_contact, grid - first_contact
-    if grid[-1] < 0.0:
-        # a residual overlap below first contact (numerical noise of a shaken-down plate) closes the curve at
-        # δ' = 0, F^(2/3) linear in δ near separation (Hertz-like)
-        new = np.linspace(top, 0.0, points)
-        force = np.interp(new[::-1], grid[::-1], force[::-1] ** (2.0 / 3.0))[::-1] ** 1.5
-        radius = np.interp(new[::-1], grid[::-1], radius[::-1])[::-1]
-        grid, force[-1], radius[-1] = new, 0.0, 0.0
-    return TabulatedLaw(d, f, a, np.array([top]), grid[None, :], force[None, :], radius[None, :], shear_strength)
-
-
-@dataclass(frozen=True, eq=False)
-class PlateCycle:
-    """The plate's cycle of a coupled impact: the kept loading steps below δ* followed by the unloading from δ*
-    (per step: ``overlap`` m from first contact, ``force`` N, ``contact_radius`` m, ``pressure`` Pa (steps, surface
-    nodes), ``regime``, ``max_equivalent_plastic_strain``), ``surface_r`` (m), ``residual_depth`` (m, after the
-    unloading, positive into the plate), ``first_yield`` (reached in this cycle, or None), ``loading`` and
-    ``unloading`` (the plate's results, overlaps from the original plane)."""
-
-    overlap: np.ndarray
-    force: np.ndarray
-    contact_radius: np.ndarray
-    pressure: np.ndarray
-    regime: list[str]
-    max_equivalent_plastic_strain: np.ndarray
-    surface_r: np.ndarray
-    residual_depth: np.ndarray
-    first_yield: FirstYieldPoint | None
-    loading: IndentationResult
-    unloading: IndentationResult
-
-    def to_meshio(self) -> meshio.Mesh:
-        """The plate after the unloading (:meth:`fem.IndentationResult.to_meshio`)."""
-        return self.unloading.to_meshio()
-
-    @classmethod
-    def join(
-        cls, loading: IndentationResult, unloading: IndentationResult, first_contact: float, max_overlap: float
-    ) -> PlateCycle:
-        """The loading steps strictly below ``max_overlap`` δ* (m, from the original plane; the loading may be a
-        whole cycle: stop at its peak) and the unloading."""
-        c = join(loading, unloading, below=max_overlap)
-        return cls(
-            overlap=c.overlap - first_contact,
-            force=c.force,
-            contact_radius=c.contact_radius,
-            pressure=c.pressure,
-            regime=c.regime,
-            max_equivalent_plastic_strain=c.max_equivalent_plastic_strain,
-            surface_r=c.surface_r,
-            residual_depth=c.residual_depth,
-            first_yield=c.first_yield,
-            loading=loading,
-            unloading=unloading,
-        )
 
 
 @dataclass(frozen=True, eq=False)
@@ -382,46 +291,3 @@ def couple_elastic(
         unload_at,
     )
     return replace(coupled, elastic=True, trial_increment=trial)
-
-
-def contact_pressure(pressure, surface_r, contact_radius) -> np.ndarray:
-    """Nodal pressure (Pa, steps × surface nodes) set to zero beyond each step's contact radius (m) and clipped at
-    zero.
-
-    The FE pressure is the L2 projection of the nodal reactions, which rings outside the contact (small positive
-    values at nodes far from it, up to ~4% of the peak next to the edge). Left in, any positive node would stretch
-    a wear grid sized from the largest loaded radius over the whole FE surface."""
-    p = np.maximum(np.asarray(pressure, float), 0.0)
-    r = np.asarray(surface_r, float)
-    a = np.asarray(contact_radius, float)
-    return np.where(r[None, :] <= a[:, None], p, 0.0)
-
-
-def pressure_table(cycle: PlateCycle, impact: ImpactResult) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(time s, surface_r m, pressure Pa) of a plate cycle placed on the impact's time axis.
-
-    Plate step j at overlap δ_j (from first contact) gets the impact time where the impact has that overlap: on the
-    loading branch for steps up to the cycle's maximum, on the unloading branch after it (steps below the residual
-    overlap fall after separation and are dropped, their pressure being zero)."""
-    h = impact.history
-    t, d = np.asarray(h.t, float), np.asarray(h.overlap, float)
-    i_max = int(np.argmax(d))
-    fe_d = np.asarray(cycle.overlap, float)
-    j_max = int(np.argmax(fe_d))
-    load_d = np.maximum.accumulate(d[: i_max + 1])
-    times = np.empty(fe_d.size)
-    times[: j_max + 1] = np.interp(fe_d[: j_max + 1], load_d, t[: i_max + 1])
-    un_t, un_d = t[i_max:][::-1], d[i_max:][::-1]
-    un_d = np.maximum.accumulate(un_d)
-    times[j_max + 1 :] = np.interp(fe_d[j_max + 1 :], un_d, un_t, left=np.inf)
-    keep = np.isfinite(times) & (times <= t[-1])
-    previous = np.concatenate([[-np.inf], np.where(keep, times, -np.inf)[:-1]])
-    keep &= np.where(keep, times, np.inf) > previous  # a step is kept if later than the kept step before it
-    rows = contact_pressure(cycle.pressure, cycle.surface_r, cycle.contact_radius)
-    times, rows = times[keep], rows[keep]
-    # close the table at separation with zero pressure, and open it at first contact
-    if times[0] > t[0]:
-        times, rows = np.concatenate([[t[0]], times]), np.vstack([np.zeros(rows.shape[1]), rows])
-    if times[-1] < t[-1]:
-        times, rows = np.concatenate([times, [t[-1]]]), np.vstack([rows, np.zeros(rows.shape[1])])
-    return times, np.asarray(cycle.surface_r, float), rows

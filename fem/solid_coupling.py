@@ -38,7 +38,7 @@ from scipy.integrate import cumulative_trapezoid
 
 from contact import ImpactResult, Material, TabulatedLaw
 from fem.core.increments import WorkCounters
-from fem.coupling import force_law
+from fem.force_law import force_law
 from fem.solid.indentation import MAX_FRICTION, SolidIndentation, SolidRecorder, solid_solver
 
 __all__ = ["ImpactPath", "SolidCouplingSettings", "SolidCoupledImpact", "couple_solid", "impact_path",

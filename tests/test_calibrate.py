@@ -10,7 +10,8 @@ from wear.app.cli import main
 from wear.app.sweep.runner import run_sweep
 from wear.app.sweep.spec import parse_sweep
 from wear.case import default_case, load_case
-from wear.chain.calibrate import CalibrationData, calibrate, read_data
+from wear.chain.calibrate import calibrate
+from wear.chain.calibration_data import CalibrationData, read_data
 from wear.laws import oka_erosion_ratio
 
 ANGLES = (0.0, 15.0, 30.0, 45.0, 60.0, 70.0, 80.0)

@@ -14,7 +14,8 @@ import pytest
 from wear.app.cli import main
 from wear.app.sweep.spec import parse_sweep
 from wear.case import FEM_MODELS, JOBS, Case, dump_case
-from wear.chain.calibrate import calibrate, read_data
+from wear.chain.calibrate import calibrate
+from wear.chain.calibration_data import read_data
 from wear.chain.plates import PLATES
 from wear.chain.repeat import repeat
 

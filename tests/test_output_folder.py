@@ -21,7 +21,7 @@ import wear.app.commands.erode as erode_cmd
 import wear.app.commands.indent as indent_cmd
 import wear.app.commands.repeat as repeat_cmd
 import wear.app.commands.run as run_cmd
-import wear.app.sweep.runner as sweep_runner
+import wear.app.sweep.execution as sweep_execution
 from wear.app.cli import main
 from wear.app.outputs.folder import MANIFEST, check_output_folder, output_folder, read_manifest
 from wear.app.outputs.writer import write_csv, write_json
@@ -82,7 +82,7 @@ def test_a_folder_of_user_files_is_refused_before_any_work(command, tmp_path, ca
         raise AssertionError("work started before --out was checked")
 
     runners = ((run_cmd, "run"), (indent_cmd, "indent_case"), (erode_cmd, "erode_case"), (repeat_cmd, "repeat"),
-               (calibrate_cmd, "calibrate"), (sweep_runner, "execute_case"))  # fmt: skip
+               (calibrate_cmd, "calibrate"), (sweep_execution, "execute_case"))  # fmt: skip
     for module, name in runners:
         monkeypatch.setattr(module, name, no_work)
     out = tmp_path / "mine"

@@ -25,7 +25,8 @@ from pathlib import Path
 import pytest
 
 from wear.app import cli
-from wear.app.sweep.runner import run_sweep, worker_pool
+from wear.app.sweep.execution import worker_pool
+from wear.app.sweep.runner import run_sweep
 from wear.app.sweep.spec import load_sweep
 from wear.case import Case, default_case
 

@@ -15,7 +15,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from wear.case import Case
-from wear.chain.calibrate import CalibrationData, ForwardModel
+from wear.chain.calibration_data import CalibrationData
+from wear.chain.forward_model import ForwardModel
 
 __all__ = ["LawTrends", "law_trends", "erosion_curve"]
 

@@ -15,7 +15,8 @@ from wear.app.commands.common import add_case_options, add_out_option, case_from
 from wear.app.outputs.calibration import write_calibration
 from wear.app.outputs.folder import check_output_folder
 from wear.case import LAWS
-from wear.chain.calibrate import calibrate, read_data
+from wear.chain.calibrate import calibrate
+from wear.chain.calibration_data import read_data
 
 DEFAULT_OUT = "impactwear-calibrate"
 

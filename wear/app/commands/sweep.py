@@ -13,7 +13,8 @@ from __future__ import annotations
 import argparse
 import sys
 
-from wear.app.sweep.runner import SweepAborted, failed_lines, run_sweep, summary_line
+from wear.app.sweep.execution import SweepAborted
+from wear.app.sweep.runner import failed_lines, run_sweep, summary_line
 from wear.app.sweep.spec import load_sweep
 
 HELP = "run a parameter sweep (SWEEP.toml) on local processes or a Dask cluster; reruns resume"

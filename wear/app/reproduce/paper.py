@@ -23,7 +23,7 @@ from contact.materials import effective_modulus
 from contact.theory import hertz_impact, speed_components, sphere_mass
 from wear import WearLaw, wear_from_impact
 from wear.app.figures import paper as plots
-from wear.app.reproduce.fe import default_case_wear
+from wear.app.reproduce.coupled import default_case_wear
 from wear.app.reproduce.report import FigureReport
 from wear.app.validation.references import KHARAZ, KHARAZ_SOURCE, kharaz_batch, kharaz_data, kharaz_rms
 from wear.case import default_case

@@ -1,6 +1,6 @@
 """``impactwear reproduce``: every reproduced figure (:mod:`wear.app.reproduce.paper`, the paper's own;
-:mod:`wear.app.reproduce.fe`, those of the FE plate; :mod:`wear.app.reproduce.laws`, the wear laws side by side)
-into ``DIR/figures/*.png`` and ``DIR/reproduce.md``."""
+:mod:`wear.app.reproduce.fe` and :mod:`wear.app.reproduce.coupled`, those of the FE plate;
+:mod:`wear.app.reproduce.laws`, the wear laws side by side) into ``DIR/figures/*.png`` and ``DIR/reproduce.md``."""
 
 from __future__ import annotations
 
@@ -11,13 +11,18 @@ from collections.abc import Callable
 from pathlib import Path
 
 from wear.app.outputs.writer import write_text
-from wear.app.reproduce import fe, laws, paper
+from wear.app.reproduce import coupled, fe, laws, paper
 from wear.app.reproduce.report import FigureReport, render_markdown
 
 __all__ = ["FIGURES", "reproduce"]
 
 #: name → function(out_dir, quick) -> FigureReport, in the order of reproduce.md.
-FIGURES: dict[str, Callable[[Path, bool], FigureReport]] = {**paper.FIGURES, **fe.FIGURES, **laws.FIGURES}
+FIGURES: dict[str, Callable[[Path, bool], FigureReport]] = {
+    **paper.FIGURES,
+    **fe.FIGURES,
+    **coupled.FIGURES,
+    **laws.FIGURES,
+}
 
 
 def reproduce(out: str | os.PathLike, *, quick: bool = False, only=None, progress=None) -> list[FigureReport]:

@@ -14,49 +14,37 @@ retried). Because the driver writes each file once, atomically, after the case r
 worker at any moment (Ctrl-C, ``kill -9``) loses at most the cases then running, which the rerun computes again:
 nothing is lost, nothing is duplicated. A worker process that dies takes its case with it: the local pool
 restarts and retries the cases that were running, and gives a case up (recorded as failed) after it was running
-in :data:`MAX_ATTEMPTS` pool breakdowns; Dask does the same through its ``allowed-failures`` setting (default 3).
+in :data:`~wear.app.sweep.execution.MAX_ATTEMPTS` pool breakdowns; Dask does the same through its
+``allowed-failures`` setting (default 3). Where the cases run: :mod:`wear.app.sweep.execution`; the tables:
+:mod:`wear.app.sweep.results`.
 
 Workers run each case in a fresh process (``spawn``) with one thread for numba, OpenMP and BLAS (the sweep's
 parallelism is across cases), so the same case gives the same numbers, bit for bit, whichever way and with how
 many workers the sweep runs. Workers of an existing cluster (``--scheduler``) should set the same variables
-(:data:`THREAD_VARIABLES` = 1) for that guarantee.
+(:data:`~wear.app.sweep.execution.THREAD_VARIABLES` = 1) for that guarantee.
 """
 
 from __future__ import annotations
 
-import concurrent.futures as cf
-import csv
-import io
 import json
-import logging
-import multiprocessing
 import os
 import sys
-import threading
-import time
-from collections.abc import Callable, Iterable
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from tqdm import tqdm
 
-from wear.app.figures.sweep import plot_sweep
 from wear.app.outputs.folder import claim_output_folder
 from wear.app.outputs.writer import remove_stale_temps, write_text
-from wear.app.sweep.spec import SweepCase, SweepSpec, flatten
-from wear.app.sweep.stages import execute_case
-from wear.case import STAGES, TABLES
+from wear.app.sweep.execution import dask_client, run_dask, run_local
+from wear.app.sweep.results import write_outputs
+from wear.app.sweep.spec import SweepCase, SweepSpec
 
-__all__ = ["SweepOutcome", "SweepAborted", "run_sweep", "results_table", "worker_pool", "MAX_ATTEMPTS"]
+__all__ = ["SweepOutcome", "run_sweep"]
 
-#: A case is recorded as failed after the worker running it died this many times.
 #: What a sweep writes in its folder (the rest of the folder is left alone).
 ENTRIES = ("sweep.toml", "cases", "results.csv", "sweep_1d.png", "sweep_2d.png")
-
-MAX_ATTEMPTS = 3
-
-#: Environment variables set to the thread count (1) of every worker, before numpy and numba load.
-THREAD_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS")
 
 
 @dataclass
@@ -92,220 +80,6 @@ def _read_record(out: Path, sc: SweepCase, stage: str) -> dict | None:
 def _write_record(out: Path, sc: SweepCase, stage: str, outcome: dict) -> None:
     record = {"case_id": sc.case_id, "stage": stage, "inputs": sc.inputs, "case": sc.case, **outcome}
     write_text(_case_path(out, sc.case_id), json.dumps(record, indent=1, allow_nan=True) + "\n", fsync=True)
-
-
-# ------------------------------------------------------------------------------------------ execution
-def _worker_init(parent_pid: int, threads: int) -> None:
-    """Limit the worker's threads (before numpy/numba load) and make it exit when the driver disappears."""
-    for var in THREAD_VARIABLES:
-        os.environ[var] = str(threads)
-
-    def watch() -> None:
-        while os.getppid() == parent_pid:
-            time.sleep(0.5)
-        os._exit(1)  # orphaned by a killed driver: its result would have nowhere to go
-
-    threading.Thread(target=watch, daemon=True).start()
-
-
-def _threads_per_worker(workers: int) -> int:
-    """One: a reduction's result may depend on its thread count, and a sweep's speed comes from its cases."""
-    return 1
-
-
-def worker_pool(workers: int) -> cf.ProcessPoolExecutor:
-    """A pool of ``workers`` processes set up as a local sweep's: spawned, each with the thread count of
-    :func:`_threads_per_worker` (:data:`THREAD_VARIABLES`), each ending when this process does. A function run on it
-    gives the very numbers a sweep's case would (a threaded reduction's last digits depend on its thread count)."""
-    return cf.ProcessPoolExecutor(
-        max_workers=workers,
-        mp_context=multiprocessing.get_context("spawn"),
-        initializer=_worker_init,
-        initargs=(os.getpid(), _threads_per_worker(workers)),
-    )
-
-
-Done = Callable[[SweepCase, dict], None]
-
-
-class SweepAborted(RuntimeError):
-    """The local worker processes keep dying without finishing any case (e.g. they cannot start)."""
-
-
-def _run_local(pending: list[SweepCase], stage: str, workers: int, done: Done) -> None:
-    """Run ``pending`` on a pool of ``workers`` spawned processes, at most ``workers`` cases in flight.
-
-    When a worker dies the pool is replaced and the cases that were in flight are retried; a case in flight
-    during :data:`MAX_ATTEMPTS` breakdowns is recorded as failed. After ``MAX_ATTEMPTS + 2`` breakdowns in a row
-    with no case finishing in between, the workers evidently cannot run at all: :class:`SweepAborted`.
-    """
-    queue = list(reversed(pending))
-    attempts: dict[str, int] = {}
-    breaks_in_a_row = 0
-    while queue:
-        pool = worker_pool(workers)
-        running: dict[cf.Future, SweepCase] = {}
-        broken = False
-        try:
-            while queue or running:
-                while queue and len(running) < workers and not broken:
-                    sc = queue.pop()
-                    running[pool.submit(execute_case, stage, sc.case)] = sc
-                finished, _ = cf.wait(running, return_when=cf.FIRST_COMPLETED)
-                for fut in finished:
-                    sc = running.pop(fut)
-                    try:
-                        outcome = fut.result()
-                    except cf.process.BrokenProcessPool:
-                        broken = True
-                        attempts[sc.case_id] = attempts.get(sc.case_id, 0) + 1
-                        if attempts[sc.case_id] >= MAX_ATTEMPTS:
-                            msg = f"worker process died while running this case ({MAX_ATTEMPTS} times)"
-                            done(sc, {"status": "failed", "results": None, "error": msg, "traceback": None})
-                        else:
-                            queue.append(sc)
-                        continue
-                    breaks_in_a_row = 0
-                    done(sc, outcome)
-                if broken and not running:
-                    break  # every in-flight case is accounted for: start a fresh pool
-        except BaseException:
-            _kill_pool(pool)
-            raise
-        pool.shutdown(wait=True, cancel_futures=True)
-        if broken:
-            breaks_in_a_row += 1
-            if breaks_in_a_row >= MAX_ATTEMPTS + 2:
-                raise SweepAborted(
-                    f"local worker processes died {breaks_in_a_row} times in a row without finishing a case "
-                    "(see their messages above); finished cases are kept"
-                )
-
-
-def _kill_pool(pool: cf.ProcessPoolExecutor) -> None:
-    """Stop a pool now (Ctrl-C): cancel queued work and terminate the worker processes."""
-    processes = list(getattr(pool, "_processes", {}).values())
-    pool.shutdown(wait=False, cancel_futures=True)
-    for proc in processes:
-        proc.terminate()
-
-
-def dask_client(dask_local: int | None = None, scheduler: str | None = None):
-    """A ``distributed.Client``: a new loopback ``LocalCluster`` of ``dask_local`` worker processes (one thread
-    each) or the existing cluster at ``scheduler`` (``tcp://host:port``). The caller closes it (and its
-    ``.cluster`` for a local one)."""
-    try:
-        import distributed
-    except ImportError:
-        raise ValueError(
-            "--dask-local/--scheduler need dask.distributed, which is not installed: pip install 'impactwear[dask]'"
-        ) from None
-    if scheduler is not None:
-        try:
-            return distributed.Client(scheduler, timeout="30s")
-        except (OSError, TimeoutError) as exc:
-            raise ValueError(f"scheduler={scheduler!r}: cannot connect to a Dask scheduler ({exc})") from None
-    threads = _threads_per_worker(dask_local)
-    cluster = distributed.LocalCluster(
-        n_workers=dask_local,
-        threads_per_worker=1,
-        processes=True,
-        host="127.0.0.1",
-        dashboard_address=None,
-        silence_logs=logging.ERROR,
-        env={v: str(threads) for v in THREAD_VARIABLES},
-    )
-    return distributed.Client(cluster)
-
-
-def _run_dask(pending: list[SweepCase], stage: str, client, done: Done) -> None:
-    """Submit every pending case to the Dask ``client`` and record each as it completes."""
-    import distributed
-
-    futures = {
-        client.submit(execute_case, stage, sc.case, key=f"impactwear-{stage}-{sc.case_id}", pure=False): sc
-        for sc in pending
-    }
-    try:
-        for fut in distributed.as_completed(futures):
-            sc = futures[fut]
-            try:
-                outcome = fut.result()
-            except Exception as exc:  # e.g. KilledWorker after allowed-failures, or the worker cannot import us
-                outcome = {
-                    "status": "failed",
-                    "results": None,
-                    "error": f"{type(exc).__name__}: {exc}".splitlines()[0],
-                    "traceback": None,
-                }
-            done(sc, outcome)
-            fut.release()
-    except BaseException:
-        client.cancel(list(futures))
-        raise
-
-
-# ---------------------------------------------------------------------------------------------- tables
-def _csv_text(value) -> str:
-    if value is None:
-        return ""
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, float):
-        return repr(value)  # shortest text that reads back to the same float
-    return str(value)
-
-
-def results_table(spec: SweepSpec, records: dict[str, dict]) -> tuple[list[str], list[dict], list[str]]:
-    """The ``results.csv`` table: (header, rows as dicts column → value, result column names).
-
-    Columns: ``case_id``, ``status``, the swept inputs, the other inputs (dotted keys), the results (union over
-    cases, first-seen order; a name clashing with an input gets ``result.``) and ``error``. Rows in expansion
-    order; a case without a record has status ``pending``."""
-    swept = spec.swept_keys
-    others: dict[str, None] = {}
-    for sc in spec.cases:
-        others.update(dict.fromkeys(k for k in flatten(sc.case) if k not in swept))
-    inputs = swept + list(others)
-    result_keys: dict[str, None] = {}
-    for sc in spec.cases:
-        result_keys.update(dict.fromkeys((records.get(sc.case_id) or {}).get("results") or {}))
-    named = {k: (f"result.{k}" if k in inputs else k) for k in result_keys}
-    header = ["case_id", "status", *inputs, *named.values(), "error"]
-    rows = []
-    for sc in spec.cases:
-        record = records.get(sc.case_id) or {"status": "pending"}
-        results = record.get("results") or {}
-        row = {"case_id": sc.case_id, "status": record["status"]}
-        row.update(flatten(sc.case))
-        row.update(sc.inputs)  # the values as written in the sweep file (the figure's axis values)
-        row.update({named[k]: results.get(k) for k in result_keys})
-        row["error"] = record.get("error")
-        rows.append(row)
-    return header, rows, list(named.values())
-
-
-def _write_outputs(spec: SweepSpec, out: Path, records: dict[str, dict]) -> None:
-    header, rows, results = results_table(spec, records)
-    buf = io.StringIO()
-    writer = csv.writer(buf, lineterminator="\n")
-    writer.writerow(header)
-    writer.writerows([[_csv_text(row.get(k)) for k in header] for row in rows])
-    write_text(out / "results.csv", buf.getvalue(), fsync=True)
-    if spec.axes is not None:
-        units = {**_input_units(spec.axes), **STAGES[spec.stage].result_units()}
-        plot_sweep(spec.axes, rows, results, out, units=units)
-
-
-def _input_units(keys: Iterable[str]) -> dict[str, str]:
-    """SI units of dotted case keys, from the case schema."""
-    units = {}
-    for dotted in keys:
-        table, _, name = dotted.partition(".")
-        key = TABLES[table].keys().get(name) if table in TABLES else None
-        if key is not None and key.units:
-            units[dotted] = key.units
-    return units
 
 
 # -------------------------------------------------------------------------------------------- driver
@@ -376,20 +150,20 @@ def run_sweep(
         if pending and (dask_local is not None or scheduler is not None):
             client = dask_client(dask_local, scheduler)
             try:
-                _run_dask(pending, spec.stage, client, done)
+                run_dask(pending, spec.stage, client, done)
             finally:
                 cluster = client.cluster if dask_local is not None else None
                 client.close()
                 if cluster is not None:
                     cluster.close()
         elif pending:
-            _run_local(pending, spec.stage, workers or os.cpu_count() or 1, done)
+            run_local(pending, spec.stage, workers or os.cpu_count() or 1, done)
     except KeyboardInterrupt:
         outcome.interrupted = True
         bar.close()
         raise
     bar.close()
-    _write_outputs(spec, out, records)
+    write_outputs(spec, out, records)
     return outcome
 
 

@@ -27,7 +27,8 @@ from contact.results import OUTPUT_UNITS
 from fem import worst_regime
 from wear.case import STAGES, Case, check_job_case, default_case
 from wear.chain.axisymmetric_run import one_way
-from wear.chain.calibrate import calibrate, read_data
+from wear.chain.calibrate import calibrate
+from wear.chain.calibration_data import read_data
 from wear.chain.repeat import repeat
 from wear.chain.single import run
 from wear.erosion.run import erode_case

@@ -6,7 +6,8 @@ closed form evaluated separately, a conservation law) and records: quantity, cas
 source, obtained value, error, tolerance, pass/fail. Checks come in groups: a group is a function
 ``group(quick: bool) -> list[Check]`` registered with :func:`register` under an area (``contact``, ``fem``,
 ``wear``); ``quick=True`` runs the same computation at reduced sizes (the test suite uses it), ``quick=False`` at
-the full resolution of the report. The groups live in :mod:`wear.app.validation.contact`, ``.fem`` and ``.wear``.
+the full resolution of the report. The groups live in :mod:`wear.app.validation.chung_ooi`, ``.contact``,
+``.fem``, ``.laws`` and ``.wear``.
 """
 
 from __future__ import annotations

@@ -18,7 +18,9 @@ from contact.theory import yield_velocity
 from wear.app.validation.checks import Check, absolute, register, relative
 from wear.app.validation.references import MEASURED_EROSION, OKA_CARBON_STEEL, OKA_SOURCE, oka_curve
 from wear.case import default_case
-from wear.chain.calibrate import CalibrationData, ForwardModel, calibrate
+from wear.chain.calibrate import calibrate
+from wear.chain.calibration_data import CalibrationData
+from wear.chain.forward_model import ForwardModel
 from wear.chain.trends import law_trends
 from wear.laws import dnv_angle_function, finnie_volume, oka_erosion_ratio
 

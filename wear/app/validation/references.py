@@ -13,7 +13,7 @@ from importlib import resources
 import numpy as np
 
 from contact import BatchResult, Material, simulate_impacts
-from wear.chain.calibrate import CalibrationData
+from wear.chain.calibration_data import CalibrationData
 from wear.laws import oka_erosion_ratio
 
 __all__ = [

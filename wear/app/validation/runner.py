@@ -1,5 +1,6 @@
-"""``impactwear validate``: every registered check group (:mod:`wear.app.validation.contact`, ``.fem``, ``.wear``)
-run at full resolution, as one Markdown table (``docs/validation.md`` is its committed output)."""
+"""``impactwear validate``: every registered check group (:mod:`wear.app.validation.chung_ooi`, ``.contact``,
+``.fem``, ``.laws``, ``.wear``) run at full resolution, as one Markdown table (``docs/validation.md`` is its committed
+output)."""
 
 from __future__ import annotations
 
@@ -11,7 +12,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from wear.app.outputs.writer import write_text
-from wear.app.validation import contact, fem, laws, wear  # noqa: F401  (importing them registers their groups)
+from wear.app.validation import chung_ooi, contact, fem, laws, wear  # noqa: F401  (importing them registers their groups)
 from wear.app.validation.checks import AREAS, GROUPS, Check
 
 __all__ = ["Validation", "run_validation", "render_report", "write_report"]

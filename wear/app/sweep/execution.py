@@ -1,0 +1,179 @@
+"""Where a sweep's cases run: a local pool of spawned processes or a Dask cluster (:mod:`wear.app.sweep.runner`
+records each case as it returns).
+
+A worker process that dies takes its case with it: the local pool restarts and retries the cases that were
+running, and gives a case up (recorded as failed) after it was running in :data:`MAX_ATTEMPTS` pool breakdowns; Dask
+does the same through its ``allowed-failures`` setting (default 3). Workers run each case with one thread for numba,
+OpenMP and BLAS (:data:`THREAD_VARIABLES` = 1).
+"""
+
+from __future__ import annotations
+
+import concurrent.futures as cf
+import logging
+import multiprocessing
+import os
+import threading
+import time
+from collections.abc import Callable
+
+from wear.app.sweep.spec import SweepCase
+from wear.app.sweep.stages import execute_case
+
+__all__ = ["MAX_ATTEMPTS", "THREAD_VARIABLES", "SweepAborted", "dask_client", "run_dask", "run_local", "worker_pool"]
+
+#: A case is recorded as failed after the worker running it died this many times.
+MAX_ATTEMPTS = 3
+
+#: Environment variables set to the thread count (1) of every worker, before numpy and numba load.
+THREAD_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS")
+
+
+def _worker_init(parent_pid: int, threads: int) -> None:
+    """Limit the worker's threads (before numpy/numba load) and make it exit when the driver disappears."""
+    for var in THREAD_VARIABLES:
+        os.environ[var] = str(threads)
+
+    def watch() -> None:
+        while os.getppid() == parent_pid:
+            time.sleep(0.5)
+        os._exit(1)  # orphaned by a killed driver: its result would have nowhere to go
+
+    threading.Thread(target=watch, daemon=True).start()
+
+
+def _threads_per_worker(workers: int) -> int:
+    """One: a reduction's result may depend on its thread count, and a sweep's speed comes from its cases."""
+    return 1
+
+
+def worker_pool(workers: int) -> cf.ProcessPoolExecutor:
+    """A pool of ``workers`` processes set up as a local sweep's: spawned, each with the thread count of
+    :func:`_threads_per_worker` (:data:`THREAD_VARIABLES`), each ending when this process does. A function run on it
+    gives the very numbers a sweep's case would (a threaded reduction's last digits depend on its thread count)."""
+    return cf.ProcessPoolExecutor(
+        max_workers=workers,
+        mp_context=multiprocessing.get_context("spawn"),
+        initializer=_worker_init,
+        initargs=(os.getpid(), _threads_per_worker(workers)),
+    )
+
+
+Done = Callable[[SweepCase, dict], None]
+
+
+class SweepAborted(RuntimeError):
+    """The local worker processes keep dying without finishing any case (e.g. they cannot start)."""
+
+
+def run_local(pending: list[SweepCase], stage: str, workers: int, done: Done) -> None:
+    """Run ``pending`` on a pool of ``workers`` spawned processes, at most ``workers`` cases in flight.
+
+    When a worker dies the pool is replaced and the cases that were in flight are retried; a case in flight
+    during :data:`MAX_ATTEMPTS` breakdowns is recorded as failed. After ``MAX_ATTEMPTS + 2`` breakdowns in a row
+    with no case finishing in between, the workers evidently cannot run at all: :class:`SweepAborted`.
+    """
+    queue = list(reversed(pending))
+    attempts: dict[str, int] = {}
+    breaks_in_a_row = 0
+    while queue:
+        pool = worker_pool(workers)
+        running: dict[cf.Future, SweepCase] = {}
+        broken = False
+        try:
+            while queue or running:
+                while queue and len(running) < workers and not broken:
+                    sc = queue.pop()
+                    running[pool.submit(execute_case, stage, sc.case)] = sc
+                finished, _ = cf.wait(running, return_when=cf.FIRST_COMPLETED)
+                for fut in finished:
+                    sc = running.pop(fut)
+                    try:
+                        outcome = fut.result()
+                    except cf.process.BrokenProcessPool:
+                        broken = True
+                        attempts[sc.case_id] = attempts.get(sc.case_id, 0) + 1
+                        if attempts[sc.case_id] >= MAX_ATTEMPTS:
+                            msg = f"worker process died while running this case ({MAX_ATTEMPTS} times)"
+                            done(sc, {"status": "failed", "results": None, "error": msg, "traceback": None})
+                        else:
+                            queue.append(sc)
+                        continue
+                    breaks_in_a_row = 0
+                    done(sc, outcome)
+                if broken and not running:
+                    break  # every in-flight case is accounted for: start a fresh pool
+        except BaseException:
+            _kill_pool(pool)
+            raise
+        pool.shutdown(wait=True, cancel_futures=True)
+        if broken:
+            breaks_in_a_row += 1
+            if breaks_in_a_row >= MAX_ATTEMPTS + 2:
+                raise SweepAborted(
+                    f"local worker processes died {breaks_in_a_row} times in a row without finishing a case "
+                    "(see their messages above); finished cases are kept"
+                )
+
+
+def _kill_pool(pool: cf.ProcessPoolExecutor) -> None:
+    """Stop a pool now (Ctrl-C): cancel queued work and terminate the worker processes."""
+    processes = list(getattr(pool, "_processes", {}).values())
+    pool.shutdown(wait=False, cancel_futures=True)
+    for proc in processes:
+        proc.terminate()
+
+
+def dask_client(dask_local: int | None = None, scheduler: str | None = None):
+    """A ``distributed.Client``: a new loopback ``LocalCluster`` of ``dask_local`` worker processes (one thread
+    each) or the existing cluster at ``scheduler`` (``tcp://host:port``). The caller closes it (and its
+    ``.cluster`` for a local one)."""
+    try:
+        import distributed
+    except ImportError:
+        raise ValueError(
+            "--dask-local/--scheduler need dask.distributed, which is not installed: pip install 'impactwear[dask]'"
+        ) from None
+    if scheduler is not None:
+        try:
+            return distributed.Client(scheduler, timeout="30s")
+        except (OSError, TimeoutError) as exc:
+            raise ValueError(f"scheduler={scheduler!r}: cannot connect to a Dask scheduler ({exc})") from None
+    threads = _threads_per_worker(dask_local)
+    cluster = distributed.LocalCluster(
+        n_workers=dask_local,
+        threads_per_worker=1,
+        processes=True,
+        host="127.0.0.1",
+        dashboard_address=None,
+        silence_logs=logging.ERROR,
+        env={v: str(threads) for v in THREAD_VARIABLES},
+    )
+    return distributed.Client(cluster)
+
+
+def run_dask(pending: list[SweepCase], stage: str, client, done: Done) -> None:
+    """Submit every pending case to the Dask ``client`` and record each as it completes."""
+    import distributed
+
+    futures = {
+        client.submit(execute_case, stage, sc.case, key=f"impactwear-{stage}-{sc.case_id}", pure=False): sc
+        for sc in pending
+    }
+    try:
+        for fut in distributed.as_completed(futures):
+            sc = futures[fut]
+            try:
+                outcome = fut.result()
+            except Exception as exc:  # e.g. KilledWorker after allowed-failures, or the worker cannot import us
+                outcome = {
+                    "status": "failed",
+                    "results": None,
+                    "error": f"{type(exc).__name__}: {exc}".splitlines()[0],
+                    "traceback": None,
+                }
+            done(sc, outcome)
+            fut.release()
+    except BaseException:
+        client.cancel(list(futures))
+        raise

@@ -1,0 +1,135 @@
+"""Measured wear for a calibration (:mod:`wear.chain.calibrate`): a CSV file read and checked into
+:class:`CalibrationData`. SI units; angles in degrees from the plate normal.
+
+One row per measurement — ``angle_deg`` (from the normal), ``speed_m_s``, one measured quantity
+(:data:`QUANTITIES`: the erosion ratio kg/kg, the mass or the volume worn per impact), and optionally case keys per
+row as extra columns named as in the schema (``ball.radius``, ``impact.friction``, ``plate.hardness``, ...). A row
+whose measured value is empty is predicted, not fitted.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from wear.case import TABLES
+
+__all__ = ["QUANTITIES", "CalibrationData", "read_data"]
+
+#: Measured quantities a data file may hold (column name → what it is).
+QUANTITIES = {
+    "erosion_kg_per_kg": "erosion ratio: mass of plate worn per mass of particles (kg/kg)",
+    "mass_per_impact_kg": "mass of plate worn per impact (kg)",
+    "volume_per_impact_m3": "volume of plate worn per impact (m^3)",
+}
+
+
+@dataclass(frozen=True, eq=False)
+class CalibrationData:
+    """Measurements: ``angle`` (deg from the normal), ``speed`` (m/s), ``measured`` (NaN where only predicted) of
+    ``quantity`` (:data:`QUANTITIES`), ``keys`` (dotted case key → per-row values), ``source`` (where they came
+    from)."""
+
+    angle: np.ndarray
+    speed: np.ndarray
+    quantity: str
+    measured: np.ndarray
+    keys: dict[str, np.ndarray]
+    source: str = ""
+
+    @property
+    def fitted(self) -> np.ndarray:
+        """Rows with a measured value."""
+        return np.isfinite(self.measured)
+
+
+def _number(text: str, column: str, row: int) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise ValueError(f"{column}={text!r} in row {row} is not a number") from None
+    if math.isnan(value) or math.isinf(value):
+        raise ValueError(f"{column}={text!r} in row {row} is not finite")
+    return value
+
+
+def read_data(path: str | os.PathLike) -> CalibrationData:
+    """Read and check a data file (CSV with a header row; see the module docstring). Errors are one line naming
+    the column and the row (rows counted from 1 after the header)."""
+    p = Path(path)
+    if not p.is_file():
+        raise ValueError(f"data={str(p)!r} is not a file")
+    with open(p, newline="", encoding="utf-8") as f:
+        rows = list(csv.reader(f))
+    if not rows:
+        raise ValueError(f"data={str(p)!r} is empty: give a header row and one row per measurement")
+    header, body = [h.strip() for h in rows[0]], [r for r in rows[1:] if any(c.strip() for c in r)]
+    measured = [h for h in header if h in QUANTITIES]
+    for need in ("angle_deg", "speed_m_s"):
+        if need not in header:
+            raise ValueError(
+                f"column {need!r} is missing from data={str(p)!r}: the columns are angle_deg, speed_m_s, "
+                f"one of {', '.join(QUANTITIES)} and optional case keys (table.key)"
+            )
+    if len(measured) != 1:
+        raise ValueError(
+            f"data={str(p)!r} has {len(measured)} measured columns {measured}: give exactly one of "
+            f"{', '.join(QUANTITIES)}"
+        )
+    keys = [h for h in header if h not in ("angle_deg", "speed_m_s", measured[0])]
+    for k in keys:
+        table, _, name = k.partition(".")
+        if table not in TABLES or name not in TABLES[table].keys():
+            raise ValueError(
+                f"column {k!r} of data={str(p)!r} is not a case key (table.key, e.g. ball.radius) nor "
+                f"angle_deg, speed_m_s or a measured quantity"
+            )
+        if TABLES[table].keys()[name].type not in (int, float):
+            raise ValueError(f"column {k!r} of data={str(p)!r} is not a numeric case key")
+    if not body:
+        raise ValueError(f"data={str(p)!r} has no rows: give one row per measurement")
+    angle, speed, value = [], [], []
+    extra: dict[str, list[float]] = {k: [] for k in keys}
+    for i, row in enumerate(body, start=1):
+        if len(row) != len(header):
+            raise ValueError(f"row {i} of data={str(p)!r} has {len(row)} values for {len(header)} columns")
+        cells = dict(zip(header, (c.strip() for c in row), strict=True))
+        a = _number(cells["angle_deg"], "angle_deg", i)
+        if not 0.0 <= a < 90.0:
+            raise ValueError(
+                f"angle_deg={a:g} in row {i} is out of range: the angle from the normal must be in [0, 90) deg"
+            )
+        v = _number(cells["speed_m_s"], "speed_m_s", i)
+        if not 0.0 < v <= 1000.0:
+            raise ValueError(f"speed_m_s={v:g} in row {i} is out of range: must be in (0, 1000] m/s")
+        text = cells[measured[0]]
+        if text == "":
+            m = math.nan
+        else:
+            m = _number(text, measured[0], i)
+            if m <= 0.0:
+                raise ValueError(
+                    f"{measured[0]}={m:g} in row {i} is out of range: must be > 0 (its log is fitted); "
+                    "leave it empty to predict the row"
+                )
+        angle.append(a)
+        speed.append(v)
+        value.append(m)
+        for k in keys:
+            extra[k].append(_number(cells[k], k, i))
+    data = CalibrationData(
+        np.array(angle),
+        np.array(speed),
+        measured[0],
+        np.array(value),
+        {k: np.array(v) for k, v in extra.items()},
+        str(p),
+    )
+    if not data.fitted.any():
+        raise ValueError(f"{measured[0]} is empty in every row of data={str(p)!r}: no measured row to fit")
+    return data

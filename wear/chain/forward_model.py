@@ -1,0 +1,130 @@
+"""The forward model of a calibration (:mod:`wear.chain.calibrate`): the impacts of every data row, computed once,
+and the wear law of :mod:`wear.laws` evaluated on them for any constants. SI units; angles in degrees from the plate
+normal.
+
+The impacts do not depend on the wear law's constants, so they are computed once (``contact.simulate_impacts``,
+one batch per group of rows with the same case keys); each evaluation only re-evaluates the law: the Eq. 15 volume
+K ∫ v^β ∫ p^α dA dt on the stored pressure histories (:func:`wear.laws.local_volume`), or the closed forms. With
+``fem.coupling = "two-way"`` and a law that uses the FE (the ``"fe"`` pressure, or the plastic work of the
+deformation laws) each row's coupled FE impact is computed once too (seconds per row).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+import fem
+from contact import ImpactResult, simulate_impacts
+from contact.theory import sphere_mass
+from wear.case import Case
+from wear.chain.calibration_data import CalibrationData
+from wear.chain.plate import case_plate, coupling_settings, impact_on_law, wear_constants
+from wear.chain.single import estimate_arguments, estimate_impact
+from wear.law import WearLaw
+from wear.laws import impact_wear, local_volume, pressed_area
+from wear.pressure import PressureHistory, SlidingSpeed, pressure_history, sliding_speed
+
+__all__ = ["ForwardModel"]
+
+
+def _row_case(case: Case, data: CalibrationData, i: int) -> Case:
+    tables: dict[str, dict[str, float]] = {"impact": {"speed": float(data.speed[i]), "angle": float(data.angle[i])}}
+    for dotted, values in data.keys.items():
+        table, _, name = dotted.partition(".")
+        tables.setdefault(table, {})[name] = float(values[i])
+    try:
+        return case.with_(**tables)
+    except ValueError as exc:
+        raise ValueError(f"row {i + 1}: {exc}") from None
+
+
+@dataclass(frozen=True, eq=False)
+class _Row:
+    impact: ImpactResult
+    pressure: PressureHistory | None
+    speed: SlidingSpeed | None
+    plate_work: float | None
+    to_quantity: float  # the measured quantity per m^3 worn
+
+
+class ForwardModel:
+    """The impacts of every data row, computed once, and the law evaluated on them for any constants
+    (:meth:`predict`: the measured quantity per row)."""
+
+    def __init__(self, case: Case, data: CalibrationData) -> None:
+        self.case, self.data = case, data
+        law, cut = case.wear.law, case.wear.cutting
+        uses_local = law == "local" or (law == "combined" and cut == "local")
+        uses_work = law in ("deformation", "combined")
+        coupled = case.fem.coupling == "two-way" and ((uses_local and case.wear.pressure == "fe") or uses_work)
+        if case.wear.pressure == "fe" and uses_local and not coupled:
+            raise ValueError("wear.pressure='fe' needs the FE plate: set fem.coupling='two-way' (or another pressure)")
+        cases = [_row_case(case, data, i) for i in range(data.angle.size)]
+        impacts = self._coupled(cases) if coupled else self._batched(cases)
+        rows = []
+        for c, (impact, table, work) in zip(cases, impacts, strict=True):
+            ph = sp = None
+            if uses_local:
+                ph = pressure_history(impact, c.wear.pressure, fe=table, limiting_pressure=c.impact.limiting_pressure)
+                sp = sliding_speed(impact, c.wear.speed)
+            density = c.plate.material().density
+            per_volume = {
+                "volume_per_impact_m3": 1.0,
+                "mass_per_impact_kg": density,
+                "erosion_kg_per_kg": density / sphere_mass(c.ball.radius, c.ball.density),
+            }
+            rows.append(_Row(impact, ph, sp, work, per_volume[data.quantity]))
+        self.rows = rows
+        self.constants = [wear_constants(c) for c in cases]
+        self._areas: list[tuple[float, np.ndarray | None]] = [(math.nan, None)] * len(rows)
+
+    @staticmethod
+    def _batched(cases: list[Case]) -> list[tuple[ImpactResult, None, None]]:
+        groups: dict[Case, list[int]] = {}
+        for i, c in enumerate(cases):
+            groups.setdefault(c.with_(impact={"speed": 1.0, "angle": 0.0}), []).append(i)
+        out: list = [None] * len(cases)
+        for key, idx in groups.items():
+            kw = estimate_arguments(
+                key,
+                speed=np.array([cases[i].impact.speed for i in idx]),
+                angle=np.array([cases[i].impact.angle for i in idx]),
+            )
+            batch = simulate_impacts(**kw, histories=True)
+            for k, i in enumerate(idx):
+                out[i] = (batch[k], None, None)
+        return out
+
+    @staticmethod
+    def _coupled(cases: list[Case]) -> list[tuple[ImpactResult, tuple, float]]:
+        out = []
+        for c in cases:
+            estimate = estimate_impact(c)
+            plate = case_plate(c, (1.0 + c.fem.overshoot) * estimate.max_overlap)
+            coupled = fem.couple(plate, impact_on_law(c), estimate.max_overlap, coupling_settings(c))
+            out.append((coupled.impact, coupled.pressure_table, coupled.plastic_work))
+        return out
+
+    def predict(self, values: dict[str, float]) -> np.ndarray:
+        """The measured quantity of every row for the law's constants with ``values`` replacing some."""
+        out = np.empty(len(self.rows))
+        law = self.case.wear.law
+        for i, (row, base) in enumerate(zip(self.rows, self.constants, strict=True)):
+            constants = {**base, **values}
+            local = None
+            if row.pressure is not None:
+                alpha = constants["alpha"]
+                if self._areas[i][0] != alpha:  # the area integral changes with α only: kept between evaluations
+                    self._areas[i] = (alpha, pressed_area(row.pressure, alpha))
+                local = local_volume(
+                    row.pressure,
+                    row.speed,
+                    WearLaw(K=constants["K"], alpha=alpha, beta=constants["beta"]),
+                    self._areas[i][1],
+                )
+            worn = impact_wear(law, constants, row.impact, local=local, plate_work=row.plate_work)
+            out[i] = worn.volume_m3 * row.to_quantity
+        return out
