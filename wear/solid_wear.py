@@ -39,17 +39,19 @@ from fem.solid.indentation import SolidIndentation
 from wear.law import WearLaw
 from wear.pressure import SlidingSpeed
 
-__all__ = ["mirrored_surface", "solid_grid", "step_weights", "solid_wear_depth", "solid_dent_depth"]
+__all__ = ["on_half_surface", "solid_grid", "step_weights", "solid_wear_depth", "solid_dent_depth"]
 
 
-def mirrored_surface(solid: SolidIndentation, xy: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Surface points ``xy`` (m, (n, 2); default the surface vertices) of the half plate and their mirror images
-    about y = 0 (those on the plane once), and the index of the half-plate point each comes from."""
-    xy = solid.surface_vertices[:, :2] if xy is None else xy
-    tol = 1e-9 * float(np.ptp(xy[:, 0]))
-    off = np.flatnonzero(xy[:, 1] > tol)
-    points = np.vstack([xy, xy[off] * [1.0, -1.0]])
-    return points, np.r_[np.arange(xy.shape[0]), off]
+def on_half_surface(points: np.ndarray, values: np.ndarray, px: np.ndarray, py: np.ndarray) -> np.ndarray:
+    """The whole plate's field at (``px``, ``py``) (m, any shape) from its ``values`` (n, ...) at the half plate's
+    surface ``points`` (m, (n, 2), y ≥ 0): linear over a triangulation of the half plate's points, evaluated at
+    (x, |y|), so that the field is symmetric about the plane of incidence y = 0 by construction (a triangulation
+    of the points and their mirror images is not: a structured mesh's cocircular points leave Delaunay a choice
+    on each side, and the two halves' choices differ); 0 outside the surface. Shape ``px.shape + values.shape[1:]``."""
+    px, py = np.broadcast_arrays(np.asarray(px, float), np.asarray(py, float))
+    field = LinearNDInterpolator(Delaunay(points), values, fill_value=0.0)
+    out = field(np.column_stack([px.ravel(), np.abs(py.ravel())]))
+    return out.reshape(*px.shape, *np.shape(values)[1:])
 
 
 def solid_grid(solid: SolidIndentation, points_across: int, reach: float = 2.0) -> tuple[np.ndarray, np.ndarray]:
@@ -79,11 +81,10 @@ def step_weights(times: np.ndarray, speed: SlidingSpeed, law: WearLaw) -> np.nda
 
 
 def _on_grid(points: np.ndarray, values: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
-    """Linear interpolation of vertex ``values`` (m, ...) on the grid: (..., ny, nx), 0 outside the surface."""
+    """Vertex ``values`` (m, ...) of the half plate at ``points`` (m) on the grid ``x``, ``y`` (m): (..., ny, nx),
+    symmetric about y = 0 (:func:`on_half_surface`), 0 outside the surface."""
     gx, gy = np.meshgrid(x, y)
-    inside = LinearNDInterpolator(Delaunay(points), values, fill_value=0.0)
-    out = inside(np.column_stack([gx.ravel(), gy.ravel()]))
-    return np.moveaxis(out.reshape(*gx.shape, *np.shape(values)[1:]), (0, 1), (-2, -1))
+    return np.moveaxis(on_half_surface(points, values, gx, gy), (0, 1), (-2, -1))
 
 
 def solid_wear_depth(solid: SolidIndentation, times: np.ndarray, speed: SlidingSpeed, law: WearLaw, x: np.ndarray,
@@ -92,7 +93,6 @@ def solid_wear_depth(solid: SolidIndentation, times: np.ndarray, speed: SlidingS
     placed at impact ``times`` (s), with the local wear ``law``: at each point's own slip rate on the plate where
     ``speed.model`` is ``"sliding"``, at the impact's rigid-body slip ``speed`` (m/s) where it is ``"kinematic"``
     (module docstring)."""
-    points, source = mirrored_surface(solid)
     times = np.asarray(times, float)
     pressed = np.maximum(solid.pressure, 0.0) ** law.alpha
     if speed.model == "sliding":
@@ -103,7 +103,7 @@ def solid_wear_depth(solid: SolidIndentation, times: np.ndarray, speed: SlidingS
         worn = law.K * 0.5 * (before + pressed) * step[:, None] * rate**law.beta
     else:
         worn = pressed * step_weights(times, speed, law)[:, None]
-    return np.maximum(_on_grid(points, worn[:, source].sum(axis=0), x, y), 0.0)
+    return np.maximum(_on_grid(solid.surface_vertices[:, :2], worn.sum(axis=0), x, y), 0.0)
 
 
 def solid_dent_depth(solid: SolidIndentation, x: np.ndarray, y: np.ndarray) -> np.ndarray:
@@ -111,6 +111,4 @@ def solid_dent_depth(solid: SolidIndentation, x: np.ndarray, y: np.ndarray) -> n
     quadratic surface nodes (vertices and mid-edge nodes) interpolated linearly, which halves the distance over
     which the curved dent bottom is cut short against the vertices alone."""
     d = solid.solver.disc
-    points, source = mirrored_surface(solid, d.surface_xy)
-    depth = -solid.final.u[d.surface_dofs(2)]
-    return _on_grid(points, depth[source], x, y).T
+    return _on_grid(d.surface_xy, -solid.final.u[d.surface_dofs(2)], x, y).T

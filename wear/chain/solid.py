@@ -17,7 +17,6 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numpy as np
-from scipy.interpolate import LinearNDInterpolator
 
 from contact import ImpactResult
 from fem.solid.indentation import MAX_FRICTION
@@ -27,7 +26,7 @@ from wear.chain.plate import impact_on_law, wear_constants
 from wear.integrate import WearMap, wear_map
 from wear.laws import ImpactWear, impact_wear, wear_of_impact
 from wear.pressure import PressureHistory, fe_pressure_history, sliding_speed
-from wear.solid_wear import mirrored_surface, solid_dent_depth, solid_grid, solid_wear_depth
+from wear.solid_wear import on_half_surface, solid_dent_depth, solid_grid, solid_wear_depth
 from wear.surface import DeformedSurface
 
 __all__ = ["MIN_CONTACT_ELEMENTS", "SOLID_TANGENTIAL_MODEL", "check_solid_case", "solid_case", "solid_settings",
@@ -91,10 +90,9 @@ def _across_profile(coupled: SolidCoupledImpact, samples: int = 81) -> PressureH
     """The 3-D pressure across the track through each step's contact centre as a p(r, t) table (the wear stage's
     pressure history for the summary, ``pressure.npz`` and the figures)."""
     solid = coupled.solid
-    points, source = mirrored_surface(solid)
-    field = LinearNDInterpolator(points, solid.pressure[:, source].T, fill_value=0.0)
     radii = np.linspace(0.0, 1.5 * float(np.max(solid.contact_radius)), samples)
-    rows = np.array([field(np.column_stack([np.full(samples, c), radii]))[:, k] for k, c in enumerate(solid.centre)])
+    across = on_half_surface(solid.surface_vertices[:, :2], solid.pressure.T, solid.centre[:, None], radii)
+    rows = np.array([across[k, :, k] for k in range(solid.centre.size)])
     ph = fe_pressure_history(coupled.times, radii, rows, solid.centre)
     return PressureHistory(ph.time, ph.contact_x, ph.extent, ph.pressure, source="fe-3d (across the track)")
 

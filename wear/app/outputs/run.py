@@ -34,8 +34,10 @@ PRESSURE_ABOUT = (
     "fe_surface_r_m and fe_pressure_Pa[i, j]: the FE plate's contact pressure at its surface nodes. With the 3-D "
     "plate (fem.model = '3d') the pressure above is its profile across the track, and fe3d_time_s[i], "
     "fe3d_surface_xy_m[j] (surface vertices of the half plate y >= 0), fe3d_pressure_Pa[i, j], fe3d_shear_Pa[i, j, 2] "
-    "(traction on the plate, x and y), fe3d_sticking[i, j] and fe3d_slip_m[i, j, 2] (the ball's slip over the "
-    "vertex in the step ending at i, x and y) are its fields."
+    "(traction on the plate, x and y: the ball's force on the vertex's share of the surface over that share's area, "
+    "linear between the vertices, so that |shear| <= min(friction * pressure, shear strength) at a sliding vertex and "
+    "the fields integrate to the plate's forces), fe3d_sticking[i, j] and fe3d_slip_m[i, j, 2] (the ball's slip over "
+    "the vertex in the step ending at i, x and y) are its fields."
 )
 
 #: history.csv columns: :class:`contact.History` field → column name with units.
