@@ -37,6 +37,7 @@ import numpy as np
 from scipy.integrate import cumulative_trapezoid
 
 from contact import ImpactResult, Material, TabulatedLaw
+from contact.fields import SurfaceField
 from fem.core.increments import WorkCounters
 from fem.force_law import force_law
 from fem.solid.indentation import MAX_FRICTION, SolidIndentation, SolidRecorder, solid_solver
@@ -144,6 +145,12 @@ class SolidCoupledImpact:
     def iterations(self) -> int:
         """3-D plate cycles run."""
         return len(self.max_overlaps) - 1
+
+    @property
+    def field(self) -> SurfaceField:
+        """The 3-D plate's surface fields along the impact, its steps at their impact ``times``
+        (:meth:`fem.solid.indentation.SolidIndentation.surface_field`)."""
+        return self.solid.surface_field(self.times)
 
     @property
     def tangential_mismatch(self) -> float:

@@ -181,13 +181,24 @@ def test_function_level_imports_are_few_and_say_why():
     assert len(inner) <= 10, inner
 
 
-@pytest.mark.parametrize("module", ["contact", "wear.law", "wear.laws", "wear.case"])
+@pytest.mark.parametrize("module", ["contact", "wear.law", "wear.laws", "wear.solid_wear", "wear.case"])
 def test_light_modules_do_not_load_the_fe_plate(module):
     """The impact engine and the wear law work without the FE plate: importing them (in a fresh interpreter)
     loads neither ``fem`` nor scikit-fem, so that ``wear/__init__.py`` re-exporting the chains costs nothing."""
     code = f"import sys, {module}; print(sorted(m for m in ('fem', 'skfem') if m in sys.modules))"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
     assert out.stdout.strip() == "[]", f"import {module} loads {out.stdout.strip()}"
+
+
+WEAR_LAW_ROOM = next(room for room in ROOMS if "wear.law" in room)
+
+
+@pytest.mark.parametrize("module", sorted(m for m in MODULES if m.startswith(WEAR_LAW_ROOM)))
+def test_the_wear_law_never_imports_the_fe(module):
+    """The wear law reads a plate's surface field (contact.fields.SurfaceField: plain arrays), never the plate: no
+    module of its room imports ``fem`` (not even for a type)."""
+    for target, line, _ in _imports(module):
+        assert target.split(".")[0] != "fem", f"{MODULES[module]}:{line}: the wear law imports {target}"
 
 
 def test_the_case_names_the_commands_and_stages_of_its_jobs_without_importing_them():

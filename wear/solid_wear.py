@@ -35,7 +35,7 @@ import numpy as np
 from scipy.interpolate import LinearNDInterpolator
 from scipy.spatial import Delaunay
 
-from fem.solid.indentation import SolidIndentation
+from contact.fields import SurfaceField
 from wear.law import WearLaw
 from wear.pressure import SlidingSpeed
 
@@ -54,16 +54,16 @@ def on_half_surface(points: np.ndarray, values: np.ndarray, px: np.ndarray, py: 
     return out.reshape(*px.shape, *np.shape(values)[1:])
 
 
-def solid_grid(solid: SolidIndentation, points_across: int, reach: float = 2.0) -> tuple[np.ndarray, np.ndarray]:
-    """The wear grid (x, y in m) of the 3-D plate: spacing 2 a_max/``points_across`` (a_max the largest contact
-    radius), x over the contact centres' track ± ``reach`` a_max, y over ± ``reach`` a_max (the pile-up lip of a
+def solid_grid(field: SurfaceField, points_across: int, reach: float = 2.0) -> tuple[np.ndarray, np.ndarray]:
+    """The wear grid (x, y in m) of a plate's surface ``field``: spacing 2 a_max/``points_across`` (a_max the largest
+    contact radius), x over the contact centres' track ± ``reach`` a_max, y over ± ``reach`` a_max (the pile-up lip of a
     plastic dent lies outside the contact), y = 0 a grid line."""
-    a_max = float(np.max(solid.contact_radius))
+    a_max = float(np.max(field.contact_radius))
     if a_max <= 0.0:
         raise ValueError("the 3-D plate never came into contact (contact radius 0 m): nothing to integrate")
     dx = 2.0 * a_max / points_across
     half = int(np.ceil(reach * a_max / dx))
-    lo, hi = float(np.min(solid.centre)), float(np.max(solid.centre))
+    lo, hi = float(np.min(field.centre)), float(np.max(field.centre))
     x = lo + dx * np.arange(-half, int(np.ceil((hi - lo) / dx)) + half + 1)
     return x, dx * np.arange(-half, half + 1)
 
@@ -87,28 +87,29 @@ def _on_grid(points: np.ndarray, values: np.ndarray, x: np.ndarray, y: np.ndarra
     return np.moveaxis(on_half_surface(points, values, gx, gy), (0, 1), (-2, -1))
 
 
-def solid_wear_depth(solid: SolidIndentation, times: np.ndarray, speed: SlidingSpeed, law: WearLaw, x: np.ndarray,
-                     y: np.ndarray) -> np.ndarray:  # fmt: skip
-    """Wear depth (m, (ny, nx), positive into the plate) on the grid ``x``, ``y`` (m) of the 3-D plate's steps
-    placed at impact ``times`` (s), with the local wear ``law``: at each point's own slip rate on the plate where
-    ``speed.model`` is ``"sliding"``, at the impact's rigid-body slip ``speed`` (m/s) where it is ``"kinematic"``
-    (module docstring)."""
-    times = np.asarray(times, float)
-    pressed = np.maximum(solid.pressure, 0.0) ** law.alpha
+def solid_wear_depth(
+    field: SurfaceField, speed: SlidingSpeed, law: WearLaw, x: np.ndarray, y: np.ndarray
+) -> np.ndarray:
+    """Wear depth (m, (ny, nx), positive into the plate) on the grid ``x``, ``y`` (m) of a plate's surface
+    ``field`` (its steps placed at impact times), with the local wear ``law``: at each point's own slip rate on the
+    plate where ``speed.model`` is ``"sliding"``, at the impact's rigid-body slip ``speed`` (m/s) where it is
+    ``"kinematic"`` (module docstring)."""
+    times = np.asarray(field.time, float)
+    pressed = np.maximum(field.pressure, 0.0) ** law.alpha
     if speed.model == "sliding":
         start = min(float(speed.time[0]), float(times[0]))
         step = np.diff(np.r_[start, times])
         before = np.vstack([np.zeros_like(pressed[:1]), pressed[:-1]])
-        rate = np.linalg.norm(solid.slip, axis=2) / np.maximum(step, 1e-300)[:, None]
+        rate = np.linalg.norm(field.slip, axis=2) / np.maximum(step, 1e-300)[:, None]
         worn = law.K * 0.5 * (before + pressed) * step[:, None] * rate**law.beta
     else:
         worn = pressed * step_weights(times, speed, law)[:, None]
-    return np.maximum(_on_grid(solid.surface_vertices[:, :2], worn.sum(axis=0), x, y), 0.0)
+    return np.maximum(_on_grid(field.points, worn.sum(axis=0), x, y), 0.0)
 
 
-def solid_dent_depth(solid: SolidIndentation, x: np.ndarray, y: np.ndarray) -> np.ndarray:
-    """The 3-D plate's residual surface (m, (nx, ny), positive into the plate, pile-up negative) on the grid: its
-    quadratic surface nodes (vertices and mid-edge nodes) interpolated linearly, which halves the distance over
-    which the curved dent bottom is cut short against the vertices alone."""
-    d = solid.solver.disc
-    return _on_grid(d.surface_xy, -solid.final.u[d.surface_dofs(2)], x, y).T
+def solid_dent_depth(field: SurfaceField, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """A plate's residual surface (m, (nx, ny), positive into the plate, pile-up negative) on the grid: its
+    ``field.dent`` at ``field.dent_points`` interpolated linearly (on the 3-D plate its quadratic surface nodes,
+    vertices and mid-edge nodes, which halves the distance over which the curved dent bottom is cut short against
+    the vertices alone)."""
+    return _on_grid(field.dent_points, field.dent, x, y).T

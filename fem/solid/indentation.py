@@ -19,6 +19,7 @@ import meshio
 import numpy as np
 
 from contact.checks import check_array, check_number
+from contact.fields import SurfaceField
 from contact.materials import Material
 from fem.core.increments import WorkCounters
 from fem.core.material import check_small_strain, estimate_contact_radius, plate_model
@@ -85,6 +86,25 @@ class SolidIndentation:
         pressure = np.where(in_contact, surface.vertex_field(normal), 0.0)
         traction = np.where(in_contact[:, None], surface.vertex_field(shear), 0.0)
         return surface_stress(solver.disc, stress, pressure, traction)
+
+    def surface_field(self, times: np.ndarray) -> SurfaceField:
+        """The plate's surface fields with its steps placed at impact ``times`` (s), as the wear law reads them:
+        the reported tractions, stick and slip at the half plate's surface vertices, and the residual surface at
+        its quadratic surface nodes (vertices and mid-edge nodes) after the last step (mirrored about y = 0)."""
+        d = self.solver.disc
+        return SurfaceField(
+            time=np.asarray(times, float),
+            points=self.surface_vertices[:, :2],
+            pressure=self.pressure,
+            shear=self.shear,
+            slip=self.slip,
+            sticking=self.sticking,
+            centre=self.centre,
+            contact_radius=self.contact_radius,
+            dent_points=d.surface_xy,
+            dent=-self.final.u[d.surface_dofs(2)],
+            mirrored=True,
+        )
 
     def to_meshio(self) -> meshio.Mesh:
         """The whole plate after the last step (the half block and its mirror image about y = 0) as linear

@@ -89,11 +89,11 @@ def solid_impact(case: Case, start: ImpactResult, progress: Callable[[int], None
 def _across_profile(coupled: SolidCoupledImpact, samples: int = 81) -> PressureHistory:
     """The 3-D pressure across the track through each step's contact centre as a p(r, t) table (the wear stage's
     pressure history for the summary, ``pressure.npz`` and the figures)."""
-    solid = coupled.solid
-    radii = np.linspace(0.0, 1.5 * float(np.max(solid.contact_radius)), samples)
-    across = on_half_surface(solid.surface_vertices[:, :2], solid.pressure.T, solid.centre[:, None], radii)
-    rows = np.array([across[k, :, k] for k in range(solid.centre.size)])
-    ph = fe_pressure_history(coupled.times, radii, rows, solid.centre)
+    field = coupled.field
+    radii = np.linspace(0.0, 1.5 * float(np.max(field.contact_radius)), samples)
+    across = on_half_surface(field.points, field.pressure.T, field.centre[:, None], radii)
+    rows = np.array([across[k, :, k] for k in range(field.centre.size)])
+    ph = fe_pressure_history(field.time, radii, rows, field.centre)
     return PressureHistory(ph.time, ph.contact_x, ph.extent, ph.pressure, source="fe-3d (across the track)")
 
 
@@ -110,8 +110,9 @@ def solid_wear(case: Case, coupled: SolidCoupledImpact) -> tuple[PressureHistory
         wm, worn = wear_of_impact(w.law, constants, w.wear_law(), impact, ph, speed, density=density,
                                   points_across=w.points_across)  # fmt: skip
         return ph, wm, worn
-    x, y = solid_grid(coupled.solid, w.points_across)
-    depth = solid_wear_depth(coupled.solid, coupled.times, speed, w.wear_law(), x, y)
+    field = coupled.field
+    x, y = solid_grid(field, w.points_across)
+    depth = solid_wear_depth(field, speed, w.wear_law(), x, y)
     wm = wear_map(x, y, depth, density)
     return ph, wm, impact_wear("local", constants, impact, local=wm.volume_m3)
 
@@ -119,7 +120,7 @@ def solid_wear(case: Case, coupled: SolidCoupledImpact) -> tuple[PressureHistory
 def solid_surface(coupled: SolidCoupledImpact, wm: WearMap) -> DeformedSurface:
     """The 3-D plate's residual surface on the wear grid (m) with the wear map ``wm``; its profile across the
     track through the deepest point as ``dent_radius``/``dent_depth``."""
-    dent = solid_dent_depth(coupled.solid, wm.x, wm.y)
+    dent = solid_dent_depth(coupled.field, wm.x, wm.y)
     wear = wm.depth.T
     i, j = np.unravel_index(int(np.argmax(dent)), dent.shape)
     across = wm.y >= wm.y[j]
