@@ -164,8 +164,15 @@ def solid_solver(
     block = generate_block(contact_elements, track=track, depth=box_depth, edge_elements=edge_elements)
     mesh = scale_block(block, a_max)
     force_scale = 4.0 / 3.0 * e_star * math.sqrt(radius) * max_overlap**1.5
-    return SolidSolver(mesh, J2Material(material.E, material.nu, material.yield_strength, material.hardening),
-                       radius, friction, force_scale, max_overlap, rtol=rtol)  # fmt: skip
+    return SolidSolver(
+        mesh,
+        J2Material(material.E, material.nu, material.yield_strength, material.hardening),
+        radius,
+        friction,
+        force_scale,
+        max_overlap,
+        rtol=rtol,
+    )
 
 
 class SolidRecorder:
@@ -291,8 +298,19 @@ def indent_solid(
     slide = _per_step("slides", slides, steps, -radius, radius, "m")
     mu = _per_step("friction", friction, steps, 0.0, MAX_FRICTION, "")
     hardening = check_number("hardening", hardening, low=0.0, high=1e12, units="Pa", what="hardening modulus")
-    solver = solid_solver(radius, plate, float(path.max()), centre, float(mu.max()), ball, hardening,
-                          contact_elements, box_depth, rtol, edge_elements)  # fmt: skip
+    solver = solid_solver(
+        radius,
+        plate,
+        float(path.max()),
+        centre,
+        float(mu.max()),
+        ball,
+        hardening,
+        contact_elements,
+        box_depth,
+        rtol,
+        edge_elements,
+    )
     recorder = SolidRecorder(solver)
     state, previous = solver.initial_state(), None
     for k in range(steps):

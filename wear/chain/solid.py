@@ -29,8 +29,16 @@ from wear.pressure import PressureHistory, fe_pressure_history, sliding_speed
 from wear.solid_wear import on_half_surface, solid_dent_depth, solid_grid, solid_wear_depth
 from wear.surface import DeformedSurface
 
-__all__ = ["MIN_CONTACT_ELEMENTS", "SOLID_TANGENTIAL_MODEL", "check_solid_case", "solid_case", "solid_settings",
-           "solid_impact", "solid_wear", "solid_surface"]  # fmt: skip
+__all__ = [
+    "MIN_CONTACT_ELEMENTS",
+    "SOLID_TANGENTIAL_MODEL",
+    "check_solid_case",
+    "solid_case",
+    "solid_settings",
+    "solid_impact",
+    "solid_wear",
+    "solid_surface",
+]
 
 #: Fewest 3-D elements across the largest contact radius that resolve the contact (the Hertz force is within 2 %
 #: with 4; below 3 the contact edge falls between two element vertices over much of the impact).
@@ -53,22 +61,29 @@ def solid_settings(case: Case) -> SolidCouplingSettings:
     """The 3-D coupling's numbers from the case's ``[fem]`` table (its own ``solid_load_steps`` and
     ``solid_unload_steps``; elements across the contact radius 8/``mesh_scale``)."""
     f = case.fem
-    return SolidCouplingSettings(tolerance=f.tolerance, max_iterations=f.solid_iterations,
-                                 load_steps=f.solid_load_steps, unload_steps=f.solid_unload_steps,
-                                 overshoot=f.overshoot,
-                                 contact_elements=round(CONTACT_ELEMENTS_AT_SCALE_1 / f.mesh_scale))  # fmt: skip
+    return SolidCouplingSettings(
+        tolerance=f.tolerance,
+        max_iterations=f.solid_iterations,
+        load_steps=f.solid_load_steps,
+        unload_steps=f.solid_unload_steps,
+        overshoot=f.overshoot,
+        contact_elements=round(CONTACT_ELEMENTS_AT_SCALE_1 / f.mesh_scale),
+    )
 
 
 def check_solid_case(case: Case) -> None:
     """One-line ``ValueError`` for a case the 3-D plate cannot run: a coupling other than two-way, friction above
     :data:`fem.solid.indentation.MAX_FRICTION`, or a mesh too coarse to resolve the contact."""
     if case.fem.coupling != "two-way":
-        raise ValueError(f"fem.model='3d' needs fem.coupling='two-way' (got {case.fem.coupling!r}): the 3-D plate "
-                         "is coupled to the impact")  # fmt: skip
+        raise ValueError(
+            f"fem.model='3d' needs fem.coupling='two-way' (got {case.fem.coupling!r}): the 3-D plate "
+            "is coupled to the impact"
+        )
     mu = case.impact.friction
     if mu > MAX_FRICTION:
-        raise ValueError(f"impact.friction={mu!r}: the 3-D plate (fem.model='3d') takes a Coulomb coefficient in "
-                         f"[0, {MAX_FRICTION}]")  # fmt: skip
+        raise ValueError(
+            f"impact.friction={mu!r}: the 3-D plate (fem.model='3d') takes a Coulomb coefficient in [0, {MAX_FRICTION}]"
+        )
     elements = solid_settings(case).contact_elements
     if elements < MIN_CONTACT_ELEMENTS:
         raise ValueError(
@@ -82,8 +97,17 @@ def solid_impact(case: Case, start: ImpactResult, progress: Callable[[int], None
     """The case's impact coupled to the 3-D plate from the impact ``start`` (m, s; the axisymmetric coupled one);
     ``progress(cycle)`` is called as each 3-D plate cycle starts."""
     ball, plate = case.ball.material(), case.plate.material()
-    return couple_solid(impact_on_law(case), start, case.ball.radius, plate, case.impact.friction,
-                        None if ball.is_rigid else ball, 0.0, solid_settings(case), progress)  # fmt: skip
+    return couple_solid(
+        impact_on_law(case),
+        start,
+        case.ball.radius,
+        plate,
+        case.impact.friction,
+        None if ball.is_rigid else ball,
+        0.0,
+        solid_settings(case),
+        progress,
+    )
 
 
 def _across_profile(coupled: SolidCoupledImpact, samples: int = 81) -> PressureHistory:
@@ -107,8 +131,9 @@ def solid_wear(case: Case, coupled: SolidCoupledImpact) -> tuple[PressureHistory
     constants = wear_constants(case)
     density = case.plate.material().density
     if w.law != "local":
-        wm, worn = wear_of_impact(w.law, constants, w.wear_law(), impact, ph, speed, density=density,
-                                  points_across=w.points_across)  # fmt: skip
+        wm, worn = wear_of_impact(
+            w.law, constants, w.wear_law(), impact, ph, speed, density=density, points_across=w.points_across
+        )
         return ph, wm, worn
     field = coupled.field
     x, y = solid_grid(field, w.points_across)
@@ -124,5 +149,6 @@ def solid_surface(coupled: SolidCoupledImpact, wm: WearMap) -> DeformedSurface:
     wear = wm.depth.T
     i, j = np.unravel_index(int(np.argmax(dent)), dent.shape)
     across = wm.y >= wm.y[j]
-    return DeformedSurface(wm.x, wm.y, wear, wm.y[across] - wm.y[j], dent[i, across], (float(wm.x[i]), 0.0),
-                           dent_grid=dent)  # fmt: skip
+    return DeformedSurface(
+        wm.x, wm.y, wear, wm.y[across] - wm.y[j], dent[i, across], (float(wm.x[i]), 0.0), dent_grid=dent
+    )

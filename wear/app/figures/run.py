@@ -59,8 +59,14 @@ def pressure_profiles(result, path, stages: int = 6) -> Path:
     force = ph.force()
     i_max = int(np.argmax(force))
     loaded = np.flatnonzero(ph.extent > 0)
-    picks = np.unique(np.concatenate([np.linspace(loaded[0], i_max, stages // 2 + 1).astype(int)[1:],
-                                      np.linspace(i_max, loaded[-1], stages // 2 + 1).astype(int)[1:-1]]))  # fmt: skip
+    picks = np.unique(
+        np.concatenate(
+            [
+                np.linspace(loaded[0], i_max, stages // 2 + 1).astype(int)[1:],
+                np.linspace(i_max, loaded[-1], stages // 2 + 1).astype(int)[1:-1],
+            ]
+        )
+    )
     fig, ax = plt.subplots(figsize=(7, 4.5))
     h = result.impact.history
     # the contact radius of the impact at each pressure sample (the table's extent is the first node beyond it)

@@ -29,15 +29,34 @@ def write_calibration(result: CalibrationResult, out: str | os.PathLike) -> dict
     with output_folder(out, "calibrate") as tmp:
         write_json(tmp / "calibration.json", summary)
         fitted = d.fitted & ~np.isin(np.arange(d.angle.size), result.left_out)
-        header = ["row", "angle_deg", "speed_m_s", *d.keys, f"measured_{d.quantity}", f"predicted_{d.quantity}",
-                  "log_residual", "fitted"]  # fmt: skip
-        rows = ([i + 1, f"{d.angle[i]:.10g}", f"{d.speed[i]:.10g}", *(f"{v[i]:.10g}" for v in d.keys.values()),
-                 "" if np.isnan(d.measured[i]) else f"{d.measured[i]:.10g}", f"{result.predicted[i]:.10g}",
-                 "" if np.isnan(result.log_residual[i]) else f"{result.log_residual[i]:.6g}", int(fitted[i])]
-                for i in range(d.angle.size))  # fmt: skip
+        header = [
+            "row",
+            "angle_deg",
+            "speed_m_s",
+            *d.keys,
+            f"measured_{d.quantity}",
+            f"predicted_{d.quantity}",
+            "log_residual",
+            "fitted",
+        ]
+        rows = (
+            [
+                i + 1,
+                f"{d.angle[i]:.10g}",
+                f"{d.speed[i]:.10g}",
+                *(f"{v[i]:.10g}" for v in d.keys.values()),
+                "" if np.isnan(d.measured[i]) else f"{d.measured[i]:.10g}",
+                f"{result.predicted[i]:.10g}",
+                "" if np.isnan(result.log_residual[i]) else f"{result.log_residual[i]:.6g}",
+                int(fitted[i]),
+            ]
+            for i in range(d.angle.size)
+        )
         write_rows(tmp / "calibration.csv", header, rows)
         plot_calibration(result, tmp / "calibration.png")
-        note = (f"# The case calibrated by impactwear calibrate (law {result.case.wear.law!r} fitted to {d.source}).\n"
-                "# impactwear run, erode and repeat read it as is.\n\n")  # fmt: skip
+        note = (
+            f"# The case calibrated by impactwear calibrate (law {result.case.wear.law!r} fitted to {d.source}).\n"
+            "# impactwear run, erode and repeat read it as is.\n\n"
+        )
         write_text(tmp / "calibrated.toml", note + dump_case(result.case, CASE_TABLES))
     return summary

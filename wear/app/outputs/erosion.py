@@ -29,22 +29,37 @@ from wear.erosion import ErosionRun
 
 __all__ = ["write_erosion", "write_erosion_angles", "surface_grid_mesh", "EROSION_COLUMNS", "TABLE_COLUMNS"]
 
-EROSION_COLUMNS = ["time_s", "impacts", "particle_mass_kg", "mass_loss_kg", "mass_loss_per_area_kg_m2", "erosion_rate",
-                   "interval_erosion_rate", "max_depth_m", "rms_slope"]  # fmt: skip
-TABLE_COLUMNS = ["normal_speed_m_s", "angle_deg", "volume_m3", "cutting_volume_m3", "deformation_volume_m3",
-                 "contact_radius_m"]  # fmt: skip
+EROSION_COLUMNS = [
+    "time_s",
+    "impacts",
+    "particle_mass_kg",
+    "mass_loss_kg",
+    "mass_loss_per_area_kg_m2",
+    "erosion_rate",
+    "interval_erosion_rate",
+    "max_depth_m",
+    "rms_slope",
+]
+TABLE_COLUMNS = [
+    "normal_speed_m_s",
+    "angle_deg",
+    "volume_m3",
+    "cutting_volume_m3",
+    "deformation_volume_m3",
+    "contact_radius_m",
+]
 
 
-def surface_grid_mesh(x: np.ndarray, y: np.ndarray, surface: np.ndarray, wear: np.ndarray | None = None
-                      ) -> meshio.Mesh:  # fmt: skip
+def surface_grid_mesh(x: np.ndarray, y: np.ndarray, surface: np.ndarray, wear: np.ndarray | None = None) -> meshio.Mesh:
     """A height field (m, positive into the plate) as a structured quad grid: z = −depth, point data ``depth`` and
     (if given) ``wear`` (m)."""
     nx, ny = len(x), len(y)
     xx, yy = np.meshgrid(x, y)
     points = np.column_stack([xx.ravel(), yy.ravel(), -np.asarray(surface).ravel()])
     node = np.arange(nx * ny).reshape(ny, nx)
-    quads = np.column_stack([node[:-1, :-1].ravel(), node[:-1, 1:].ravel(), node[1:, 1:].ravel(),
-                             node[1:, :-1].ravel()])  # fmt: skip
+    quads = np.column_stack(
+        [node[:-1, :-1].ravel(), node[:-1, 1:].ravel(), node[1:, 1:].ravel(), node[1:, :-1].ravel()]
+    )
     data = {"depth": np.asarray(surface).ravel()}
     if wear is not None:
         data["wear"] = np.asarray(wear).ravel()
@@ -62,9 +77,22 @@ def _write_files(run: ErosionRun, out: Path, series: bool, notes: Sequence[str] 
     """The files of one erosion in the folder ``out``; with ``series`` also the frames, the .pvd and the figures."""
     r = run.result
     area = r.patch_size**2
-    write_rows(out / "erosion.csv", EROSION_COLUMNS,
-               zip(r.time, r.impacts, r.particle_mass_kg, r.mass_loss_kg, r.mass_loss_kg / area, r.erosion_rate,
-                   r.interval_erosion_rate, r.max_depth_m, r.rms_slope, strict=True))  # fmt: skip
+    write_rows(
+        out / "erosion.csv",
+        EROSION_COLUMNS,
+        zip(
+            r.time,
+            r.impacts,
+            r.particle_mass_kg,
+            r.mass_loss_kg,
+            r.mass_loss_kg / area,
+            r.erosion_rate,
+            r.interval_erosion_rate,
+            r.max_depth_m,
+            r.rms_slope,
+            strict=True,
+        ),
+    )
     write_rows(out / "response_table.csv", TABLE_COLUMNS, r.table.rows())
     write_mesh(out / "surface.vtu", surface_grid_mesh(r.x, r.y, r.surface, r.wear))
     if series:
@@ -77,8 +105,9 @@ def _write_files(run: ErosionRun, out: Path, series: bool, notes: Sequence[str] 
             entries.append((float(t), name))
         write_pvd(out / "erosion.pvd", entries)
         title = f"{r.stream.speed:g} m/s at {r.stream.angle:g} deg"
-        fig.plot_time_series(r.time, r.mass_loss_kg, r.erosion_rate, out / "erosion.png", title,
-                             interval_rate=r.interval_erosion_rate)  # fmt: skip
+        fig.plot_time_series(
+            r.time, r.mass_loss_kg, r.erosion_rate, out / "erosion.png", title, interval_rate=r.interval_erosion_rate
+        )
         fig.plot_surface(r.x, r.y, r.surface, out / "surface.png", r.stream.azimuth, title)
     summary = {**run.summary(), "notes": list(dict.fromkeys(notes))}
     write_json(out / "summary.json", summary)

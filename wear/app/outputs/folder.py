@@ -62,8 +62,9 @@ def read_manifest(folder: str | os.PathLike) -> dict | None:
 def _foreign(folder: Path, manifest: dict | None) -> list[str]:
     """Entries of ``folder`` that impactwear did not write (sorted)."""
     ours = set(manifest["entries"]) if manifest else set()
-    return sorted(p.name for p in folder.iterdir() if p.name != MANIFEST and p.name not in ours
-                  and not is_temporary(p.name))  # fmt: skip
+    return sorted(
+        p.name for p in folder.iterdir() if p.name != MANIFEST and p.name not in ours and not is_temporary(p.name)
+    )
 
 
 def check_writable_folder(path: str | os.PathLike, option: str = "--out") -> Path:
@@ -84,8 +85,9 @@ def check_writable_folder(path: str | os.PathLike, option: str = "--out") -> Pat
         probe = tempfile.mkdtemp(prefix=".impactwear.probe-", dir=base)
         os.rmdir(probe)
     except OSError as exc:
-        raise ValueError(f"{shown} cannot be written ({exc.strerror or exc} in {str(base)!r}): give a folder you "
-                         "can write") from None  # fmt: skip
+        raise ValueError(
+            f"{shown} cannot be written ({exc.strerror or exc} in {str(base)!r}): give a folder you can write"
+        ) from None
     return target
 
 
@@ -100,21 +102,29 @@ def check_output_folder(path: str | os.PathLike, command: str, option: str = "--
         foreign = _foreign(target, manifest)
         if foreign and manifest is None:
             listed = ", ".join(foreign[:3]) + (f" and {len(foreign) - 3} more" if len(foreign) > 3 else "")
-            raise ValueError(f"{shown} holds files impactwear did not write ({listed}): give a new or empty folder, "
-                             "or an earlier output folder of impactwear (its files are replaced, nothing else is "
-                             "touched)")  # fmt: skip
+            raise ValueError(
+                f"{shown} holds files impactwear did not write ({listed}): give a new or empty folder, "
+                "or an earlier output folder of impactwear (its files are replaced, nothing else is "
+                "touched)"
+            )
         if manifest is not None:
             owner = manifest.get("command")
             if owner != command and (owner in RESUMABLE or command in RESUMABLE):
-                raise ValueError(f"{shown} is the output folder of `impactwear {owner}`: give `impactwear "
-                                 f"{command}` a new or empty folder")  # fmt: skip
+                raise ValueError(
+                    f"{shown} is the output folder of `impactwear {owner}`: give `impactwear "
+                    f"{command}` a new or empty folder"
+                )
     return target
 
 
 def _manifest(command: str, entries: list[str], complete: bool) -> dict:
-    return {"command": command, "entries": sorted(set(entries)), "complete": complete,
-            "about": "written by impactwear: the entries it replaces when this folder is an output folder again; "
-                     "every other file here is left alone"}  # fmt: skip
+    return {
+        "command": command,
+        "entries": sorted(set(entries)),
+        "complete": complete,
+        "about": "written by impactwear: the entries it replaces when this folder is an output folder again; "
+        "every other file here is left alone",
+    }
 
 
 def _summaries_last(names: set[str]) -> list[str]:
@@ -134,8 +144,12 @@ def output_folder(path: str | os.PathLike, command: str) -> Iterator[Path]:
     else:
         target.parent.mkdir(parents=True, exist_ok=True)
         remove_stale_temps(target.parent, name=target.name)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{'impactwear' if existing else target.name}.partial-{os.getpid()}-",
-                                dir=target if existing else target.parent))  # fmt: skip
+    tmp = Path(
+        tempfile.mkdtemp(
+            prefix=f".{'impactwear' if existing else target.name}.partial-{os.getpid()}-",
+            dir=target if existing else target.parent,
+        )
+    )
     try:
         yield tmp
         new = {p.name for p in tmp.iterdir()}
@@ -155,8 +169,10 @@ def _replace_entries(tmp: Path, target: Path, command: str, new: set[str]) -> No
     old = set(manifest["entries"]) if manifest else set()
     clash = sorted(new.intersection(_foreign(target, manifest)))
     if clash:  # a file the user put there under the name of a new output: keep the user's
-        raise ValueError(f"out={str(target)!r} holds {clash[0]!r}, which impactwear did not write and would replace: "
-                         "move it, or give a new folder")  # fmt: skip
+        raise ValueError(
+            f"out={str(target)!r} holds {clash[0]!r}, which impactwear did not write and would replace: "
+            "move it, or give a new folder"
+        )
     write_json(target / MANIFEST, _manifest(command, list(old | new), False))
     trash = Path(tempfile.mkdtemp(prefix=f".impactwear.partial-{os.getpid()}-", dir=target))
     try:

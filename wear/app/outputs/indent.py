@@ -26,15 +26,40 @@ def write_indent(run: IndentRun, out: str | os.PathLike, figures: bool = True, n
 def _write_files(run: IndentRun, out: Path, figures: bool, notes: Sequence[str]) -> dict:
     res = run.result
     steps = range(res.overlap.size)
-    write_rows(out / "force_overlap.csv",
-               ["step", "overlap_m", "force_N", "contact_radius_m", "max_pressure_Pa", "mean_pressure_Pa",
-                "max_equivalent_plastic_strain", "regime"],
-               ([k, res.overlap[k], res.force[k], res.contact_radius[k], res.max_pressure[k], res.mean_pressure[k],
-                 res.max_equivalent_plastic_strain[k], res.regime[k]] for k in steps))  # fmt: skip
-    write_rows(out / "pressure.csv", ["r_m"] + [f"step{k}_Pa" for k in steps],
-               ([r, *res.pressure[:, i]] for i, r in enumerate(res.surface_r)))  # fmt: skip
-    write_rows(out / "residual_depth.csv", ["r_m", "residual_depth_m"],
-               zip(res.surface_r, res.residual_depth, strict=True))  # fmt: skip
+    write_rows(
+        out / "force_overlap.csv",
+        [
+            "step",
+            "overlap_m",
+            "force_N",
+            "contact_radius_m",
+            "max_pressure_Pa",
+            "mean_pressure_Pa",
+            "max_equivalent_plastic_strain",
+            "regime",
+        ],
+        (
+            [
+                k,
+                res.overlap[k],
+                res.force[k],
+                res.contact_radius[k],
+                res.max_pressure[k],
+                res.mean_pressure[k],
+                res.max_equivalent_plastic_strain[k],
+                res.regime[k],
+            ]
+            for k in steps
+        ),
+    )
+    write_rows(
+        out / "pressure.csv",
+        ["r_m"] + [f"step{k}_Pa" for k in steps],
+        ([r, *res.pressure[:, i]] for i, r in enumerate(res.surface_r)),
+    )
+    write_rows(
+        out / "residual_depth.csv", ["r_m", "residual_depth_m"], zip(res.surface_r, res.residual_depth, strict=True)
+    )
     write_mesh(out / "plate.vtu", res.to_meshio())
     if figures:
         write_figures(res, out)

@@ -26,8 +26,21 @@ from typing import IO, Any
 import meshio
 import numpy as np
 
-__all__ = ["atomic_write", "is_temporary", "permissions", "remove_stale_temps", "to_jsonable", "versions",
-           "write_csv", "write_json", "write_mesh", "write_npz", "write_pvd", "write_rows", "write_text"]  # fmt: skip
+__all__ = [
+    "atomic_write",
+    "is_temporary",
+    "permissions",
+    "remove_stale_temps",
+    "to_jsonable",
+    "versions",
+    "write_csv",
+    "write_json",
+    "write_mesh",
+    "write_npz",
+    "write_pvd",
+    "write_rows",
+    "write_text",
+]
 
 
 def _umask() -> int:
@@ -45,8 +58,13 @@ def permissions() -> tuple[int, int]:
     return 0o666 & ~_UMASK, 0o777 & ~_UMASK
 
 
-def atomic_write(path: str | os.PathLike, dump: Callable[[IO], Any] | Callable[[str], Any], *, mode: str = "text",
-                 fsync: bool = False) -> Path:  # fmt: skip
+def atomic_write(
+    path: str | os.PathLike,
+    dump: Callable[[IO], Any] | Callable[[str], Any],
+    *,
+    mode: str = "text",
+    fsync: bool = False,
+) -> Path:
     """Write ``path`` through a temporary file in its folder, renamed into place when ``dump`` returns.
 
     ``mode``: "text" (``dump(f)`` gets a UTF-8 text file, newline translation off), "binary" (a binary file) or
@@ -133,8 +151,9 @@ def write_csv(path: str | os.PathLike, columns: Mapping[str, Any]) -> Path:
 
 def write_npz(path: str | os.PathLike, arrays: Mapping[str, Any]) -> Path:
     """Write ``arrays`` to a compressed ``.npz``."""
-    return atomic_write(path, lambda f: np.savez_compressed(f, **{k: np.asarray(v) for k, v in arrays.items()}),
-                        mode="binary")  # fmt: skip
+    return atomic_write(
+        path, lambda f: np.savez_compressed(f, **{k: np.asarray(v) for k, v in arrays.items()}), mode="binary"
+    )
 
 
 def write_mesh(path: str | os.PathLike, mesh: meshio.Mesh) -> Path:
@@ -145,8 +164,11 @@ def write_mesh(path: str | os.PathLike, mesh: meshio.Mesh) -> Path:
 
 def write_pvd(path: str | os.PathLike, entries: list[tuple[float, str]]) -> Path:
     """Write a ParaView collection of (time s, .vtu path relative to ``path``'s folder)."""
-    lines = ['<?xml version="1.0"?>', '<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">',
-             "  <Collection>"]  # fmt: skip
+    lines = [
+        '<?xml version="1.0"?>',
+        '<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">',
+        "  <Collection>",
+    ]
     lines += [f'    <DataSet timestep="{t:.9g}" group="" part="0" file="{f}"/>' for t, f in entries]
     lines += ["  </Collection>", "</VTKFile>", ""]
     return write_text(path, "\n".join(lines))
