@@ -41,7 +41,7 @@ class ConvergenceError(RuntimeError):
 
 
 class NotConverged(Exception):
-    """A Newton attempt failed; ``args[0]`` is its last residual (N)."""
+    """A Newton attempt failed; ``args[0]`` is its last residual (N), or why it failed (a sentence)."""
 
 
 @dataclass
@@ -96,18 +96,17 @@ class Stepper(Protocol, Generic[State, Target]):
 
 def advance(stepper: Stepper, state: State, previous: State | None, target: Target, depth: int = 0) -> State:
     """The converged state at ``target`` from ``state``: ``stepper.attempt``, else the increment cut in halves (at
-    most ``stepper.max_cuts`` deep); :class:`ConvergenceError` naming the target and the last residual (N) if even
-    that fails."""
+    most ``stepper.max_cuts`` deep); :class:`ConvergenceError` naming the target and the last residual (N), or why
+    the attempt failed, if even that fails."""
     try:
         new = stepper.attempt(state, previous, target)
         stepper.stats.increments += 1
         return new
     except NotConverged as exc:
         if depth >= stepper.max_cuts:
-            residual = float(exc.args[0])
-            raise ConvergenceError(
-                f"{stepper.describe(state, target)} (cut {depth} times): residual {residual:.3e} N"
-            ) from None
+            reason = exc.args[0]
+            why = reason if isinstance(reason, str) else f"residual {float(reason):.3e} N"
+            raise ConvergenceError(f"{stepper.describe(state, target)} (cut {depth} times): {why}") from None
     stepper.stats.cuts += 1
     middle = stepper.midpoint(state, target)
     half = advance(stepper, state, previous, middle, depth + 1)

@@ -46,7 +46,10 @@ from fem.solid.forms import discretise_solid
 from fem.solid.friction import SurfaceFriction
 from fem.solid.state import SolidState
 
-__all__ = ["SolidSolver"]
+__all__ = ["SETS_UNSETTLED", "SolidSolver"]
+
+#: Why an attempt failed whose equilibria converged but whose contact and stick sets did not settle.
+SETS_UNSETTLED = "contact/stick sets did not settle"
 
 
 class SolidSolver:
@@ -293,6 +296,7 @@ class SolidSolver:
         seen: set[bytes] = set()
         spent = 0
         released = np.zeros_like(stick)  # nodes that left the stick set in this increment do not return to it
+        first_stick = stick
         # an unloading increment is mostly elastic: the elastic stiffness (one factor for the whole increment)
         # converges in a few iterations where the consistent tangent of the points that flip between reverse yield
         # and elastic unloading takes tens, each with a new factor
@@ -316,11 +320,16 @@ class SolidSolver:
             penetrating = ~contact & (gap < -self.gap_tol)
             new_contact = (contact & ~pulling) | penetrating
             new_stick, new_direction = stick & new_contact, direction
+            # a round is its sets and the vertices released so far: a set revisited with more released (which may
+            # not stick again) is no cycle. At normal incidence the slip zone's vertices barely move: those whose
+            # slip turns back restick, then leave the cone, and the next round (without them) settles; taken for a
+            # cycle, every cut of the increment failed
+            this_round = contact.tobytes() + stick.tobytes() + released.tobytes()
             if mu > 0.0:
                 new_stick, new_direction = self.surface.update_stick(start, target, u, f, stick, direction, new_contact,
                                                               p_vertex, mu, released)  # fmt: skip
                 released |= stick & ~new_stick
-            key = new_contact.tobytes() + new_stick.tobytes()
+            key = new_contact.tobytes() + new_stick.tobytes() + released.tobytes()
             if np.array_equal(new_contact, contact) and np.array_equal(new_stick, stick):
                 if tolerance > self.rtol:
                     tolerance = self.rtol
@@ -328,17 +337,25 @@ class SolidSolver:
                 self.stats.history.append(spent)
                 return SolidState(overlap, centre, slide, u, upd.plastic_strain, upd.alpha, contact, stick, direction,
                                   spent, mu)  # fmt: skip
-            rounds += 1
+            # a round that only takes back resticks of this increment (their stick traction left the cone) refunds
+            # the round that made them: the released vertices may not stick again, so such pairs end. Where the slip
+            # zone's slip turns (normal unloading at normal incidence) they cost two rounds a vertex in every cut,
+            # and the increments failed however often cut
+            taken_back = released & ~first_stick
+            if np.array_equal(new_contact, contact) and np.array_equal(new_stick, stick & ~taken_back):
+                rounds = max(rounds - 1, 0)
+            else:
+                rounds += 1
             if rounds >= self.max_set_updates:
-                raise NotConverged(float("nan"))
+                raise NotConverged(SETS_UNSETTLED)
             tolerance = self.set_rtol
             self.stats.set_updates += 1
-            seen.add(contact.tobytes() + stick.tobytes())
+            seen.add(this_round)
             if key in seen:
                 # a cycle: correct the contact only (penetration first), keep the stick set
                 new_stick = stick & new_contact
-                if (new_contact.tobytes() + new_stick.tobytes()) in seen:
-                    raise NotConverged(float("nan"))
+                if (new_contact.tobytes() + new_stick.tobytes() + released.tobytes()) in seen:
+                    raise NotConverged(SETS_UNSETTLED)
             contact, stick, direction = new_contact, new_stick, new_direction
 
     def _guess(self, state: SolidState, previous: SolidState | None, target, mu: float):
