@@ -62,8 +62,11 @@ def _table(summary: dict, out: str) -> str:
         ("max pressure first / last computed", f"{first['max_pressure'] / 1e9:.4g} / "
                                                 f"{last['max_pressure'] / 1e9:.4g}", "GPa"),
         ("last computed: max pressure FE / half-space",
-         f"{check['fe_max_pressure_Pa'] / 1e9:.4g} / {check['halfspace_max_pressure_Pa'] / 1e9:.4g}", "GPa"),
+         "no half-space check on the 3-D plate" if check is None
+         else f"{check['fe_max_pressure_Pa'] / 1e9:.4g} / {check['halfspace_max_pressure_Pa'] / 1e9:.4g}",
+         "" if check is None else "GPa"),
         ("dent depth after the last impact", f"{after['dent_depth_m'] * 1e6:.4g}", "um"),
+        ("pile-up height after the last impact", f"{after['pile_up_height_m'] * 1e6:.4g}", "um"),
         ("wear: max depth / volume", f"{after['total_wear_max_depth_m'] * 1e6:.4g} um / "
                                      f"{after['total_wear_volume_m3']:.4g}", "m^3"),
         ("wall time", f"{summary['wall_time_s']:.1f}", "s"),
