@@ -3,12 +3,16 @@ each normal frictionless impact against the axisymmetric repeat (the peer model)
 the stateful plate's bookkeeping, and the refused settings. Reduced meshes (3–4 elements across the contact) and few
 increments."""
 
+import csv
 import math
+from dataclasses import replace
 
+import meshio
 import numpy as np
 import pytest
 
 from wear import repeat
+from wear.app.outputs.repeat import RepeatWriter
 from wear.case import JOBS
 
 pytestmark = pytest.mark.filterwarnings("ignore:elastic ball", "ignore:contact radius")
@@ -27,14 +31,29 @@ def _case(angle: float, friction: float, impacts: int, **fem):
     )
 
 
+def _table(result) -> str:
+    """The per-impact numbers (for the log of a run with ``-rA``)."""
+    lines = ["impact dent_m pile_up_m plastic_work_J wear_m3 e_n e_t wall_s"]
+    for r in result.records:
+        lines.append(
+            f"{r.first} {r.dent_depth:.5g} {r.pile_up_height:.5g} {r.plastic_work:.5g} {r.wear_volume:.5g} "
+            f"{r.normal_restitution:.5g} {r.tangential_restitution:.5g} {r.wall_time:.1f}"
+        )
+    return "\n".join(lines)
+
+
 @pytest.fixture(scope="module")
 def normal_3d():
-    return repeat(_case(0.0, 0.0, 3))
+    result = repeat(_case(0.0, 0.0, 3))
+    print(_table(result))
+    return result
 
 
 @pytest.fixture(scope="module")
 def oblique_3d():
-    return repeat(_case(30.0, 0.3, 3, mesh_scale=2.6, solid_load_steps=4))
+    result = repeat(_case(30.0, 0.3, 3))
+    print(_table(result))
+    return result
 
 
 def test_normal_frictionless_dent_of_each_impact_matches_the_axisymmetric_repeat(normal_3d):
@@ -47,6 +66,8 @@ def test_normal_frictionless_dent_of_each_impact_matches_the_axisymmetric_repeat
     axisymmetric = repeat(axisymmetric_case)
     assert [r.kind for r in axisymmetric.records] == ["computed"] * 3
     solid, peer = normal_3d.records, axisymmetric.records
+    print("axisymmetric dent_m", [r.dent_depth for r in peer], "δ₀_m", [r.first_contact_overlap for r in peer])
+    print("3-D dent_m", [r.dent_depth for r in solid], "δ₀_m", [r.first_contact_overlap for r in solid])
     for mine, theirs in zip(solid, peer, strict=True):
         assert mine.dent_depth == pytest.approx(theirs.dent_depth, rel=0.03), (mine.first, mine.dent_depth)
     for mine, theirs in zip(solid[1:], peer[1:], strict=True):
@@ -100,3 +121,24 @@ def test_3d_repeat_refuses_axisymmetric_only_settings(repeat_keys, text):
     case = _case(30.0, 0.3, 2).with_(repeat=repeat_keys)
     with pytest.raises(ValueError, match=text):
         repeat(case)
+
+
+def test_3d_repeat_outputs(oblique_3d, tmp_path):
+    """The one writer of ``impactwear repeat`` on the 3-D result: repeat.csv carries the records (dent, pile-up,
+    plastic work, e_t per impact), summary.json has no half-space check (the 3-D dent is not axisymmetric), the
+    frame of the last impact is the whole 3-D plate, and the figure is written."""
+    out = tmp_path / "out"
+    out.mkdir()
+    result = replace(oblique_3d, case=oblique_3d.case.with_(output={"figures": True}))
+    summary = RepeatWriter(out, save_every=1).finish(result, [])
+    with open(out / "repeat.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 3
+    for row, record in zip(rows, oblique_3d.records, strict=True):
+        assert float(row["dent_depth_m"]) == pytest.approx(record.dent_depth)
+        assert float(row["pile_up_height_m"]) == pytest.approx(record.pile_up_height)
+        assert float(row["plastic_work_per_impact_J"]) == pytest.approx(record.plastic_work)
+    assert summary["halfspace_check"] is None and summary["fem_model"] == "3d"
+    mesh = meshio.read(out / "frames" / "plate_000003.vtu")
+    assert mesh.points.shape[0] == 2 * oblique_3d.plate.solver.disc.mesh.p.shape[1]
+    assert (out / "repeat.png").stat().st_size > 0
