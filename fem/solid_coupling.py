@@ -25,13 +25,23 @@ and limited, like the plate's slip traction, by the plate surface's shear streng
 :mod:`fem.solid.friction`; the law carries it as ``TabulatedLaw.shear_strength``). The 3-D plate's tangential force
 along the path (``solid.tangential_force``) is compared with the impact's
 (:attr:`SolidCoupledImpact.tangential_mismatch`), the measure of what the law misses.
+
+**On a used plate** (:func:`couple_solid_plate`, repeated impacts at one site): the same loop on a
+:class:`fem.solid.plate.SolidPlate` that keeps its state. Every cycle starts from the plate's kept state (the previous
+impacts' dent, pile-up, plastic strain and residual stress) and only the converged impact's final, lifted-off state
+is committed. Overlaps: the plate measures δ from its original plane; on a dented plate the sphere first touches
+the surface at δ₀ = :meth:`fem.solid.plate.SolidPlate.first_contact_overlap`, and the impact engine integrates from
+first contact, so the path is pressed at δ₀ + δ' and the law is the plate's shifted by δ₀ (as the axisymmetric
+coupling, :mod:`fem.coupling`). The slide ξ of the new impact counts from its first contact, with no stick history
+(:meth:`fem.solid.plate.SolidPlate.start_state`); its contact centres are placed at the site's point of first
+contact (``centre_offset`` in the plate's frame).
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 from scipy.integrate import cumulative_trapezoid
@@ -40,10 +50,22 @@ from contact import ImpactResult, Material, TabulatedLaw
 from contact.fields import SurfaceField
 from fem.core.increments import WorkCounters
 from fem.force_law import force_law
-from fem.solid.indentation import MAX_FRICTION, SolidIndentation, SolidRecorder, solid_solver
+from fem.solid.indentation import MAX_FRICTION, SolidIndentation, solid_solver
+from fem.solid.plate import SolidPlate, press_path, solid_plastic_work
+from fem.solid.solver import SolidSolver
+from fem.solid.state import SolidState
 
-__all__ = ["ImpactPath", "SolidCouplingSettings", "SolidCoupledImpact", "couple_solid", "impact_path",
-           "place_steps"]  # fmt: skip
+__all__ = [
+    "ImpactPath",
+    "SolidCouplingSettings",
+    "SolidCoupledImpact",
+    "couple_solid",
+    "couple_solid_plate",
+    "impact_path",
+    "place_steps",
+    "plate_cycle",
+    "solid_cycle",
+]
 
 
 @dataclass(frozen=True)
@@ -128,7 +150,10 @@ class SolidCoupledImpact:
     law it ran on), ``solid`` (the 3-D plate along the path that law came from), ``path`` (that path),
     ``times`` (s: the solid's steps placed in ``impact``, :func:`place_steps`), ``max_overlaps`` (m) and
     ``tangential_restitutions`` of each impact run (the first is the starting impact's), ``change`` (the last
-    change), ``converged``, ``work`` the 3-D solver's work over all cycles."""
+    change), ``converged``, ``work`` the 3-D solver's work over all cycles, ``first_contact`` δ₀ (m: the overlap
+    from the plate's original plane at which the impact's law starts, 0 on a virgin plate; the overlaps of
+    ``solid`` count from that plane, those of ``path`` and ``law`` from first contact), ``plastic_work`` (J, the
+    whole plate's plastic dissipation over the impact's cycle)."""
 
     impact: ImpactResult
     law: TabulatedLaw
@@ -140,6 +165,8 @@ class SolidCoupledImpact:
     change: float
     converged: bool
     work: WorkCounters = field(default_factory=WorkCounters)
+    first_contact: float = 0.0
+    plastic_work: float = 0.0
 
     @property
     def iterations(self) -> int:
@@ -175,31 +202,42 @@ def solid_cycle(
     settings: SolidCouplingSettings,
 ) -> tuple[SolidIndentation, TabulatedLaw]:
     """The 3-D plate along ``path`` (its steps recorded; one probe step ``overshoot`` past δ_max, not recorded) and
-    its force law (overlaps from the plate's original plane, a virgin plate)."""
-    top = float(path.overlap[path.peak])
-    probe_overlap = (1.0 + settings.overshoot) * top
+    its force law, on a virgin plate meshed for this path."""
+    probe_overlap = (1.0 + settings.overshoot) * float(path.overlap[path.peak])
     solver = solid_solver(radius, plate, probe_overlap, path.centre, friction, ball, hardening,
                           settings.contact_elements, settings.box_depth)  # fmt: skip
-    recorder = SolidRecorder(solver)
-    state, previous = solver.initial_state(), None
-    for k in range(path.overlap.size):
-        if k == path.peak + 1:
-            top_state, top_previous = state, previous
-            probe = recorder.measure(solver.advance(
-                top_state, top_previous, (probe_overlap, float(path.centre[path.peak]), float(path.slide[path.peak]))
-            ))  # fmt: skip
-            state, previous = top_state, top_previous
-        target = (float(path.overlap[k]), float(path.centre[k]), float(path.slide[k]))
-        previous, state = state, solver.advance(state, previous, target)
-        recorder.add(state)
-    solid = recorder.result()
+    return plate_cycle(path, solver, solver.initial_state(), settings.overshoot)
+
+
+def plate_cycle(
+    path: ImpactPath,
+    solver: SolidSolver,
+    start: SolidState,
+    overshoot: float,
+    first_contact: float = 0.0,
+    centre_offset: float = 0.0,
+) -> tuple[SolidIndentation, TabulatedLaw]:
+    """The plate of ``solver`` along ``path`` from ``start`` (:func:`fem.solid.plate.press_path`) and its force law.
+    The path's overlaps count from first contact and its centres from the impact's first contact point; the plate's
+    from its original plane and its own origin: δ = ``first_contact`` + δ' (m; the lift-off at the original plane)
+    and c = ``centre_offset`` + c' (m). The law's overlaps are the impact's, from first contact (the plate's shifted
+    by δ₀, as :func:`fem.coupling.force_law` does for the axisymmetric plate)."""
+    top = float(path.overlap[path.peak])
+    probe_overlap = (1.0 + overshoot) * top
+    overlaps = np.r_[first_contact + path.overlap[:-1], 0.0]  # the last step lifts the ball off
+    centres = centre_offset + path.centre
+    probe = (first_contact + probe_overlap, float(centres[path.peak]), float(path.slide[path.peak]))
+    solid, measured = press_path(solver, start, overlaps, centres, path.slide, path.peak, probe)
     upto = path.peak + 1
-    loading = _Branch(np.r_[solid.overlap[:upto], probe_overlap], np.r_[solid.normal_force[:upto], probe["P"]],
-                      np.r_[solid.contact_radius[:upto], probe["a"]])  # fmt: skip
+    loading = _Branch(
+        np.r_[solid.overlap[:upto], probe[0]],
+        np.r_[solid.normal_force[:upto], measured["P"]],
+        np.r_[solid.contact_radius[:upto], measured["a"]],
+    )
     unloading = _Branch(solid.overlap[path.peak :], solid.normal_force[path.peak :],
                         solid.contact_radius[path.peak :])  # fmt: skip
-    law = force_law(loading, unloading, shear_strength=solver.surface.shear_strength)
-    return solid, _with_probe_unloading(law, probe_overlap, probe["P"], probe["a"])
+    law = force_law(loading, unloading, first_contact, shear_strength=solver.surface.shear_strength)
+    return solid, _with_probe_unloading(law, probe_overlap, measured["P"], measured["a"])
 
 
 def _with_probe_unloading(law: TabulatedLaw, overlap: float, force: float, radius: float) -> TabulatedLaw:
@@ -228,14 +266,58 @@ def couple_solid(
     settings: SolidCouplingSettings | None = None,
     progress: Callable[[int], None] | None = None,
 ) -> SolidCoupledImpact:
-    """Couple an impact to the 3-D plate (module docstring): ``impact_on_law(law)`` runs the case's impact (with
-    histories) on a force law, ``first`` is the starting impact (e.g. the axisymmetric coupled one), ``radius`` (m)
-    the ball's, ``plate`` and ``ball`` (None = rigid) the materials, ``friction`` μ (the impact's, ≤
-    :data:`fem.solid.indentation.MAX_FRICTION`), ``hardening`` H (Pa). ``progress(iteration)`` is called as each 3-D
-    cycle starts."""
+    """Couple an impact to a virgin 3-D plate (module docstring; each cycle meshes a new plate for its path):
+    ``impact_on_law(law)`` runs the case's impact (with histories) on a force law, ``first`` is the starting impact
+    (e.g. the axisymmetric coupled one), ``radius`` (m) the ball's, ``plate`` and ``ball`` (None = rigid) the
+    materials, ``friction`` μ (the impact's, ≤ :data:`fem.solid.indentation.MAX_FRICTION`), ``hardening`` H (Pa).
+    ``progress(iteration)`` is called as each 3-D cycle starts."""
     settings = settings or SolidCouplingSettings()
     if not 0.0 <= friction <= MAX_FRICTION:
         raise ValueError(f"friction={friction!r}: the 3-D plate takes a Coulomb coefficient in [0, {MAX_FRICTION}]")
+
+    def cycle(path: ImpactPath) -> tuple[SolidIndentation, TabulatedLaw]:
+        return solid_cycle(path, radius, plate, friction, ball, hardening, settings)
+
+    coupled = _couple(impact_on_law, first, cycle, settings, progress)
+    solid = coupled.solid
+    return replace(coupled, plastic_work=solid_plastic_work(solid.solver, solid.solver.initial_state(), solid.final))
+
+
+def couple_solid_plate(
+    impact_on_law: Callable[[TabulatedLaw], ImpactResult],
+    first: ImpactResult,
+    plate: SolidPlate,
+    settings: SolidCouplingSettings | None = None,
+    centre_offset: float = 0.0,
+    progress: Callable[[int], None] | None = None,
+) -> SolidCoupledImpact:
+    """Couple an impact to the stateful 3-D ``plate`` as it is now (:class:`fem.solid.plate.SolidPlate`: its mesh,
+    friction and materials), the loop of :func:`couple_solid`; every cycle starts from the plate's kept state, and
+    the converged impact's final, lifted-off state is committed to the plate. The impact's first contact is at
+    x = ``centre_offset`` (m) in the plate's frame and at δ₀ = :meth:`~fem.solid.plate.SolidPlate.first_contact_overlap`
+    there (the impact runs on the plate's law shifted by δ₀, :func:`plate_cycle`). ``first``: the starting impact
+    (e.g. the previous impact at this site)."""
+    settings = settings or SolidCouplingSettings()
+    first_contact = plate.first_contact_overlap(centre_offset)
+    start = plate.start_state(first_contact, centre_offset)
+    before = plate.state
+
+    def cycle(path: ImpactPath) -> tuple[SolidIndentation, TabulatedLaw]:
+        return plate_cycle(path, plate.solver, start, settings.overshoot, first_contact, centre_offset)
+
+    coupled = _couple(impact_on_law, first, cycle, settings, progress)
+    plate.commit(coupled.solid)
+    return replace(coupled, first_contact=first_contact, plastic_work=plate.plastic_work(before))
+
+
+def _couple(
+    impact_on_law: Callable[[TabulatedLaw], ImpactResult],
+    first: ImpactResult,
+    cycle: Callable[[ImpactPath], tuple[SolidIndentation, TabulatedLaw]],
+    settings: SolidCouplingSettings,
+    progress: Callable[[int], None] | None,
+) -> SolidCoupledImpact:
+    """The coupling loop (module docstring) on the plate's ``cycle(path) -> (solid, law)``."""
     impact = first
     overlaps, restitutions = [first.max_overlap], [first.tangential_restitution]
     change, converged = math.inf, False
@@ -244,7 +326,7 @@ def couple_solid(
         if progress is not None:
             progress(iteration)
         path = impact_path(impact, settings.load_steps, settings.unload_steps)
-        solid, law = solid_cycle(path, radius, plate, friction, ball, hardening, settings)
+        solid, law = cycle(path)
         work.add(solid.stats)
         impact = impact_on_law(law)
         overlaps.append(impact.max_overlap)

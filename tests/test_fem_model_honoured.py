@@ -1,6 +1,6 @@
 """``fem.model`` is honoured or refused by every command that reads ``[fem]``, never ignored.
 
-``impactwear run`` runs either plate; ``repeat``, ``calibrate`` and ``indent`` run the axisymmetric plate only and
+``impactwear run`` and ``repeat`` run either plate; ``calibrate`` and ``indent`` run the axisymmetric plate only and
 refuse ``fem.model = "3d"`` in one line naming the key, before any work (exit 2, no output folder); ``impact`` and
 ``erode`` do not read ``[fem]`` and refuse ``--set fem.model``. Every summary.json a plate produced names its plate
 model; a 3-D run's ``regime``, ``yield`` and ``coupling`` describe the 3-D plate the impact ran on
@@ -19,14 +19,14 @@ from wear.chain.calibration_data import read_data
 from wear.chain.plates import PLATES
 from wear.chain.repeat import repeat
 
-AXISYMMETRIC_ONLY = ("repeat", "calibrate", "indent")
+AXISYMMETRIC_ONLY = ("calibrate", "indent")
 
 
 def test_every_job_that_reads_fem_says_which_plates_it_runs():
-    """The jobs that read [fem] are exactly run (both plates) and the axisymmetric-only ones."""
+    """The jobs that read [fem] are exactly run and repeat (both plates) and the axisymmetric-only ones."""
     reads_fem = {name for name, job in JOBS.items() if "fem" in job.tables}
-    assert reads_fem == {"run", *AXISYMMETRIC_ONLY}
-    assert JOBS["run"].fem_models == ("axisymmetric", "3d")
+    assert reads_fem == {"run", "repeat", *AXISYMMETRIC_ONLY}
+    assert JOBS["run"].fem_models == JOBS["repeat"].fem_models == ("axisymmetric", "3d")
     for name in AXISYMMETRIC_ONLY:
         assert JOBS[name].fem_models == ("axisymmetric",)
 
@@ -64,16 +64,30 @@ def test_commands_without_a_plate_refuse_fem_model(command, tmp_path, capsys):
 
 
 def test_python_api_and_sweeps_refuse_3d_where_it_would_be_ignored(tmp_path):
-    case = JOBS["repeat"].default_case().with_(fem={"model": "3d"})
-    with pytest.raises(ValueError, match=r"^fem.model='3d': impactwear repeat runs the axisymmetric plate only"):
-        repeat(case)
     data = tmp_path / "data.csv"
     data.write_text("angle_deg,speed_m_s,erosion_kg_per_kg\n30,20,1e-4\n")
     with pytest.raises(ValueError, match=r"^fem.model='3d': impactwear calibrate runs the axisymmetric plate only"):
         calibrate(JOBS["calibrate"].default_case().with_(fem={"model": "3d"}), read_data(str(data)))
-    sweep = {"sweep": {"stage": "repeat"}, "base": {"fem": {"model": "3d"}}, "grid": {"impact.angle": [30.0, 45.0]}}
-    with pytest.raises(ValueError, match="fem.model='3d': impactwear repeat runs the axisymmetric plate only"):
+    sweep = {"sweep": {"stage": "calibrate"}, "base": {"fem": {"model": "3d"}}, "grid": {"impact.angle": [30.0]}}
+    with pytest.raises(ValueError, match="fem.model='3d': impactwear calibrate runs the axisymmetric plate only"):
         parse_sweep(sweep)
+
+
+@pytest.mark.parametrize(
+    ("sets", "named"),
+    [
+        ({}, "repeat.geometry_update=true"),
+        ({"geometry_update": False, "impacts": 1000}, "repeat.impacts=1000"),
+        ({"geometry_update": False, "surface_fraction": 0.2}, "repeat.surface_fraction=0.2"),
+    ],
+)
+def test_the_3d_repeat_refuses_what_it_would_not_do_in_one_line(sets, named):
+    """The 3-D repeat computes every impact on a surface the wear does not move: a moved surface, a cycle jump or
+    more impacts than fit in a few hours are refused before any work, naming the key."""
+    case = JOBS["repeat"].default_case().with_(fem={"model": "3d"}, repeat=sets)
+    with pytest.raises(ValueError, match=r"^" + named.replace(".", r"\.")) as refused:
+        repeat(case)
+    assert len(str(refused.value).splitlines()) == 1
 
 
 def test_indent_and_repeat_summaries_name_the_plate(tmp_path, capsys):

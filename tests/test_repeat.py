@@ -290,7 +290,7 @@ def test_wear_accumulator_grows_with_the_scar():
     """The cumulative 2-D map keeps the volume of a later impact whose map reaches past the first impact's padded
     grid (the scar widens as the seat conforms): before, the wear outside was dropped. Reference: the volumes of the
     maps added (Gaussian bumps, zero at their edges; bilinear transfer between grids of the same spacing)."""
-    from wear.chain.repeat import _Accumulator
+    from wear.chain.wear_accumulator import WearAccumulator
     from wear.integrate import wear_map
 
     h = 1e-5
@@ -301,7 +301,7 @@ def test_wear_accumulator_grows_with_the_scar():
         return wear_map(x, y, depth, 4430.0, 0.01)
 
     small, large = bump(20, 20, 4 * h), bump(80, 80, 16 * h)
-    acc = _Accumulator(small)
+    acc = WearAccumulator(small)
     acc.add(small, 3)
     acc.add(large, 2)
     assert acc.x[0] <= large.x[0] and acc.x[-1] >= large.x[-1] and acc.y[-1] >= large.y[-1]

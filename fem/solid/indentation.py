@@ -176,10 +176,12 @@ def solid_solver(
 
 
 class SolidRecorder:
-    """Collects what :class:`SolidIndentation` reports of each converged step of ``solver``."""
+    """Collects what :class:`SolidIndentation` reports of each converged step of ``solver`` along a path from
+    ``start`` (default: the unloaded plate)."""
 
-    def __init__(self, solver: SolidSolver) -> None:
+    def __init__(self, solver: SolidSolver, start: SolidState | None = None) -> None:
         self.solver = solver
+        self.start = solver.initial_state() if start is None else start
         self.records: dict[str, list] = {
             k: [] for k in ("P", "Q", "a", "c", "pmax", "eps", "it", "p", "tau", "st", "slip")
         }
@@ -189,14 +191,14 @@ class SolidRecorder:
         """One step's numbers: forces on the whole plate (N), contact and stick radii (m), peak pressure (Pa),
         largest equivalent plastic strain, Newton iterations, vertex pressure and shear (Pa, :meth:`tractions`),
         stick mask, and the slip (m) over each vertex in contact since the last recorded step (the first: since
-        the unloaded plate)."""
+        the path's start)."""
         solver, d = self.solver, self.solver.disc
         normal, shear = solver.surface_forces(state)
         surface = solver.surface
         pressure, traction = self.tractions(normal * state.contact, shear)
         in_contact = surface.vertex_mask(state.contact)
         sticking = surface.vertex_mask(state.stick)
-        before = self.states[-1] if self.states else solver.initial_state()
+        before = self.states[-1] if self.states else self.start
         nodes = d.surface_vertex_nodes
         moved = (state.u - before.u).reshape(-1, 3)[nodes, :2]
         slip = np.column_stack([np.full(nodes.size, state.slide - before.slide), np.zeros(nodes.size)]) - moved

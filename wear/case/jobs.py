@@ -190,7 +190,6 @@ JOBS: dict[str, Job] = {
                     f"{_STAGES}:repeat_stage",
                 ),
             ),
-            fem_models=("axisymmetric",),
         ),
         Job(
             "erode",

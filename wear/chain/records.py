@@ -10,6 +10,7 @@ import numpy as np
 import fem
 from contact import ImpactResult
 from fem import CoupledImpact
+from fem.solid.plate import SolidPlate
 from wear.case import Case
 from wear.integrate import WearMap
 
@@ -30,7 +31,13 @@ class ImpactRecord:
     impact's FE peak pressure when its force passes the first impact's max force: the conforming-dent effect at
     equal force, whereas ``max_pressure`` is at equal impact energy, where a re-impact on its stiffer, elastic
     seat reaches a higher force; NaN if the force never gets there), ``elastic_response`` (the impact was solved on
-    the plate's elastic response, :func:`fem.couple_elastic`; for a block: its impacts')."""
+    the plate's elastic response, :func:`fem.couple_elastic`; for a block: its impacts'), ``pile_up_height`` (m,
+    after the row: the largest rise of the surface above the original plane), ``plastic_work`` (J, per impact of
+    the row: the whole plate's plastic dissipation; for blocks as ``plastic_strain_increment``),
+    ``tangential_restitution`` (of the impact; NaN at normal incidence) and ``wall_time`` (s spent on the row). On
+    the 3-D plate (``fem.model = "3d"``, :mod:`wear.chain.solid_repeat`) every row is a computed impact,
+    ``max_pressure`` and ``contact_radius`` are the 3-D plate's largest over the impact, ``surface_depth`` is the
+    largest dent + accumulated 2-D wear and ``wear_peak_to_mean`` is 1 (no azimuthal average)."""
 
     first: int
     last: int
@@ -54,6 +61,10 @@ class ImpactRecord:
     shaken_down: bool
     max_pressure_at_first_force: float = float("nan")
     elastic_response: bool = False
+    pile_up_height: float = 0.0
+    plastic_work: float = 0.0
+    tangential_restitution: float = float("nan")
+    wall_time: float = 0.0
 
 
 #: repeat.csv columns (record field → column name with units).
@@ -80,6 +91,10 @@ CSV_COLUMNS = {
     "shaken_down": "shaken_down",
     "max_pressure_at_first_force": "max_pressure_at_first_max_force_Pa",
     "elastic_response": "elastic_response",
+    "pile_up_height": "pile_up_height_m",
+    "plastic_work": "plastic_work_per_impact_J",
+    "tangential_restitution": "tangential_restitution",
+    "wall_time": "wall_time_s",
 }
 
 
@@ -101,16 +116,18 @@ class ComputedImpact:
 
 @dataclass(frozen=True, eq=False)
 class RepeatResult:
-    """``records`` (:class:`ImpactRecord` per computed impact or block), ``plate`` (the :class:`fem.Plate` after
-    the last impact), ``wear`` (cumulative 2-D :class:`wear.WearMap` on the first impact's grid, padded),
+    """``records`` (:class:`ImpactRecord` per computed impact or block), ``plate`` (the :class:`fem.Plate`, or on the
+    3-D plate the :class:`fem.solid.plate.SolidPlate`, after the last impact), ``wear`` (cumulative 2-D
+    :class:`wear.WearMap` on the first impact's grid, padded),
     ``shakedown_impact`` (first impact with Δᾱ below the tolerance, or None), ``computed`` (number of impacts
     solved), ``wall_time`` (s), ``notes``, ``axis_x`` (m: x of the FE axis, the dent centre, in the wear map's
     frame), ``met_surface``: the surface the last computed impact met — (dent depth, axisymmetric wear depth) on
-    the FE surface nodes (m); :attr:`elastic_computed`. The repetition's settings are ``case.repeat``."""
+    the FE surface nodes (m; empty on the 3-D plate); :attr:`elastic_computed`. The repetition's settings are
+    ``case.repeat``."""
 
     case: Case
     records: list[ImpactRecord]
-    plate: fem.Plate
+    plate: fem.Plate | SolidPlate
     wear: WearMap
     shakedown_impact: int | None
     computed: int
@@ -139,6 +156,7 @@ class RepeatResult:
         computed = [r for r in self.records if r.kind == "computed"]
         return {
             "impacts": self.case.repeat.impacts,
+            "fem_model": self.case.fem.model,
             "computed_impacts": self.computed,
             "elastic_computed_impacts": self.elastic_computed,
             "rows": len(self.records),
@@ -153,7 +171,12 @@ class RepeatResult:
                 "total_wear_max_depth_m": last.total_wear_max_depth,
                 "surface_depth_m": last.surface_depth,
                 "max_equivalent_plastic_strain": last.max_plastic_strain,
-                "fe_wear_depth_over_taper_depth": float(self.plate.wear_depth.max() / self.plate.taper_depth),
+                "pile_up_height_m": last.pile_up_height,
+                "fe_wear_depth_over_taper_depth": (
+                    float(self.plate.wear_depth.max() / self.plate.taper_depth)
+                    if isinstance(self.plate, fem.Plate)
+                    else None
+                ),
             },
             "wall_time_s": self.wall_time,
             "notes": list(self.notes),

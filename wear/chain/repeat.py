@@ -69,9 +69,11 @@ from wear.chain.axisymmetric_run import impact_wear
 from wear.chain.plate import case_plate, coupling_settings, impact_on_law
 from wear.chain.records import ComputedImpact, ImpactRecord, RepeatResult, yield_strain
 from wear.chain.single import estimate_impact
-from wear.integrate import WearMap, wear_map
+from wear.chain.solid_repeat import solid_repeat
+from wear.chain.wear_accumulator import WearAccumulator
+from wear.integrate import WearMap
 
-__all__ = ["ImpactRecord", "RepeatResult", "ComputedImpact", "impact_on_plate", "repeat", "azimuthal_average",
+__all__ = ["REPEATS", "ImpactRecord", "RepeatResult", "ComputedImpact", "axisymmetric_repeat", "impact_on_plate", "repeat", "azimuthal_average",
            "smooth_profile", "AZIMUTHS", "CONTACT_GROWTH"]  # fmt: skip
 
 #: Azimuths of the azimuthal average of the wear map.
@@ -143,50 +145,24 @@ def impact_on_plate(case: Case, fe_plate: fem.Plate, estimate: float, axis_x: fl
     return ComputedImpact(coupled, wm, profile)
 
 
-class _Accumulator:
-    """Cumulative 2-D wear on a grid of the first impact's spacing, at first its grid padded by half its size on each
-    side, extended (zeros) whenever a later impact's map reaches past it — the scar widens as the seat conforms
-    (contact radius 0.18 → 0.43 mm over 10⁴ impacts of the default case), and wear outside the grid would be lost."""
-
-    def __init__(self, first: WearMap):
-        h = first.spacing
-        pad_x = (first.x.size // 2) * h
-        pad_y = (first.y.size // 2) * h
-        self.x = np.arange(first.x[0] - pad_x, first.x[-1] + pad_x + 0.5 * h, h)
-        ny = int(round((first.y[-1] + pad_y) / h))
-        self.y = np.arange(-ny, ny + 1) * h
-        self.depth = np.zeros((self.y.size, self.x.size))
-        self.density = first.density
-
-    def _cover(self, wm: WearMap) -> None:
-        h = self.x[1] - self.x[0]
-        left = max(0, math.ceil((self.x[0] - wm.x[0]) / h - 1e-9))
-        right = max(0, math.ceil((wm.x[-1] - self.x[-1]) / h - 1e-9))
-        half = (self.y.size - 1) // 2
-        ny = max(half, math.ceil(max(abs(wm.y[0]), abs(wm.y[-1])) / h - 1e-9))
-        if left or right or ny > half:
-            self.x = self.x[0] + (np.arange(self.x.size + left + right) - left) * h
-            self.y = np.arange(-ny, ny + 1) * h
-            self.depth = np.pad(self.depth, ((ny - half, ny - half), (left, right)))
-
-    def add(self, wm: WearMap, count: int) -> None:
-        self._cover(wm)
-        f = RegularGridInterpolator((wm.y, wm.x), wm.depth, bounds_error=False, fill_value=0.0)
-        yy, xx = np.meshgrid(self.y, self.x, indexing="ij")
-        self.depth += count * f(np.stack([yy.ravel(), xx.ravel()], axis=1)).reshape(yy.shape)
-
-    def map(self) -> WearMap:
-        return wear_map(self.x, self.y, self.depth.copy(), self.density)
-
-
 def repeat(case: Case, progress: Callable[[int, int], None] | None = None,
            on_computed: Callable[[int, fem.Plate], None] | None = None) -> RepeatResult:  # fmt: skip
     """Run ``case.repeat.impacts`` impacts of ``case`` at one spot (see the module docstring). ``progress(done,
     total)`` after each computed impact or block; ``on_computed(impact_number, fe_plate)`` after each computed
-    impact (e.g. to write the FE mesh)."""
+    impact (e.g. to write the FE mesh). With ``fem.model = "3d"`` the impacts run on the 3-D plate with friction,
+    every one computed (:func:`wear.chain.solid_repeat.solid_repeat`)."""
     if not isinstance(case, Case):
         raise ValueError(f"case={type(case).__name__} is not a wear.Case")
     check_job_case(case, "repeat")
+    return REPEATS[case.fem.model](case, progress, on_computed)
+
+
+def axisymmetric_repeat(
+    case: Case,
+    progress: Callable[[int, int], None] | None = None,
+    on_computed: Callable[[int, fem.Plate], None] | None = None,
+) -> RepeatResult:
+    """The impacts of :func:`repeat` on the axisymmetric plate (the module docstring)."""
     spec = case.repeat
     ball, plate = case.ball.material(), case.plate.material()
     if plate.is_rigid:
@@ -221,6 +197,7 @@ def repeat(case: Case, progress: Callable[[int, int], None] | None = None,
             if spec.geometry_update and change > 0.0:
                 approach = last.impact.max_overlap  # from first contact: a²/R on a flat, less on a seat
                 count = max(1, min(count, int(spec.surface_fraction * approach / change)))
+        t_row = time.perf_counter()
         if kind == "computed":
             alpha_before = fe_plate.state.alpha
             met = (fe_plate.dent_depth.copy(), fe_plate.wear_depth.copy())
@@ -261,7 +238,7 @@ def repeat(case: Case, progress: Callable[[int, int], None] | None = None,
                                  " beyond it the small-strain FE plate and its moved mesh are not valid")  # fmt: skip
                     break
         if acc is None:
-            acc = _Accumulator(last.wear)
+            acc = WearAccumulator(last.wear)
         acc.add(last.wear, count)
         if spec.geometry_update:
             fe_plate.move_surface(count * last.wear_profile)
@@ -295,6 +272,10 @@ def repeat(case: Case, progress: Callable[[int, int], None] | None = None,
                     records[0].max_force if records else imp.max_force
                 ),
                 elastic_response=last.coupled.elastic,
+                pile_up_height=max(float(np.max(-fe_plate.dent_depth)), 0.0),
+                plastic_work=last.coupled.plastic_work if kind == "computed" or not shaken else 0.0,
+                tangential_restitution=imp.tangential_restitution,
+                wall_time=time.perf_counter() - t_row,
             )
         )
         if kind == "computed" and on_computed is not None:
@@ -305,3 +286,7 @@ def repeat(case: Case, progress: Callable[[int, int], None] | None = None,
         notes.append(f"no impact without new plastic strain (tolerance Δᾱ <= {tolerance:.3g})")
     return RepeatResult(case, records, fe_plate, acc.map(), shakedown, computed,
                         time.perf_counter() - t_start, notes, axis_x, met)  # fmt: skip
+
+
+#: The repetition on each plate model of ``fem.model``.
+REPEATS: dict[str, Callable[..., RepeatResult]] = {"axisymmetric": axisymmetric_repeat, "3d": solid_repeat}

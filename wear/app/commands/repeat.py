@@ -3,7 +3,8 @@
 The case is a run case (``impactwear run``'s tables ``[ball]``, ``[plate]``, ``[impact]``, ``[wear]``, ``[fem]``,
 ``[output]``) plus an optional ``[repeat]`` table; with no CASE the default case (``impactwear repeat
 --print-default``); ``--impacts`` overrides ``repeat.impacts``. See :mod:`wear.chain.repeat` for the physics (plate
-state kept, dented and worn surface, shakedown, cycle jump) and :mod:`wear.app.outputs.repeat` for the files.
+state kept, dented and worn surface, shakedown, cycle jump; with ``fem.model = "3d"`` oblique impacts with friction on
+the 3-D plate, every one computed, :mod:`wear.chain.solid_repeat`) and :mod:`wear.app.outputs.repeat` for the files.
 """
 
 from __future__ import annotations
@@ -74,10 +75,13 @@ def _table(summary: dict, out: str) -> str:
         ),
         (
             "last computed: max pressure FE / half-space",
-            f"{check['fe_max_pressure_Pa'] / 1e9:.4g} / {check['halfspace_max_pressure_Pa'] / 1e9:.4g}",
-            "GPa",
+            "no half-space check on the 3-D plate"
+            if check is None
+            else f"{check['fe_max_pressure_Pa'] / 1e9:.4g} / {check['halfspace_max_pressure_Pa'] / 1e9:.4g}",
+            "" if check is None else "GPa",
         ),
         ("dent depth after the last impact", f"{after['dent_depth_m'] * 1e6:.4g}", "um"),
+        ("pile-up height after the last impact", f"{after['pile_up_height_m'] * 1e6:.4g}", "um"),
         (
             "wear: max depth / volume",
             f"{after['total_wear_max_depth_m'] * 1e6:.4g} um / {after['total_wear_volume_m3']:.4g}",

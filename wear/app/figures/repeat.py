@@ -1,8 +1,9 @@
 """Figures of repeated impacts at one site (matplotlib, Agg; SI units on every axis, written atomically).
 
-``repeat.png``: against the impact number (log axis), (a) the dent depth, the FE surface depth (dent + averaged
-wear) and the 2-D map's largest wear depth (µm); (b) the worn volume (m³); (c) the normal restitution; (d) the
-largest contact pressure (GPa) and the plastic-strain increment of each computed impact (shakedown). Computed
+``repeat.png``: against the impact number (log axis), (a) the dent depth, the pile-up height, the FE surface depth
+(dent + wear) and the 2-D map's largest wear depth (µm); (b) the worn volume (m³) and the plastic work of each
+impact (J); (c) the normal and tangential restitution; (d) the largest contact pressure (GPa) and the plastic-strain
+increment of each computed impact (shakedown). Computed
 impacts are markers, cycle-jump blocks the lines between them.
 """
 
@@ -41,14 +42,23 @@ def plot_repeat(columns: dict, path: str | os.PathLike, title: str = "", shakedo
         ax.plot(n[computed], y[computed], "o", ms=3, color=line.get_color())
 
     series(ax_d, "dent_depth_m", 1e6, "dent (plastic, FE)")
-    series(ax_d, "surface_depth_m", 1e6, "dent + azimuthal-mean wear (FE surface)")
+    series(ax_d, "pile_up_height_m", 1e6, "pile-up (FE, above the original plane)")
+    series(ax_d, "surface_depth_m", 1e6, "dent + wear (FE surface)")
     series(ax_d, "total_wear_max_depth_m", 1e6, "wear, max of the 2-D map")
     ax_d.set_ylabel("depth (µm)")
     ax_d.legend(fontsize=8)
     series(ax_v, "total_wear_volume_m3", 1.0, "total worn volume")
     ax_v.set_ylabel("worn volume (m³)")
-    series(ax_e, "normal_restitution", 1.0, "normal restitution")
-    ax_e.set_ylabel("normal restitution e_n")
+    ax_w = ax_v.twinx()
+    work = np.asarray(columns["plastic_work_per_impact_J"], float)
+    ax_w.plot(n[computed], work[computed], "^", ms=3, color="tab:purple", label="plastic work of impact")
+    ax_w.set_ylabel("plastic work per impact (J)", color="tab:purple")
+    ax_w.legend(fontsize=8, loc="lower right")
+    series(ax_e, "normal_restitution", 1.0, "normal e_n")
+    if np.isfinite(np.asarray(columns["tangential_restitution"], float)).any():
+        series(ax_e, "tangential_restitution", 1.0, "tangential e_t")
+    ax_e.set_ylabel("restitution")
+    ax_e.legend(fontsize=8)
     series(ax_p, "max_pressure_Pa", 1e-9, "max contact pressure (FE)")
     ax_p.set_ylabel("max contact pressure (GPa)")
     ax2 = ax_p.twinx()

@@ -2,11 +2,13 @@
 
 - ``repeat.csv``: one row per computed impact or cycle-jump block (columns with units,
   :data:`wear.chain.records.CSV_COLUMNS`); ``summary.json`` (case, results, notes, wall time, and
-  ``halfspace_check``: the last pressure against the half-space solution, :mod:`wear.chain.check`);
+  ``halfspace_check``: the last pressure against the half-space solution, :mod:`wear.chain.check`; null on the 3-D
+  plate, whose dented surface is not axisymmetric);
 - ``repeat.pvd`` + ``frames/plate_NNNNNN.vtu``: the FE mesh after each saved computed impact (time = impact
-  number; point data ``u``, ``wear_depth``, ``surface``; cell data ``equivalent_plastic_strain``, ``von_mises``);
+  number; point data ``u``, ``wear_depth``, ``surface``; cell data ``equivalent_plastic_strain``, ``von_mises``; on
+  the 3-D plate the whole plate, point data ``u`` only, :meth:`fem.solid.plate.SolidPlate.to_meshio`);
 - ``wear_map.npz``: the cumulative 2-D wear map (``x``, ``y``, ``depth``, m); ``repeat.png`` (with
-  ``output.figures``): dent, wear, restitution, pressure and Δᾱ against the impact number.
+  ``output.figures``): dent, pile-up, wear, plastic work, restitution, pressure and Δᾱ against the impact number.
 """
 
 from __future__ import annotations
@@ -14,6 +16,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import fem
+from fem.solid.plate import SolidPlate
 from wear.app.figures.repeat import plot_repeat
 from wear.app.outputs.writer import versions, write_csv, write_json, write_mesh, write_npz, write_pvd
 from wear.case import JOBS
@@ -34,12 +37,12 @@ class RepeatWriter:
         self.computed = 0
         (out / "frames").mkdir()
 
-    def _frame(self, impact: int, plate: fem.Plate) -> None:
+    def _frame(self, impact: int, plate: fem.Plate | SolidPlate) -> None:
         name = f"frames/plate_{impact:06d}.vtu"
         write_mesh(self.out / name, plate.to_meshio())
         self.entries.append((float(impact), name))
 
-    def on_computed(self, impact: int, plate: fem.Plate) -> None:
+    def on_computed(self, impact: int, plate: fem.Plate | SolidPlate) -> None:
         """After each computed impact (``impact``: its number)."""
         self.computed += 1
         if self.save_every and (self.computed == 1 or self.computed % self.save_every == 0):
@@ -63,7 +66,7 @@ class RepeatWriter:
             "versions": versions(),
             **result.summary(),
         }
-        summary["halfspace_check"] = halfspace_check(result)
+        summary["halfspace_check"] = halfspace_check(result) if isinstance(result.plate, fem.Plate) else None
         summary["notes"] = list(dict.fromkeys([*notes, *result.notes]))
         write_json(out / "summary.json", summary)
         if case.output.figures:

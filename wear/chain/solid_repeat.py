@@ -1,0 +1,198 @@
+r"""Repeated oblique impacts with friction at one site on the 3-D plate (``fem.model = "3d"``; SI units).
+
+One :class:`fem.solid.plate.SolidPlate` lives through the sequence: it keeps its plastic strain, residual stress,
+dent and pile-up, and each impact is coupled to it as it is now (:func:`fem.solid_coupling.couple_solid_plate`):
+the sphere first touches the dented surface at δ₀ (overlaps from the original plane), the impact runs on the plate's
+law from first contact, each coupling cycle restarts from the kept state and the converged impact's lifted-off state
+is committed. The slide ξ of each impact starts at 0 at its first contact, with no stick history.
+
+**Where the ball lands.** Every impact is the same ball on the same trajectory: it crosses the original plane where
+the first one touched (x = 0 of the plate's frame) and flies d₀·V_t/V_n further along x before it meets the dent
+(as the axisymmetric repeat's wear map shift, :mod:`wear.chain.repeat`), where d₀ is the first-contact overlap at
+the site; the impact's contact centres are placed from there.
+
+**The mesh** is built once, from the first impact (the axisymmetric coupled impact of the case, the 3-D coupling's
+start, as in :func:`wear.run`), as the single chain's first 3-D cycle meshes it: for its probe overlap over its
+contact centres' track (:func:`fem.solid_coupling.solid_cycle`). The contact of a later impact on the conforming
+dent reaches a little wider, into the box's graded margin; a mesh sized for 1.2 × the probe overlap (3.7 instead of
+4 elements across the contact) met a NaN residual of the 3-D solver's frictional Newton at the second loading step
+of the default case (30°, μ = 0.3), where this one converges.
+
+**Every impact is computed.** No cycle jump, no elastic shortcut after shakedown: neither is measured for the 3-D
+plate, so ``repeat.surface_fraction``, ``max_plastic_impacts``, ``elastic_after_shakedown`` and ``wear_smoothing``
+are refused at other than their defaults (:func:`check_solid_repeat`); shakedown (Δᾱ below
+``repeat.shakedown_tolerance`` × Y/E) is reported, not used.
+
+**Wear does not move the 3-D surface** (``repeat.geometry_update`` must be false): the wear of each impact
+(:func:`wear.chain.solid.solid_wear`, the 3-D pressure and slip fields) is accumulated on a 2-D map beside the plate,
+and ``surface_depth`` reports the dent plus that accumulated wear; the plate's contact sees the dent only (the wear
+is nm per impact against a dent of µm).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+
+import numpy as np
+
+import fem
+from fem.solid.plate import SolidPlate
+from fem.solid_coupling import SolidCoupledImpact, couple_solid_plate, impact_path
+from wear.case import Case, RepeatSpec
+from wear.chain.plate import case_plate, coupling_settings, impact_on_law
+from wear.chain.records import ImpactRecord, RepeatResult, yield_strain
+from wear.chain.single import estimate_impact
+from wear.chain.solid import check_solid_case, solid_case, solid_settings, solid_wear
+from wear.chain.wear_accumulator import WearAccumulator
+from wear.solid_wear import solid_dent_depth
+
+__all__ = ["MAX_SOLID_IMPACTS", "check_solid_repeat", "solid_repeat"]
+
+#: ``repeat`` keys that only steer the cycle jump, the elastic shortcut or the moved surface of the axisymmetric plate.
+_AXISYMMETRIC_ONLY = ("surface_fraction", "max_plastic_impacts", "elastic_after_shakedown", "wear_smoothing")
+
+
+#: Most impacts a 3-D repeat computes: each is a 3-D coupling of 3-10 min on 2 cores on the default mesh
+#: (docs/repeat.md), so 20 impacts are already hours; more are refused up front.
+MAX_SOLID_IMPACTS = 20
+
+
+def check_solid_repeat(case: Case) -> None:
+    """One-line ``ValueError`` for a repeat the 3-D plate cannot run: the 3-D plate's checks
+    (:func:`wear.chain.solid.check_solid_case`), ``repeat.geometry_update`` true, or a cycle-jump key at other than its
+    default (module docstring)."""
+    check_solid_case(case)
+    spec, default = case.repeat, RepeatSpec()
+    if spec.impacts > MAX_SOLID_IMPACTS:
+        raise ValueError(
+            f"repeat.impacts={spec.impacts}: with fem.model='3d' every impact is a 3-D coupling of minutes on 2 cores "
+            f"(docs/repeat.md); at most {MAX_SOLID_IMPACTS} impacts"
+        )
+    if spec.geometry_update:
+        raise ValueError(
+            "repeat.geometry_update=true: with fem.model='3d' the wear does not move the 3-D plate's "
+            "surface (it is accumulated beside it); set repeat.geometry_update=false"
+        )
+    for key in _AXISYMMETRIC_ONLY:
+        value, kept = getattr(spec, key), getattr(default, key)
+        if value != kept:
+            raise ValueError(
+                f"repeat.{key}={value!r}: with fem.model='3d' every impact is computed (no cycle jump, "
+                f"no elastic shortcut, no moved surface); leave it at its default {kept!r}"
+            )
+
+
+def _first_impact(case: Case):
+    """The 3-D coupling's start: the case's impact coupled to a virgin axisymmetric plate (as :func:`wear.run`)."""
+    estimate = estimate_impact(case)
+    axisymmetric = case_plate(case, (1.0 + case.fem.overshoot) * estimate.max_overlap)
+    return fem.couple(axisymmetric, impact_on_law(case), estimate.max_overlap, coupling_settings(case)).impact
+
+
+def _pressure_at_force(coupled: SolidCoupledImpact, force: float) -> float:
+    """The 3-D plate's peak pressure (Pa) when its loading passes ``force`` (N); NaN beyond its largest force."""
+    solid, upto = coupled.solid, coupled.path.peak + 1
+    f = np.maximum.accumulate(solid.normal_force[:upto])
+    if force > f[-1]:
+        return float("nan")
+    return float(np.interp(force, f, solid.max_pressure[:upto]))
+
+
+def solid_repeat(
+    case: Case,
+    progress: Callable[[int, int], None] | None = None,
+    on_computed: Callable[[int, SolidPlate], None] | None = None,
+) -> RepeatResult:
+    """Run ``case.repeat.impacts`` impacts of ``case`` at one site on the 3-D plate (module docstring).
+    ``progress(done, total)`` and ``on_computed(impact_number, plate)`` after each impact."""
+    check_solid_repeat(case)
+    case = solid_case(case)
+    t_start = time.perf_counter()
+    ball, material = case.ball.material(), case.plate.material()
+    settings = solid_settings(case)
+    previous = _first_impact(case)
+    # the mesh of the single chain's first 3-D cycle (module docstring)
+    path = impact_path(previous, settings.load_steps, settings.unload_steps)
+    probe = (1.0 + settings.overshoot) * float(path.overlap[path.peak])
+    track = (float(np.min(path.centre)), float(np.max(path.centre)))
+    plate = SolidPlate(
+        case.ball.radius,
+        material,
+        probe,
+        track,
+        case.impact.friction,
+        None if ball.is_rigid else ball,
+        0.0,
+        settings.contact_elements,
+        settings.box_depth,
+    )
+    angle = math.radians(case.impact.angle)
+    flight = math.tan(angle)  # V_t/V_n of the incoming ball
+    tolerance = case.repeat.shakedown_tolerance * yield_strain(case)
+    on_law = impact_on_law(case)
+    records: list[ImpactRecord] = []
+    acc, shakedown, axis_x = None, None, 0.0
+    for n in range(1, case.repeat.impacts + 1):
+        t0 = time.perf_counter()
+        alpha_before = plate.state.alpha
+        offset = plate.first_contact_overlap(0.0) * flight
+        coupled = couple_solid_plate(on_law, previous, plate, settings, offset)
+        previous = imp = coupled.impact
+        wm = solid_wear(case, coupled)[1]
+        if acc is None:
+            acc = WearAccumulator(wm)
+            axis_x = float(coupled.solid.centre[coupled.path.peak])
+        acc.add(wm, 1)
+        total = acc.map()
+        increment = float(np.max(plate.state.alpha - alpha_before, initial=0.0))
+        shaken = increment <= tolerance
+        if shaken and shakedown is None:
+            shakedown = n
+        dent = solid_dent_depth(coupled.field, total.x, total.y)
+        solid = coupled.solid
+        records.append(
+            ImpactRecord(
+                first=n,
+                last=n,
+                count=1,
+                kind="computed",
+                normal_restitution=imp.normal_restitution,
+                max_force=imp.max_force,
+                max_pressure=float(np.max(solid.max_pressure)),
+                contact_radius=float(np.max(solid.contact_radius)),
+                max_overlap=imp.max_overlap,
+                first_contact_overlap=coupled.first_contact,
+                plastic_strain_increment=increment,
+                wear_volume=wm.volume_m3,
+                wear_max_depth=wm.max_depth_m,
+                max_plastic_strain=float(np.max(plate.state.alpha)),
+                dent_depth=plate.dent_depth,
+                total_wear_volume=total.volume_m3,
+                total_wear_max_depth=total.max_depth_m,
+                surface_depth=float(np.max(dent.T + total.depth)),
+                wear_peak_to_mean=1.0,
+                shaken_down=bool(shaken),
+                max_pressure_at_first_force=_pressure_at_force(
+                    coupled, records[0].max_force if records else imp.max_force
+                ),
+                pile_up_height=plate.pile_up_height,
+                plastic_work=coupled.plastic_work,
+                tangential_restitution=imp.tangential_restitution,
+                wall_time=time.perf_counter() - t0,
+            )
+        )
+        if on_computed is not None:
+            on_computed(n, plate)
+        if progress is not None:
+            progress(n, case.repeat.impacts)
+    notes = [
+        "fem.model='3d': every impact computed on the 3-D plate (no cycle jump); the wear is accumulated beside "
+        "the plate, its surface is not moved"
+    ]
+    if shakedown is None:
+        notes.append(f"no impact without new plastic strain (tolerance Δᾱ <= {tolerance:.3g})")
+    return RepeatResult(
+        case, records, plate, acc.map(), shakedown, case.repeat.impacts, time.perf_counter() - t_start, notes, axis_x
+    )
