@@ -76,9 +76,9 @@ def test_python_api_and_sweeps_refuse_3d_where_it_would_be_ignored(tmp_path):
 @pytest.mark.parametrize(
     ("sets", "named"),
     [
-        ({}, "repeat.geometry_update=true"),
+        ({"impacts": 3}, "repeat.geometry_update=true"),
         ({"geometry_update": False, "impacts": 1000}, "repeat.impacts=1000"),
-        ({"geometry_update": False, "surface_fraction": 0.2}, "repeat.surface_fraction=0.2"),
+        ({"geometry_update": False, "impacts": 3, "surface_fraction": 0.2}, "repeat.surface_fraction=0.2"),
     ],
 )
 def test_the_3d_repeat_refuses_what_it_would_not_do_in_one_line(sets, named):

@@ -73,8 +73,19 @@ from wear.chain.solid_repeat import solid_repeat
 from wear.chain.wear_accumulator import WearAccumulator
 from wear.integrate import WearMap
 
-__all__ = ["REPEATS", "ImpactRecord", "RepeatResult", "ComputedImpact", "axisymmetric_repeat", "impact_on_plate", "repeat", "azimuthal_average",
-           "smooth_profile", "AZIMUTHS", "CONTACT_GROWTH"]  # fmt: skip
+__all__ = [
+    "REPEATS",
+    "AZIMUTHS",
+    "CONTACT_GROWTH",
+    "ComputedImpact",
+    "ImpactRecord",
+    "RepeatResult",
+    "axisymmetric_repeat",
+    "azimuthal_average",
+    "impact_on_plate",
+    "repeat",
+    "smooth_profile",
+]
 
 #: Azimuths of the azimuthal average of the wear map.
 AZIMUTHS = 64
