@@ -204,8 +204,17 @@ def solid_cycle(
     """The 3-D plate along ``path`` (its steps recorded; one probe step ``overshoot`` past δ_max, not recorded) and
     its force law, on a virgin plate meshed for this path."""
     probe_overlap = (1.0 + settings.overshoot) * float(path.overlap[path.peak])
-    solver = solid_solver(radius, plate, probe_overlap, path.centre, friction, ball, hardening,
-                          settings.contact_elements, settings.box_depth)  # fmt: skip
+    solver = solid_solver(
+        radius,
+        plate,
+        probe_overlap,
+        path.centre,
+        friction,
+        ball,
+        hardening,
+        settings.contact_elements,
+        settings.box_depth,
+    )
     return plate_cycle(path, solver, solver.initial_state(), settings.overshoot)
 
 
@@ -234,8 +243,7 @@ def plate_cycle(
         np.r_[solid.normal_force[:upto], measured["P"]],
         np.r_[solid.contact_radius[:upto], measured["a"]],
     )
-    unloading = _Branch(solid.overlap[path.peak :], solid.normal_force[path.peak :],
-                        solid.contact_radius[path.peak :])  # fmt: skip
+    unloading = _Branch(solid.overlap[path.peak :], solid.normal_force[path.peak :], solid.contact_radius[path.peak :])
     law = force_law(loading, unloading, first_contact, shear_strength=solver.surface.shear_strength)
     return solid, _with_probe_unloading(law, probe_overlap, measured["P"], measured["a"])
 
@@ -248,11 +256,15 @@ def _with_probe_unloading(law: TabulatedLaw, overlap: float, force: float, radiu
     top = float(law.unloading_max_overlap[-1])
     grid, f, a = law.unloading_overlap[-1], law.unloading_force[-1], law.unloading_contact_radius[-1]
     return TabulatedLaw(
-        law.loading_overlap, law.loading_force, law.loading_contact_radius,
-        np.r_[law.unloading_max_overlap, overlap], np.vstack([law.unloading_overlap, grid + (overlap - top)]),
+        law.loading_overlap,
+        law.loading_force,
+        law.loading_contact_radius,
+        np.r_[law.unloading_max_overlap, overlap],
+        np.vstack([law.unloading_overlap, grid + (overlap - top)]),
         np.vstack([law.unloading_force, f * (force / f[0])]),
-        np.vstack([law.unloading_contact_radius, a * (radius / max(a[0], 1e-300))]), law.shear_strength,
-    )  # fmt: skip
+        np.vstack([law.unloading_contact_radius, a * (radius / max(a[0], 1e-300))]),
+        law.shear_strength,
+    )
 
 
 def couple_solid(
@@ -336,6 +348,15 @@ def _couple(
         if change < settings.tolerance:
             converged = True
             break
-    return SolidCoupledImpact(impact=impact, law=law, solid=solid, path=path, times=place_steps(impact, path),
-                              max_overlaps=tuple(overlaps), tangential_restitutions=tuple(restitutions),
-                              change=change, converged=converged, work=work)  # fmt: skip
+    return SolidCoupledImpact(
+        impact=impact,
+        law=law,
+        solid=solid,
+        path=path,
+        times=place_steps(impact, path),
+        max_overlaps=tuple(overlaps),
+        tangential_restitutions=tuple(restitutions),
+        change=change,
+        converged=converged,
+        work=work,
+    )

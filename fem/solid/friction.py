@@ -56,9 +56,14 @@ class SurfaceFriction:
     cone once its traction exceeds it by ``cone_tolerance`` (relative)."""
 
     def __init__(
-        self, disc: SolidDiscretisation, vertex_count: int, shear_modulus: float, poisson: float,
-        shear_strength: float = np.inf, cone_tolerance: float = 0.05,
-    ) -> None:  # fmt: skip
+        self,
+        disc: SolidDiscretisation,
+        vertex_count: int,
+        shear_modulus: float,
+        poisson: float,
+        shear_strength: float = np.inf,
+        cone_tolerance: float = 0.05,
+    ) -> None:
         self.disc = d = disc
         self.shear_modulus = shear_modulus
         self.poisson = poisson
@@ -131,9 +136,15 @@ class SurfaceFriction:
         return self.moment_loads(moments[:, None] * direction), normal_moments
 
     def slip_linearisation(
-        self, K: sp.csr_matrix, normal_moments, direction, slip_vertices, mu: float, keep: np.ndarray,
+        self,
+        K: sp.csr_matrix,
+        normal_moments,
+        direction,
+        slip_vertices,
+        mu: float,
+        keep: np.ndarray,
         contact: np.ndarray,
-    ) -> Callable[[np.ndarray], np.ndarray]:  # fmt: skip
+    ) -> Callable[[np.ndarray], np.ndarray]:
         r"""The change of the slip tractions' nodal loads with the displacement, as a function of a displacement
         change v (m) to loads (N) on the free DOFs ``keep``: the slip traction follows the normal hat moments, whose
         nodal forces are the normal rows of K v,
@@ -178,8 +189,9 @@ class SurfaceFriction:
             coo = block.tocoo()
             columns = dofs[coo.col]
             mask = free[columns]
-            blocks.append(sp.csr_matrix((coo.data[mask], (coo.row[mask], columns[mask])),
-                                        shape=(block.shape[0], d.ndofs)))  # fmt: skip
+            blocks.append(
+                sp.csr_matrix((coo.data[mask], (coo.row[mask], columns[mask])), shape=(block.shape[0], d.ndofs))
+            )
             moved = start.u[dofs] + ((slide - start.slide) if component == 0 else 0.0)
             targets.append(block @ moved)
         rows, targets = sp.vstack(blocks).tocsr(), np.concatenate(targets)
@@ -210,8 +222,13 @@ class SurfaceFriction:
         # continuum's ‖τ‖/μp → 1 like 1 − √(c − r)); releasing on that overshoot sets off a cascade to gross slip
         floor = 1e-3 * max(float(cone.max(initial=0.0)), 1e-300)
         leave = sticks & (magnitude > (1.0 + self.cone_tolerance) * cone + floor)
-        nodal_slip = np.stack([target[2] - start.slide - (u[self.ut[:, 0]] - start.u[self.ut[:, 0]]),
-                               -(u[self.ut[:, 1]] - start.u[self.ut[:, 1]])], axis=1)  # fmt: skip
+        nodal_slip = np.stack(
+            [
+                target[2] - start.slide - (u[self.ut[:, 0]] - start.u[self.ut[:, 0]]),
+                -(u[self.ut[:, 1]] - start.u[self.ut[:, 1]]),
+            ],
+            axis=1,
+        )
         # the slip at each vertex as the stick constraint weighs it (zero at a stick vertex): the quadratic field's
         # own vertex values carry the corner/mid-edge alternation of its reactions
         area = self.area

@@ -25,6 +25,10 @@ update a Newton step), and the system is solved by CG (GMRES where slip traction
 preconditioned with the PARDISO factor of an earlier symmetric such matrix (:mod:`fem.core.kept_factor`), to an
 inexact-Newton tolerance, refactorised when the Krylov method is slow: a modified-Newton iteration that keeps one
 factorisation over much of an increment.
+
+One module for one algorithm (~430 lines): the Newton loop, the contact and stick set rounds and the line search
+share the solver's state and its counters (the Coulomb law itself is :mod:`fem.solid.friction`, the increment driver
+:mod:`fem.core.increments`).
 """
 
 from __future__ import annotations
@@ -104,9 +108,16 @@ class SolidSolver:
         """The undeformed, unloaded plate."""
         n = self.disc.surface_nodes.size
         return SolidState(
-            0.0, 0.0, 0.0, np.zeros(self.disc.ndofs), self._zero_plastic, self._zero_alpha,
-            np.zeros(n, bool), np.zeros(n, bool), np.tile([1.0, 0.0], (self.disc.surface_vertex_nodes.size, 1)),
-        )  # fmt: skip
+            0.0,
+            0.0,
+            0.0,
+            np.zeros(self.disc.ndofs),
+            self._zero_plastic,
+            self._zero_alpha,
+            np.zeros(n, bool),
+            np.zeros(n, bool),
+            np.tile([1.0, 0.0], (self.disc.surface_vertex_nodes.size, 1)),
+        )
 
     def obstacle(self, overlap: float, centre: float) -> np.ndarray:
         """Largest u_z (m) of each surface node with the sphere at ``overlap`` and axis x = ``centre`` (m)."""
@@ -126,9 +137,17 @@ class SolidSolver:
 
     # -- one increment
     def _equilibrate(
-        self, start: SolidState, target: tuple[float, float, float], u, contact, stick, direction, mu, elastic: bool,
+        self,
+        start: SolidState,
+        target: tuple[float, float, float],
+        u,
+        contact,
+        stick,
+        direction,
+        mu,
+        elastic: bool,
         rtol: float,
-    ):  # fmt: skip
+    ):
         """Newton at fixed contact and stick sets and slip directions ``direction`` (surface vertices, 2). Returns
         (u, stress update, f_int, iterations). ``elastic``: iterate with the elastic stiffness (initial-stiffness
         method: linear convergence, but robust where the consistent tangent of a perfectly plastic point that
@@ -159,8 +178,11 @@ class SolidSolver:
             du_c = values - u[constrained]
             # the rows are scaled to unit row sums (a weighted mean slip), so their error is a length
             stick_error = 0.0 if rows is None else float(np.max(np.abs(targets - rows @ u), initial=0.0))
-            if (np.max(np.abs(du_c), initial=0.0) <= self.gap_tol and stick_error <= self.gap_tol
-                    and residual <= rtol * scale):  # fmt: skip
+            if (
+                np.max(np.abs(du_c), initial=0.0) <= self.gap_tol
+                and stick_error <= self.gap_tol
+                and residual <= rtol * scale
+            ):
                 return u, upd, f, it
             if it == 0:
                 start_size = max(residual, scale)
@@ -191,8 +213,9 @@ class SolidSolver:
                     du, new_multipliers = self.linear.solve(K_mod, rhs, tolerance, key, coupling), multipliers
                 else:
                     defect = targets - rows @ (u + step)
-                    du, new_multipliers = self._augmented_step(K_mod, rhs, rows, row_ids, defect, multipliers, key,
-                                                               tolerance, coupling)  # fmt: skip
+                    du, new_multipliers = self._augmented_step(
+                        K_mod, rhs, rows, row_ids, defect, multipliers, key, tolerance, coupling
+                    )
             except SingularMatrixError:
                 break
             self.stats.iterations += 1
@@ -307,8 +330,9 @@ class SolidSolver:
             try:
                 u, upd, f, it = self._equilibrate(start, target, u, contact, stick, direction, mu, unloading, tolerance)
             except NotConverged:
-                u, upd, f, it = self._equilibrate(start, target, start.u, contact, stick, direction, mu, not unloading,
-                                                  tolerance)  # fmt: skip
+                u, upd, f, it = self._equilibrate(
+                    start, target, start.u, contact, stick, direction, mu, not unloading, tolerance
+                )
                 self.stats.elastic_retries += 1
             spent += it
             normal = -f[self.uz]
@@ -326,8 +350,9 @@ class SolidSolver:
             # cycle, every cut of the increment failed
             this_round = contact.tobytes() + stick.tobytes() + released.tobytes()
             if mu > 0.0:
-                new_stick, new_direction = self.surface.update_stick(start, target, u, f, stick, direction, new_contact,
-                                                              p_vertex, mu, released)  # fmt: skip
+                new_stick, new_direction = self.surface.update_stick(
+                    start, target, u, f, stick, direction, new_contact, p_vertex, mu, released
+                )
                 released |= stick & ~new_stick
             key = new_contact.tobytes() + new_stick.tobytes() + released.tobytes()
             if np.array_equal(new_contact, contact) and np.array_equal(new_stick, stick):
@@ -335,8 +360,9 @@ class SolidSolver:
                     tolerance = self.rtol
                     continue
                 self.stats.history.append(spent)
-                return SolidState(overlap, centre, slide, u, upd.plastic_strain, upd.alpha, contact, stick, direction,
-                                  spent, mu)  # fmt: skip
+                return SolidState(
+                    overlap, centre, slide, u, upd.plastic_strain, upd.alpha, contact, stick, direction, spent, mu
+                )
             # a round that only takes back resticks of this increment (their stick traction left the cone) refunds
             # the round that made them: the released vertices may not stick again, so such pairs end. Where the slip
             # zone's slip turns (normal unloading at normal incidence) they cost two rounds a vertex in every cut,

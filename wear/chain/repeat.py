@@ -130,8 +130,9 @@ def _axisymmetric_volume(r: np.ndarray, depth: np.ndarray) -> float:
     return float(np.trapezoid(2.0 * math.pi * r * depth, r))
 
 
-def impact_on_plate(case: Case, fe_plate: fem.Plate, estimate: float, axis_x: float = 0.0,
-                    yield_tolerance: float | None = None) -> ComputedImpact | None:  # fmt: skip
+def impact_on_plate(
+    case: Case, fe_plate: fem.Plate, estimate: float, axis_x: float = 0.0, yield_tolerance: float | None = None
+) -> ComputedImpact | None:
     """One impact of ``case`` coupled to the FE plate ``fe_plate`` as it is now (:func:`fem.couple`, which commits
     the unloaded state to the plate), and its wear. ``estimate`` (m): the expected approach (max overlap from first
     contact); ``axis_x`` (m): x of the FE axis (the dent centre) in the wear map's frame. With ``yield_tolerance``
@@ -156,8 +157,11 @@ def impact_on_plate(case: Case, fe_plate: fem.Plate, estimate: float, axis_x: fl
     return ComputedImpact(coupled, wm, profile)
 
 
-def repeat(case: Case, progress: Callable[[int, int], None] | None = None,
-           on_computed: Callable[[int, fem.Plate], None] | None = None) -> RepeatResult:  # fmt: skip
+def repeat(
+    case: Case,
+    progress: Callable[[int, int], None] | None = None,
+    on_computed: Callable[[int, fem.Plate], None] | None = None,
+) -> RepeatResult:
     """Run ``case.repeat.impacts`` impacts of ``case`` at one spot (see the module docstring). ``progress(done,
     total)`` after each computed impact or block; ``on_computed(impact_number, fe_plate)`` after each computed
     impact (e.g. to write the FE mesh). With ``fem.model = "3d"`` the impacts run on the 3-D plate with friction,
@@ -220,8 +224,9 @@ def axisymmetric_repeat(
             d_est = last.impact.max_overlap
             computed += 1
             coupled = last.coupled
-            increment = (coupled.trial_increment if coupled.elastic
-                         else float(np.max(fe_plate.state.alpha - alpha_before)))  # fmt: skip
+            increment = (
+                coupled.trial_increment if coupled.elastic else float(np.max(fe_plate.state.alpha - alpha_before))
+            )
             shaken = increment <= tolerance
             if shaken and shakedown is None:
                 shakedown = done + 1
@@ -244,9 +249,11 @@ def axisymmetric_repeat(
             if count * step_depth > room:
                 count = int(room / step_depth)
                 if count < 1:
-                    notes.append(f"stopped after impact {done}: the worn depth would exceed {wear_limit:.3g} m, half "
-                                 "the depth over which the FE mesh's nodes follow the wear (about the contact radius);"
-                                 " beyond it the small-strain FE plate and its moved mesh are not valid")  # fmt: skip
+                    notes.append(
+                        f"stopped after impact {done}: the worn depth would exceed {wear_limit:.3g} m, half "
+                        "the depth over which the FE mesh's nodes follow the wear (about the contact radius);"
+                        " beyond it the small-strain FE plate and its moved mesh are not valid"
+                    )
                     break
         if acc is None:
             acc = WearAccumulator(last.wear)
@@ -295,8 +302,9 @@ def axisymmetric_repeat(
             progress(done, spec.impacts)
     if shakedown is None:
         notes.append(f"no impact without new plastic strain (tolerance Δᾱ <= {tolerance:.3g})")
-    return RepeatResult(case, records, fe_plate, acc.map(), shakedown, computed,
-                        time.perf_counter() - t_start, notes, axis_x, met)  # fmt: skip
+    return RepeatResult(
+        case, records, fe_plate, acc.map(), shakedown, computed, time.perf_counter() - t_start, notes, axis_x, met
+    )
 
 
 #: The repetition on each plate model of ``fem.model``.

@@ -28,8 +28,13 @@ def shakedown_note(shakedown_impact: int | None, tolerance: float | None = None)
     return "  (no shakedown: every Δᾱ above the tolerance)" if tolerance else ""
 
 
-def plot_repeat(columns: dict, path: str | os.PathLike, title: str = "", shakedown_impact: int | None = None,
-                tolerance: float | None = None) -> Path:  # fmt: skip
+def plot_repeat(
+    columns: dict,
+    path: str | os.PathLike,
+    title: str = "",
+    shakedown_impact: int | None = None,
+    tolerance: float | None = None,
+) -> Path:
     """The four panels above from ``columns`` (``wear.chain.repeat.RepeatResult.columns()``) into ``path``."""
     n = np.asarray(columns["impact_last"], float)
     computed = np.asarray(columns["computed"], float) > 0

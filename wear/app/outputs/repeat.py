@@ -70,7 +70,11 @@ class RepeatWriter:
         summary["notes"] = list(dict.fromkeys([*notes, *result.notes]))
         write_json(out / "summary.json", summary)
         if case.output.figures:
-            plot_repeat(columns, out / "repeat.png", title=f"{case.repeat.impacts} impacts at one site",
-                        shakedown_impact=result.shakedown_impact,
-                        tolerance=summary["shakedown_tolerance_strain"])  # fmt: skip
+            plot_repeat(
+                columns,
+                out / "repeat.png",
+                title=f"{case.repeat.impacts} impacts at one site",
+                shakedown_impact=result.shakedown_impact,
+                tolerance=summary["shakedown_tolerance_strain"],
+            )
         return summary
