@@ -234,7 +234,7 @@ class FemSpec(Table):
     model: str = key(
         str,
         "axisymmetric",
-        "FE plate: axisymmetric (r, z), or 3d (impactwear run only: half block, "
+        "FE plate: axisymmetric (r, z), or 3d (impactwear run and repeat: half block, "
         "Coulomb friction; its impact runs on the plate's tangential law, mindlin_deresiewicz)",
         choices=FEM_MODELS,
     )
