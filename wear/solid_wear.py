@@ -45,7 +45,7 @@ __all__ = ["on_half_surface", "solid_grid", "step_weights", "solid_wear_depth", 
 def on_half_surface(points: np.ndarray, values: np.ndarray, px: np.ndarray, py: np.ndarray) -> np.ndarray:
     """The whole plate's field at (``px``, ``py``) (m, any shape) from its ``values`` (n, ...) at the half plate's
     surface ``points`` (m, (n, 2), y ≥ 0): linear over a triangulation of the half plate's points, evaluated at
-    (x, |y|), so that the field is symmetric about the plane of incidence y = 0 by construction (a triangulation
+    :math:`(x, |y|)`, so that the field is symmetric about the plane of incidence y = 0 by construction (a triangulation
     of the points and their mirror images is not: a structured mesh's cocircular points leave Delaunay a choice
     on each side, and the two halves' choices differ); 0 outside the surface. Shape ``px.shape + values.shape[1:]``."""
     px, py = np.broadcast_arrays(np.asarray(px, float), np.asarray(py, float))
