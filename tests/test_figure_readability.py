@@ -240,10 +240,13 @@ def test_repeat_axis_counts_whole_impacts_and_says_no_shakedown(captured, tmp_pa
         "impact_last": n,
         "computed": np.ones(5),
         "dent_depth_m": 1e-6 * np.sqrt(n),
+        "pile_up_height_m": 2e-7 * np.sqrt(n),
         "surface_depth_m": 1.1e-6 * np.sqrt(n),
         "total_wear_max_depth_m": 1e-7 * n,
         "total_wear_volume_m3": 3e-15 * n,
         "normal_restitution": 0.8 + 0.04 * n,
+        "tangential_restitution": np.full(5, np.nan),
+        "plastic_work_per_impact_J": 1e-4 / n,
         "max_pressure_Pa": 2e9 + 1e7 * n,
         "plastic_strain_increment": 1e-2 / n,
     }
