@@ -35,7 +35,7 @@ from wear.integrate import WearMap
 from wear.pressure import PressureHistory
 from wear.surface import DeformedSurface
 
-__all__ = ["PLATES", "PlateModel", "PlateRun", "couple_plate", "prepare_case"]
+__all__ = ["PLATES", "PlateModel", "PlateRun", "couple_plate", "prepare_case", "untimed"]
 
 #: A stage runner: ``timed(stage, function, *args)`` runs ``function(*args)`` and records its wall time (s).
 Timed = Callable[..., object]
@@ -155,12 +155,14 @@ def prepare_case(case: Case) -> Case:
     return PLATES[case.fem.model].prepare(case)
 
 
+def untimed(stage: str, function: Callable, *args):
+    """A stage runner that only runs the stage: ``function(*args)``."""
+    del stage
+    return function(*args)
+
+
 def couple_plate(case: Case, estimate: ImpactResult, timed: Timed | None = None) -> PlateRun:
     """The case's impact coupled to the plate of ``fem.model`` (:data:`PLATES`), starting from ``estimate`` (the
     impact on the case's own normal law); ``timed(stage, function, *args)`` runs each stage (default: untimed)."""
-
-    def untimed(stage, function, *args):
-        del stage
-        return function(*args)
 
     return PLATES[case.fem.model].couple(case, estimate, timed or untimed)

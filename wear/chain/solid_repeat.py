@@ -37,11 +37,11 @@ from collections.abc import Callable
 
 import numpy as np
 
-import fem
 from fem.solid.plate import SolidPlate
 from fem.solid_coupling import SolidCoupledImpact, couple_solid_plate, impact_path
 from wear.case import Case, RepeatSpec
-from wear.chain.plate import case_plate, coupling_settings, impact_on_law
+from wear.chain.plate import impact_on_law
+from wear.chain.plates import PLATES, untimed
 from wear.chain.records import ImpactRecord, RepeatResult, yield_strain
 from wear.chain.single import estimate_impact
 from wear.chain.solid import check_solid_case, solid_case, solid_settings, solid_wear
@@ -86,9 +86,7 @@ def check_solid_repeat(case: Case) -> None:
 
 def _first_impact(case: Case):
     """The 3-D coupling's start: the case's impact coupled to a virgin axisymmetric plate (as :func:`wear.run`)."""
-    estimate = estimate_impact(case)
-    axisymmetric = case_plate(case, (1.0 + case.fem.overshoot) * estimate.max_overlap)
-    return fem.couple(axisymmetric, impact_on_law(case), estimate.max_overlap, coupling_settings(case)).impact
+    return PLATES["axisymmetric"].couple(case, estimate_impact(case), untimed).impact
 
 
 def _pressure_at_force(coupled: SolidCoupledImpact, force: float) -> float:
