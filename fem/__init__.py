@@ -3,8 +3,9 @@
 Entry points: :func:`indent` (overlap path → :class:`IndentationResult`), :func:`indent_impact`
 (along an impact's overlap history), :class:`Plate` (a plate that keeps its state between indentations),
 :func:`elastic_reload` (its elastic response, condensed onto the surface), :func:`couple` (an impact on the plate's
-own force law, :mod:`fem.coupling`; the force law :mod:`fem.force_law`, the plate's cycle :mod:`fem.plate_cycle`,
-its pressure along the impact :mod:`fem.pressure_table`), :func:`plate_mesh` and :mod:`fem.axisymmetric.mesh` (meshes).
+own force law, :mod:`fem.axisymmetric_coupling`; the force law :mod:`fem.force_law`, the plate's cycle
+:mod:`fem.plate_cycle`, its pressure along the impact :mod:`fem.pressure_table`), :func:`plate_mesh` and
+:mod:`fem.axisymmetric.mesh` (meshes). Both plates' couplings are the one fixed point of :mod:`fem.coupling`.
 
 The 3-D plate (half block about the plane of incidence, quadratic tetrahedra, Coulomb friction): :func:`indent_solid`
 (:mod:`fem.solid.indentation`, :mod:`fem.solid.solver`, :mod:`fem.solid.forms`, :mod:`fem.solid.mesh`, sparse solves in
@@ -17,9 +18,9 @@ from fem.axisymmetric.mesh import generate_mesh, load_mesh
 from fem.axisymmetric.plate import Plate, surface_profile
 from fem.axisymmetric.reload import ElasticReload, elastic_reload
 from fem.axisymmetric.result import REGIMES, FirstYieldPoint, IndentationResult, worst_regime
+from fem.axisymmetric_coupling import CoupledImpact, CouplingSettings, couple, couple_elastic
 from fem.core.increments import ConvergenceError
 from fem.core.material import estimate_contact_radius
-from fem.coupling import CoupledImpact, CouplingSettings, couple, couple_elastic
 from fem.plate_cycle import PlateCycle
 from fem.pressure_table import contact_pressure
 from fem.solid.indentation import SolidIndentation, indent_solid

@@ -1,293 +1,98 @@
-r"""The impact ⇄ plate coupling: an impact on the plate's own force law, for a virgin or a used plate (SI units).
+r"""The impact ⇄ plate fixed point, for any plate (SI units).
 
-The impact runs on the FE plate's normal law (contact's ``"tabulated"`` model: F(δ) and the contact radius a(δ), so
-the tangential stiffness is k_t = 8G*a with the FE radius). The loading branch of an elastic–plastic indentation is
-path independent, so the plate is loaded **once**, past the expected maximum overlap:
+An impact and the plate it hits answer each other: the plate's force law depends on the path the impact drives it
+along, and the impact on the force law it runs on. The coupling iterates the two from a starting impact:
 
-1. load the plate from its current state to (1 + ``overshoot``) × the estimated approach (further if the impact
-   goes deeper than the table);
-2. run the impact on that loading branch (the rebound uses a provisional elastic unloading curve of slope
-   dF/dδ = 2E*a, which cannot change δ_max: the maximum is reached on the loading branch);
-3. unload the plate from just above the impact's δ_max (restarting from the kept loading state below it:
-   :meth:`fem.Plate.unload`, which commits the unloaded state) and run the impact again on the loading + unloading
-   law;
-4. repeat 3 while δ_max changes by more than ``tolerance`` (relative) between impact runs.
+1. the plate runs its cycle along the last impact (:meth:`CyclingPlate.cycle`: its path from the plate's kept
+   state, and the force law that cycle gives: overlaps from first contact, contact's ``"tabulated"`` model);
+2. the impact runs again on that law;
+3. repeat while the two last impacts differ (:meth:`CyclingPlate.change`) by ``tolerance`` or more, at most
+   ``max_cycles`` plate cycles.
 
-Because δ_max depends only on the loading branch, step 3 normally converges at once (the impact loads on the same
-table; only the unloading changes): about one FE cycle in all. Overlaps: the plate measures δ from its original
-plane z = 0; on a dented or worn plate the sphere first touches the surface at δ₀ =
-:meth:`fem.Plate.first_contact_overlap`, and the impact engine integrates from first contact, so its law is the FE
-law shifted by δ₀ (δ' = δ − δ₀). :func:`couple_elastic` solves the same impact on the plate's elastic response
-(:func:`fem.elastic_reload`, the plate's state unchanged) while that response yields nowhere.
-
-The force law is :func:`fem.force_law.force_law`, the plate's cycle :class:`fem.plate_cycle.PlateCycle`, and the FE
-pressure p(r, t) along the impact :func:`fem.pressure_table.pressure_table`.
+What a cycle is and what a change measures is the plate's own: the axisymmetric frictionless plate's loading branch
+is path independent, so its cycle is the unloading from the impact's δ_max and only δ_max counts
+(:mod:`fem.axisymmetric_coupling`); the 3-D plate with friction runs the whole path (overlap, moving centre, slide),
+so δ_max and the tangential restitution e_t count (:mod:`fem.solid_coupling`). Each gives :func:`fixed_point` its
+starting impact and wraps the :class:`FixedPoint` in its coupled-impact type.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, replace
-from typing import Protocol
-
-import numpy as np
+from dataclasses import dataclass
+from typing import Generic, Protocol, TypeVar
 
 from contact import ImpactResult, TabulatedLaw
-from contact.impact import ForceLawRangeError
-from fem.axisymmetric.reload import elastic_reload
-from fem.axisymmetric.result import IndentationResult
-from fem.axisymmetric.solver import PlateState
-from fem.core.increments import ConvergenceError
-from fem.force_law import force_law
-from fem.plate_cycle import PlateCycle
-from fem.pressure_table import contact_pressure, pressure_table
 
-__all__ = [
-    "UNLOAD_MARGIN",
-    "CouplingSettings",
-    "CoupledImpact",
-    "couple",
-    "couple_elastic",
-    "loading_path",
-]
-
-#: Relative margin above the impact's δ_max at which the plate starts unloading: the impact's own maximum (on the
-#: same loading table) then lies below the tabulated δ*, and the engine scales the curve down by that 1e-3, well
-#: inside the FE accuracy.
-UNLOAD_MARGIN = 1e-3
-#: Loadings tried when the impact goes past the table's end before giving up.
-LOADING_TRIES = 4
+__all__ = ["Cycle", "CyclingPlate", "FixedPoint", "ImpactOnLaw", "fixed_point"]
 
 #: An impact run on a force law (overlaps from first contact): the case's impact with ``normal_model="tabulated"``.
 ImpactOnLaw = Callable[[TabulatedLaw], ImpactResult]
 
-
-class CoupledPlate(Protocol):
-    """What the coupling needs of a plate (:class:`fem.Plate` is one)."""
-
-    effective_modulus: float
-    state: PlateState
-
-    def first_contact_overlap(self) -> float: ...
-
-    def plastic_work(self, since: PlateState) -> float: ...
-
-    def first_yield_overlap(self) -> float | None: ...
-
-    def load(self, overlaps: np.ndarray) -> IndentationResult: ...
-
-    def unload(self, loading: IndentationResult, max_overlap: float, steps: int = 8) -> IndentationResult: ...
+#: What a plate's cycle along an impact records (its steps, states, meshes): the plate's own type.
+Cycle = TypeVar("Cycle")
 
 
-@dataclass(frozen=True)
-class CouplingSettings:
-    """The coupling's numbers: ``tolerance`` on the relative change of δ_max between impact runs, ``max_iterations``
-    (impact runs), the FE increments ``load_steps`` and ``unload_steps``, the ``overshoot`` of the single loading
-    past the estimated approach (relative)."""
+class CyclingPlate(Protocol[Cycle]):
+    """What the coupling asks of a plate."""
 
-    tolerance: float
-    max_iterations: int
-    load_steps: int
-    unload_steps: int
-    overshoot: float
+    def cycle(self, impact: ImpactResult) -> tuple[Cycle, TabulatedLaw]:
+        """The plate's cycle along ``impact`` (from the plate's kept state, which it does not change) and the force
+        law (overlaps from first contact) that cycle gives."""
+        ...
 
-
-def loading_path(max_overlap: float, steps: int, first_yield_overlap: float | None = None) -> np.ndarray:
-    """Overlaps (m) from 0 (excluded) to ``max_overlap``, denser near the start where F(δ) curves most; with
-    ``first_yield_overlap`` (m) the path starts with an elastic step at half of it (the plate locates first yield
-    between an elastic and a plastic step)."""
-    s = np.linspace(0.0, 1.0, steps + 1)[1:]
-    path = max_overlap * s**1.5
-    if first_yield_overlap is not None and 0.5 * first_yield_overlap < path[0]:
-        path = np.r_[0.5 * first_yield_overlap, path]
-    return path
+    def change(self, before: ImpactResult, after: ImpactResult) -> float:
+        """How much two successive impacts differ in what the plate's cycle depends on (dimensionless)."""
+        ...
 
 
 @dataclass(frozen=True, eq=False)
-class CoupledImpact:
-    """An impact coupled to the plate: ``impact`` (the last :class:`contact.ImpactResult`), ``law`` (the force law
-    it ran on, overlaps from first contact), ``cycle`` (:class:`PlateCycle`), ``first_contact`` δ₀ (m, from the
-    original plane), ``max_overlaps`` (m, δ_max of each impact run, from first contact), ``change`` (final relative
-    change of δ_max), ``converged``, ``unload_overlap`` δ* (m, from first contact: where the unloading starts, a hair
-    above the impact's δ_max), ``elastic`` (solved on the plate's elastic response, the plate's state
-    unchanged) and ``trial_increment`` (the largest Δᾱ a return mapping of that elastic response gives; 0 for a
-    plastic solve), ``plastic_work`` (J, the plate's plastic dissipation over the cycle: 0 on the elastic
-    response), ``pressure_table`` ((time s, surface_r m, pressure Pa) of :func:`pressure_table`)."""
+class FixedPoint(Generic[Cycle]):
+    """The coupling's end: ``impact`` (the last impact run), ``law`` (the force law it ran on), ``cycle`` (the
+    plate's cycle that law came from, run along ``impacts[-2]``), ``impacts`` (every impact run, the starting one
+    first), ``change`` (the last :meth:`CyclingPlate.change`, inf before any cycle) and ``converged`` (it fell below
+    the tolerance)."""
 
     impact: ImpactResult
     law: TabulatedLaw
-    cycle: PlateCycle
-    first_contact: float
-    max_overlaps: tuple[float, ...]
+    cycle: Cycle
+    impacts: tuple[ImpactResult, ...]
     change: float
     converged: bool
-    pressure_table: tuple[np.ndarray, np.ndarray, np.ndarray]
-    unload_overlap: float
-    elastic: bool = False
-    trial_increment: float = 0.0
-    plastic_work: float = 0.0
 
     @property
-    def iterations(self) -> int:
-        """Impact runs on the plate's laws."""
-        return len(self.max_overlaps)
+    def max_overlaps(self) -> tuple[float, ...]:
+        """δ_max (m, from first contact) of each impact run, the starting one first."""
+        return tuple(impact.max_overlap for impact in self.impacts)
 
     @property
-    def loading(self) -> IndentationResult:
-        """The plate's loading (overlaps from the original plane)."""
-        return self.cycle.loading
-
-    @property
-    def unloading(self) -> IndentationResult:
-        """The plate's unloading from δ* (overlaps from the original plane)."""
-        return self.cycle.unloading
-
-    @property
-    def contact_radius(self) -> float:
-        """The plate's contact radius (m) at δ*."""
-        loading = self.cycle.loading
-        return float(np.interp(self.first_contact + self.unload_overlap, loading.overlap, loading.contact_radius))
-
-    @property
-    def max_pressure(self) -> float:
-        """The largest pressure (Pa) of the cycle inside the contact."""
-        c = self.cycle
-        return float(contact_pressure(c.pressure, c.surface_r, c.contact_radius).max())
-
-    def peak_pressure_at(self, force: float) -> float:
-        """The plate's peak pressure (Pa) when the loading passes ``force`` (N), interpolated between the loading
-        steps; NaN beyond its largest force."""
-        loading = self.cycle.loading
-        f = np.asarray(loading.force, float)
-        if f.size == 0 or force > f.max():
-            return float("nan")
-        p = contact_pressure(loading.pressure, loading.surface_r, loading.contact_radius).max(axis=1)
-        return float(np.interp(force, np.maximum.accumulate(f), p))
+    def tangential_restitutions(self) -> tuple[float, ...]:
+        """e_t of each impact run, the starting one first."""
+        return tuple(impact.tangential_restitution for impact in self.impacts)
 
 
-def _loading_past_the_impact(
-    load: Callable[[float], IndentationResult],
+def fixed_point(
+    plate: CyclingPlate[Cycle],
     impact_on: ImpactOnLaw,
-    first_contact: float,
-    estimate: float,
-    settings: CouplingSettings,
-    effective_modulus: float,
-):
-    """(loading, law, impact): ``load(target)`` (a loading from first contact to first contact + target, m) run
-    (1 + overshoot) past ``estimate`` (m), further until the impact on its law stops short of the table's end;
-    None after :data:`LOADING_TRIES` loadings."""
-    target = (1.0 + settings.overshoot) * estimate
-    for _ in range(LOADING_TRIES):
-        loading = load(target)
-        law = force_law(loading, None, first_contact, effective_modulus)
-        try:
-            impact = impact_on(law)
-        except ForceLawRangeError:
-            # the engine stops where the overlap leaves the table: the surface (hence the depth an impact reaches)
-            # can have changed by more than the overshoot allows for
-            target *= 1.5
-            continue
-        if impact.max_overlap * (1.0 + 2.0 * UNLOAD_MARGIN) < float(law.loading_overlap[-1]):
-            return loading, law, impact
-        target = 1.3 * impact.max_overlap
-    return None
-
-
-def couple(plate: CoupledPlate, impact_on: ImpactOnLaw, estimate: float, settings: CouplingSettings) -> CoupledImpact:
-    """The impact ``impact_on`` coupled to ``plate`` as it is now (see the module docstring); commits the unloaded
-    state to the plate. ``estimate`` (m): the expected approach (max overlap from first contact)."""
-    if settings.max_iterations < 2:
-        raise ValueError(
-            f"max_iterations={settings.max_iterations} is out of range: the coupling needs >= 2 "
-            "impact runs (the first finds δ_max on the loading branch, the next runs on the "
-            "unloading)"
-        )
-    first_contact = plate.first_contact_overlap()
-    first_yield = plate.first_yield_overlap()
-    before = plate.state
-
-    def load(target: float) -> IndentationResult:
-        return plate.load(first_contact + loading_path(target, settings.load_steps, first_yield))
-
-    solved = _loading_past_the_impact(load, impact_on, first_contact, estimate, settings, plate.effective_modulus)
-    if solved is None:
-        raise ValueError(
-            f"the impact keeps going past the FE loading ({LOADING_TRIES} loadings from {estimate:.4g} m "
-            "past first contact, each deeper): raise fem.overshoot"
-        )
-    loading, law, impact = solved
-    overlaps, change = [impact.max_overlap], math.inf
-    while len(overlaps) < settings.max_iterations:
-        unload_at = overlaps[-1] * (1.0 + UNLOAD_MARGIN)
-        d_star = first_contact + unload_at
-        try:
-            unloading = plate.unload(loading, d_star, steps=settings.unload_steps)
-        except ConvergenceError:
-            # the unloading from a plastic dent can fail near the loss of contact in coarse steps: once more in finer
-            unloading = plate.unload(loading, d_star, steps=2 * settings.unload_steps)
-        law = force_law(loading, unloading, first_contact)
-        impact = impact_on(law)
-        overlaps.append(impact.max_overlap)
-        change = abs(overlaps[-1] - overlaps[-2]) / overlaps[-2]
-        if change < settings.tolerance:
+    first: ImpactResult,
+    tolerance: float,
+    max_cycles: int,
+    progress: Callable[[int], None] | None = None,
+) -> FixedPoint[Cycle]:
+    """Iterate ``plate``'s cycles and ``impact_on`` its laws from the impact ``first`` (module docstring) until two
+    successive impacts change by less than ``tolerance``, at most ``max_cycles`` (≥ 1) cycles; ``progress(k)`` is
+    called as cycle k (from 0) starts."""
+    if max_cycles < 1:
+        raise ValueError(f"max_cycles={max_cycles} is out of range: the coupling runs at least 1 plate cycle")
+    impacts = [first]
+    change = math.inf
+    for k in range(max_cycles):
+        if progress is not None:
+            progress(k)
+        cycle, law = plate.cycle(impacts[-1])
+        impacts.append(impact_on(law))
+        change = plate.change(impacts[-2], impacts[-1])
+        if change < tolerance:
             break
-    cycle = PlateCycle.join(loading, unloading, first_contact, d_star)
-    return CoupledImpact(
-        impact,
-        law,
-        cycle,
-        first_contact,
-        tuple(overlaps),
-        change,
-        change < settings.tolerance,
-        pressure_table(cycle, impact),
-        unload_at,
-        plastic_work=plate.plastic_work(before),
-    )
-
-
-def couple_elastic(
-    plate, impact_on: ImpactOnLaw, estimate: float, settings: CouplingSettings, yield_tolerance: float
-) -> CoupledImpact | None:
-    """The impact ``impact_on`` on ``plate``'s elastic response (:func:`fem.elastic_reload`: the plate's state is
-    not changed, the reloading and unloading retrace each other), or None when that response yields: a return
-    mapping of any loading step up to the impact's maximum gives Δᾱ > ``yield_tolerance`` (then the plastic
-    problem must be solved, :func:`couple`). Exact, on the FE's own mesh, for a plate that does not yield."""
-    first_contact = plate.first_contact_overlap()
-    reloads = []
-
-    def load(target: float) -> IndentationResult:
-        reloads.append(elastic_reload(plate, first_contact + loading_path(target, settings.load_steps, None)))
-        return reloads[-1].result
-
-    solved = _loading_past_the_impact(load, impact_on, first_contact, estimate, settings, plate.effective_modulus)
-    if solved is None:
-        return None
-    loading, law, impact = solved
-    unload_at = impact.max_overlap * (1.0 + UNLOAD_MARGIN)
-    d_star = first_contact + unload_at
-    # steps past the impact's maximum were never reached: their trial plastic strain does not count
-    reached = np.asarray(loading.overlap) <= d_star
-    trial = float(np.max(reloads[-1].trial_plastic_strain_increment[reached], initial=0.0))
-    if trial > yield_tolerance:
-        return None
-    down = np.linspace(d_star, max(0.0, first_contact - 0.05 * unload_at), settings.unload_steps + 1)
-    unloading = elastic_reload(plate, down, check_yield=False).result
-    law = force_law(loading, unloading, first_contact)
-    first = impact.max_overlap
-    impact = impact_on(law)
-    change = abs(impact.max_overlap - first) / first
-    cycle = PlateCycle.join(loading, unloading, first_contact, d_star)
-    coupled = CoupledImpact(
-        impact,
-        law,
-        cycle,
-        first_contact,
-        (first, impact.max_overlap),
-        change,
-        change < settings.tolerance,
-        pressure_table(cycle, impact),
-        unload_at,
-    )
-    return replace(coupled, elastic=True, trial_increment=trial)
+    return FixedPoint(impacts[-1], law, cycle, tuple(impacts), change, change < tolerance)

@@ -13,7 +13,8 @@ contact radius along the impact's own path. One coupling iteration:
 3. run the impact again on the 3-D plate's law (contact's ``"tabulated"`` model: F(δ) and a(δ) on loading, the
    unloading curve from the top; the tangential law then has the 3-D contact radius and normal force);
 4. repeat while δ_max or the tangential restitution e_t change by more than ``tolerance`` (relative for δ_max,
-   absolute for e_t) between impact runs.
+   absolute for e_t) between impact runs: the fixed point of :func:`fem.coupling.fixed_point` on the plate's
+   :class:`PathCycles`.
 
 Unlike the axisymmetric frictionless plate, the loading branch of the 3-D plate depends on the path (friction and
 the moving centre), so every iteration runs the whole path. Started from the axisymmetric coupled impact (whose
@@ -49,6 +50,7 @@ from scipy.integrate import cumulative_trapezoid
 from contact import ImpactResult, Material, TabulatedLaw
 from contact.fields import SurfaceField
 from fem.core.increments import WorkCounters
+from fem.coupling import fixed_point
 from fem.force_law import force_law
 from fem.solid.indentation import MAX_FRICTION, SolidIndentation, solid_solver
 from fem.solid.plate import SolidPlate, press_path, solid_plastic_work
@@ -57,6 +59,7 @@ from fem.solid.state import SolidState
 
 __all__ = [
     "ImpactPath",
+    "PathCycles",
     "SolidCouplingSettings",
     "SolidCoupledImpact",
     "couple_solid",
@@ -322,41 +325,50 @@ def couple_solid_plate(
     return replace(coupled, first_contact=first_contact, plastic_work=plate.plastic_work(before))
 
 
+@dataclass(frozen=True)
+class PathCycles:
+    """The 3-D plate's cycles for :func:`fem.coupling.fixed_point`: ``run(path)`` presses and drags the plate along
+    the impact's path (:func:`impact_path` with the ``settings``' steps) from the plate's kept state; the loading
+    branch depends on the path, so δ_max and e_t count. ``work`` adds up the 3-D solver's work over the cycles."""
+
+    run: Callable[[ImpactPath], tuple[SolidIndentation, TabulatedLaw]]
+    settings: SolidCouplingSettings
+    work: WorkCounters = field(default_factory=WorkCounters)
+
+    def cycle(self, impact: ImpactResult) -> tuple[tuple[ImpactPath, SolidIndentation], TabulatedLaw]:
+        """((the path of ``impact``, the plate along it), its force law)."""
+        path = impact_path(impact, self.settings.load_steps, self.settings.unload_steps)
+        solid, law = self.run(path)
+        self.work.add(solid.stats)
+        return (path, solid), law
+
+    def change(self, before: ImpactResult, after: ImpactResult) -> float:
+        """The larger of the relative change of δ_max and the absolute change of e_t (0 where e_t is undefined)."""
+        tangential = abs(after.tangential_restitution - before.tangential_restitution)
+        overlap = abs(after.max_overlap - before.max_overlap) / before.max_overlap
+        return max(overlap, tangential if math.isfinite(tangential) else 0.0)
+
+
 def _couple(
     impact_on_law: Callable[[TabulatedLaw], ImpactResult],
     first: ImpactResult,
-    cycle: Callable[[ImpactPath], tuple[SolidIndentation, TabulatedLaw]],
+    run: Callable[[ImpactPath], tuple[SolidIndentation, TabulatedLaw]],
     settings: SolidCouplingSettings,
     progress: Callable[[int], None] | None,
 ) -> SolidCoupledImpact:
-    """The coupling loop (module docstring) on the plate's ``cycle(path) -> (solid, law)``."""
-    impact = first
-    overlaps, restitutions = [first.max_overlap], [first.tangential_restitution]
-    change, converged = math.inf, False
-    work = WorkCounters()
-    for iteration in range(settings.max_iterations):
-        if progress is not None:
-            progress(iteration)
-        path = impact_path(impact, settings.load_steps, settings.unload_steps)
-        solid, law = cycle(path)
-        work.add(solid.stats)
-        impact = impact_on_law(law)
-        overlaps.append(impact.max_overlap)
-        restitutions.append(impact.tangential_restitution)
-        tangential = abs(restitutions[-1] - restitutions[-2])
-        change = max(abs(overlaps[-1] - overlaps[-2]) / overlaps[-2], tangential if math.isfinite(tangential) else 0.0)
-        if change < settings.tolerance:
-            converged = True
-            break
+    """The coupled impact of the fixed point (:func:`fem.coupling.fixed_point`) of the plate's ``run(path)``."""
+    cycles = PathCycles(run, settings)
+    point = fixed_point(cycles, impact_on_law, first, settings.tolerance, settings.max_iterations, progress)
+    path, solid = point.cycle
     return SolidCoupledImpact(
-        impact=impact,
-        law=law,
+        impact=point.impact,
+        law=point.law,
         solid=solid,
         path=path,
-        times=place_steps(impact, path),
-        max_overlaps=tuple(overlaps),
-        tangential_restitutions=tuple(restitutions),
-        change=change,
-        converged=converged,
-        work=work,
+        times=place_steps(point.impact, path),
+        max_overlaps=point.max_overlaps,
+        tangential_restitutions=point.tangential_restitutions,
+        change=point.change,
+        converged=point.converged,
+        work=cycles.work,
     )

@@ -7,6 +7,7 @@ real FE plate (fem.indent) run when fem is available.
 """
 
 import math
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -22,6 +23,7 @@ from contact.theory import (
     thornton_restitution,
     yield_velocity,
 )
+from fem.coupling import fixed_point
 from wear import Case, restitution_sweep, run
 from wear.app.figures.run import restitution_comparison
 from wear.chain.plate import coupling_settings, impact_on_law
@@ -209,3 +211,37 @@ def test_hertz_surface_displacement_closed_forms():
     assert u[0] == pytest.approx(a * a / R, rel=1e-12)
     assert u[1] == pytest.approx(u[2], rel=1e-6)
     assert u[3] == pytest.approx(force / (math.pi * e_star * 30 * a), rel=1e-3)
+
+
+class _ToyPlate:
+    """A plate whose force law is a number: each cycle moves the impact's δ_max halfway to 1 µm (a contraction)."""
+
+    def __init__(self):
+        self.cycles = 0
+
+    def cycle(self, impact):
+        self.cycles += 1
+        return self.cycles, 0.5 * (impact.max_overlap + 1e-6)
+
+    def change(self, before, after):
+        return abs(after.max_overlap - before.max_overlap) / before.max_overlap
+
+
+def _impact_on(target):
+    return SimpleNamespace(max_overlap=target, tangential_restitution=float("nan"))
+
+
+def test_fixed_point_stops_at_the_tolerance_and_at_max_cycles():
+    """The one coupling loop (fem.coupling.fixed_point): a contraction halving the distance to 1 µm from 2 µm
+    changes δ_max by 1/4, 1/6, 1/10, 1/18, ... (closed form 1/(2^k + 2) at cycle k): it stops at the first change
+    below the tolerance, or after max_cycles with converged False."""
+    plate = _ToyPlate()
+    point = fixed_point(plate, _impact_on, _impact_on(2e-6), tolerance=0.1, max_cycles=10)
+    assert point.converged and plate.cycles == 4 and point.cycle == 4
+    assert point.change == pytest.approx(1 / 18)
+    assert point.max_overlaps == pytest.approx((2e-6, 1.5e-6, 1.25e-6, 1.125e-6, 1.0625e-6))
+    plate = _ToyPlate()
+    point = fixed_point(plate, _impact_on, _impact_on(2e-6), tolerance=0.1, max_cycles=2)
+    assert not point.converged and plate.cycles == 2 and point.change == pytest.approx(1 / 6)
+    with pytest.raises(ValueError, match="max_cycles=0"):
+        fixed_point(_ToyPlate(), _impact_on, _impact_on(2e-6), tolerance=0.1, max_cycles=0)

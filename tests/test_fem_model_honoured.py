@@ -46,8 +46,8 @@ def test_axisymmetric_only_commands_refuse_3d_in_one_line(command, given, tmp_pa
     assert main([*argv, "--out", str(out)]) == 2
     err = capsys.readouterr().err.strip()
     assert err.splitlines() == [
-        f"impactwear {command}: error: fem.model='3d': impactwear {command} runs the axisymmetric plate only; "
-        "set fem.model='axisymmetric'"
+        f"impactwear {command}: error: fem.model='3d': impactwear {command} runs the axisymmetric plate only "
+        f"({JOBS[command].fem_models_why}); set fem.model='axisymmetric'"
     ]
     assert not out.exists()
 

@@ -17,5 +17,6 @@ def check_job_case(case: Case, job: str) -> Case:
     if "fem" in spec.tables and case.fem.model not in spec.fem_models:
         accepted = " or ".join(repr(m) for m in spec.fem_models)
         plates = "the axisymmetric plate only" if spec.fem_models == ("axisymmetric",) else f"fem.model={accepted}"
-        raise ValueError(f"fem.model={case.fem.model!r}: impactwear {job} runs {plates}; set fem.model={accepted}")
+        why = f" ({spec.fem_models_why})" if spec.fem_models_why else ""
+        raise ValueError(f"fem.model={case.fem.model!r}: impactwear {job} runs {plates}{why}; set fem.model={accepted}")
     return case
