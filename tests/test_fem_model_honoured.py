@@ -5,6 +5,8 @@ refuse ``fem.model = "3d"`` in one line naming the key, before any work (exit 2,
 ``erode`` do not read ``[fem]`` and refuse ``--set fem.model``. Every summary.json a plate produced names its plate
 model; a 3-D run's ``regime``, ``yield`` and ``coupling`` describe the 3-D plate the impact ran on
 (``tests/test_solid_chain.py::test_3d_run_summary_describes_the_3d_plate``, on that file's reduced 3-D run).
+The other ``[fem]`` keys likewise: one a command would not read for its case (the coupling's, the 3-D plate's,
+indent's fixed few) is refused at any value but its default.
 """
 
 import json
@@ -113,3 +115,50 @@ def test_every_plate_model_of_the_schema_has_a_plate():
     """The case schema's plate models (``fem.model``'s choices) are the chain's (wear.chain.plates.PLATES): a model
     the schema accepts has a plate to run, and a plate the chain has can be chosen."""
     assert tuple(PLATES) == FEM_MODELS
+
+
+@pytest.mark.parametrize(
+    ("argv", "line"),
+    [
+        (
+            ["indent", "--set", "fem.tolerance=0.1"],
+            "fem.tolerance=0.1: impactwear indent reads only fem.model, fem.load_steps, fem.unload_steps, "
+            "fem.mesh_scale; leave it out (default 0.005)",
+        ),
+        (
+            ["run", "--set", "fem.solid_iterations=5"],
+            "fem.solid_iterations=5: only the 3-D plate reads it (fem.model='3d'); leave it out (default 3)",
+        ),
+        (
+            ["run", "--set", "fem.coupling=none", "--set", "fem.load_steps=20"],
+            "fem.load_steps=20: with fem.coupling='none' there is no FE plate; leave it out (default 16)",
+        ),
+        (
+            ["run", "--set", "fem.coupling=one-way", "--set", "fem.overshoot=0.3"],
+            "fem.overshoot=0.3: the one-way coupling reads only fem.load_steps, fem.unload_steps and "
+            "fem.mesh_scale; leave it out (default 0.1)",
+        ),
+        (
+            ["repeat", "--set", "fem.coupling=none"],
+            "fem.coupling='none': impactwear repeat couples every impact two-way; leave fem.coupling out or set it "
+            "to 'two-way'",
+        ),
+    ],
+)
+def test_fem_keys_a_command_would_not_read_are_refused(argv, line, tmp_path, capsys):
+    """A [fem] key the command would not read for its case is refused in one line (key, value, why, its default),
+    exit 2, before any work, nothing written; at its default it is accepted (a case file from another command's
+    --print-default still runs)."""
+    out = tmp_path / "out"
+    assert main([*argv, "--out", str(out)]) == 2
+    assert capsys.readouterr().err.strip().splitlines() == [f"impactwear {argv[0]}: error: {line}"]
+    assert not out.exists()
+
+
+def test_print_default_shows_only_the_fem_keys_indent_reads(capsys):
+    """``indent --print-default`` prints the [fem] keys indent reads, no others (it says "every key it reads")."""
+    assert main(["indent", "--print-default"]) == 0
+    text = capsys.readouterr().out
+    fem_table = text.split("[fem]")[1]
+    keys = [line.split("=")[0].strip() for line in fem_table.splitlines() if "=" in line and not line.startswith("#")]
+    assert sorted(keys) == sorted(JOBS["indent"].fem_keys)

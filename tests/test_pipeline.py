@@ -136,6 +136,27 @@ def test_one_way_fe_pressure_normal_impact(tmp_path):
 
 
 @pytest.mark.filterwarnings("ignore:elastic ball")
+def test_one_way_fe_pressure_plastic_impact():
+    """One-way chain on a plate that yields (the default case, Thornton's rebound separates at a residual overlap
+    above 0, so the FE unloading goes on below it after the ball has left): the run completes, and with alpha = 1,
+    beta = 0 and the kinematic speed the worn volume is K ∫F_FE dt over the FE steps up to separation (the law's
+    impulse identity, integrated by the trapezoid rule independently of the wear grid) within 3%."""
+    case = Case.default().with_(
+        wear={"pressure": "fe", "alpha": 1.0, "beta": 0.0, "K": 1e-13, "speed": "kinematic"},
+        fem={"coupling": "one-way", "mesh_scale": 4.0, "load_steps": 10, "unload_steps": 6},
+        output={"figures": False, "render": False},
+    )
+    result = run(case)
+    fe = result.fe
+    time, force = np.asarray(fe.time), np.asarray(fe.force)
+    during = np.r_[True, np.diff(time) > 0.0]
+    assert time[-1] == pytest.approx(result.impact.contact_time, rel=1e-9)
+    assert np.count_nonzero(~during) >= 1  # steps after separation exist (the case is the one this test is for)
+    impulse = np.trapezoid(force[during], time[during])
+    assert result.wear.volume_m3 == pytest.approx(1e-13 * impulse, rel=0.03)
+
+
+@pytest.mark.filterwarnings("ignore:elastic ball")
 def test_two_way_run_with_dent_writes_coherent_folder(tmp_path):
     """Issue 4 acceptance 6 on the default case's two-way chain (coarse FE mesh): volume in summary.json equals
     ∫ wear_depth dA over surface.vtu within 1%, node z = −(dent + wear) with a real dent, every file reads back

@@ -6,17 +6,57 @@ from __future__ import annotations
 from wear.case.case import Case
 from wear.case.jobs import JOBS
 
-__all__ = ["check_job_case"]
+__all__ = ["FEM_KEYS_OF_COUPLING", "SOLID_FEM_KEYS", "check_job_case", "fem_keys_read"]
+
+#: The ``[fem]`` keys each coupling reads, besides ``fem.model`` and ``fem.coupling``.
+FEM_KEYS_OF_COUPLING: dict[str, tuple[str, ...]] = {
+    "none": (),
+    "one-way": ("load_steps", "unload_steps", "mesh_scale"),
+    "two-way": ("tolerance", "max_iterations", "load_steps", "unload_steps", "overshoot", "mesh_scale"),
+}
+#: The ``[fem]`` keys only the 3-D plate reads (besides those of the axisymmetric coupling it starts from).
+SOLID_FEM_KEYS = ("solid_iterations", "solid_load_steps", "solid_unload_steps")
+
+
+def fem_keys_read(case: Case, job: str) -> tuple[tuple[str, ...], str]:
+    """(the ``[fem]`` keys ``job`` reads for ``case``, what decides it: a phrase for a refusal)."""
+    spec = JOBS[job]
+    if spec.fem_keys:
+        return spec.fem_keys, f"impactwear {job} reads only fem.{', fem.'.join(spec.fem_keys)}"
+    coupling = spec.fem_coupling or case.fem.coupling
+    keys = ("model", "coupling", *FEM_KEYS_OF_COUPLING[coupling])
+    if case.fem.model == "3d":
+        return (*keys, *SOLID_FEM_KEYS), "impactwear {job} on the 3-D plate does not read it"
+    if coupling == "none":
+        return keys, "with fem.coupling='none' there is no FE plate"
+    if coupling == "one-way":
+        return keys, "the one-way coupling reads only fem.load_steps, fem.unload_steps and fem.mesh_scale"
+    return keys, "only the 3-D plate reads it (fem.model='3d')"
 
 
 def check_job_case(case: Case, job: str) -> Case:
     """``case`` if ``job`` (one of :data:`wear.case.JOBS`) runs it as given, else a one-line ``ValueError``: a job
     that reads ``[fem]`` runs only the plate models (``fem.model``) of its :attr:`wear.case.Job.fem_models`, so
-    that a model it would not run is refused, never ignored."""
+    that a model it would not run is refused, never ignored; a ``[fem]`` key the job would not read for this case
+    (:func:`fem_keys_read`) is refused at any value but the job's default; a job that always runs one coupling
+    refuses another ``fem.coupling``."""
     spec = JOBS[job]
     if "fem" in spec.tables and case.fem.model not in spec.fem_models:
         accepted = " or ".join(repr(m) for m in spec.fem_models)
         plates = "the axisymmetric plate only" if spec.fem_models == ("axisymmetric",) else f"fem.model={accepted}"
         why = f" ({spec.fem_models_why})" if spec.fem_models_why else ""
         raise ValueError(f"fem.model={case.fem.model!r}: impactwear {job} runs {plates}{why}; set fem.model={accepted}")
+    if "fem" in spec.tables:
+        if spec.fem_coupling and case.fem.coupling != spec.fem_coupling:
+            raise ValueError(
+                f"fem.coupling={case.fem.coupling!r}: impactwear {job} couples every impact {spec.fem_coupling}; "
+                f"leave fem.coupling out or set it to {spec.fem_coupling!r}"
+            )
+        read, why = fem_keys_read(case, job)
+        default = spec.default_case().fem
+        for key, value in case.fem.values().items():
+            if key not in read and value != getattr(default, key):
+                raise ValueError(
+                    f"fem.{key}={value!r}: {why.format(job=job)}; leave it out (default {getattr(default, key)!r})"
+                )
     return case

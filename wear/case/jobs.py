@@ -87,7 +87,9 @@ class Job:
     ``command`` (the module of :mod:`wear.app.commands` with ``configure(parser)`` and ``main(args)``), the
     ``overlay`` of values that differ from the schema's defaults, the tables a case file must hold
     (``required``), the sweep ``stages`` it offers and the plate models it runs (``fem_models``, for a job that
-    reads ``[fem]``; :func:`wear.case.check.check_job_case`), with why it runs no other (``fem_models_why``)."""
+    reads ``[fem]``; :func:`wear.case.check.check_job_case`), with why it runs no other (``fem_models_why``), and
+    for a job that reads a fixed part of ``[fem]`` those keys (``fem_keys``; empty: the keys its plate and its
+    coupling read) or the one coupling it always runs (``fem_coupling``; empty: ``fem.coupling``'s)."""
 
     name: str
     tables: tuple[str, ...]
@@ -99,6 +101,8 @@ class Job:
     stages: tuple[Stage, ...] = ()
     fem_models: tuple[str, ...] = FEM_MODELS
     fem_models_why: str = ""
+    fem_keys: tuple[str, ...] = ()
+    fem_coupling: str = ""
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "stages", tuple(replace(stage, job=self.name) for stage in self.stages))
@@ -177,6 +181,7 @@ JOBS: dict[str, Job] = {
             fem_models=("axisymmetric",),
             fem_models_why="a normal press is axisymmetric: the axisymmetric plate is the 3-D plate's exact reduction, "
             "the same dent within 1.5 % at about a hundredth of its cost",
+            fem_keys=("model", "load_steps", "unload_steps", "mesh_scale"),
         ),
         Job(
             "repeat",
@@ -185,6 +190,7 @@ JOBS: dict[str, Job] = {
             "N impacts of the same ball at one site on the plate the previous ones left: dent, wear, shakedown",
             "wear.app.commands.repeat",
             required=("ball", "plate", "impact", "wear"),
+            fem_coupling="two-way",
             stages=(
                 Stage(
                     "repeat",

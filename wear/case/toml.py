@@ -77,14 +77,22 @@ def _comment(spec: Key) -> str:
     return f"{spec.doc}; {spec.valid_range()}"
 
 
-def dump_case(case: Case, tables: tuple[str, ...] | None = None, comments: bool = True) -> str:
-    """TOML text of ``case`` (all tables, or ``tables``). Every key is written; an absent optional key is written
-    as a comment saying what absent means, except where ``inf`` states it (a yield strength: never yields). With
-    ``comments`` each key carries its doc, valid range and units."""
+def dump_case(
+    case: Case,
+    tables: tuple[str, ...] | None = None,
+    comments: bool = True,
+    only: dict[str, tuple[str, ...]] | None = None,
+) -> str:
+    """TOML text of ``case`` (all tables, or ``tables``). Every key is written (of a table in ``only``, its keys
+    listed there); an absent optional key is written as a comment saying what absent means, except where ``inf``
+    states it (a yield strength: never yields). With ``comments`` each key carries its doc, valid range and units."""
     lines: list[str] = []
+    only = only or {}
     for name, values in case.to_dict(tables).items():
         lines.append(f"[{name}]")
         for k, spec in TABLES[name].keys().items():
+            if name in only and k not in only[name]:
+                continue
             value = values[k]
             note = f"  # {_comment(spec)}" if comments else ""
             if value is None and spec.inf_is_absent:

@@ -122,8 +122,11 @@ class RepeatResult:
     ``shakedown_impact`` (first impact with Δᾱ below the tolerance, or None), ``computed`` (number of impacts
     solved), ``wall_time`` (s), ``notes``, ``axis_x`` (m: x of the FE axis, the dent centre, in the wear map's
     frame), ``met_surface``: the surface the last computed impact met — (dent depth, axisymmetric wear depth) on
-    the FE surface nodes (m; empty on the 3-D plate); :attr:`elastic_computed`. The repetition's settings are
-    ``case.repeat``."""
+    the FE surface nodes (m; empty on the 3-D plate); ``halfspace_check`` (the last computed impact's pressure
+    against the half-space solution on the surface it met, :func:`wear.chain.check.halfspace_check`; None on the 3-D
+    plate, whose dent is not axisymmetric), ``wear_depth_over_taper`` (the FE surface's largest wear depth over the
+    plate's taper depth; None on the 3-D plate, whose surface the wear does not move); :attr:`elastic_computed`.
+    The repetition's settings are ``case.repeat``."""
 
     case: Case
     records: list[ImpactRecord]
@@ -135,6 +138,8 @@ class RepeatResult:
     notes: list[str] = field(default_factory=list)
     axis_x: float = 0.0
     met_surface: tuple[np.ndarray, np.ndarray] = ()
+    halfspace_check: dict | None = None
+    wear_depth_over_taper: float | None = None
 
     @property
     def elastic_computed(self) -> int:
@@ -172,11 +177,7 @@ class RepeatResult:
                 "surface_depth_m": last.surface_depth,
                 "max_equivalent_plastic_strain": last.max_plastic_strain,
                 "pile_up_height_m": last.pile_up_height,
-                "fe_wear_depth_over_taper_depth": (
-                    float(self.plate.wear_depth.max() / self.plate.taper_depth)
-                    if isinstance(self.plate, fem.Plate)
-                    else None
-                ),
+                "fe_wear_depth_over_taper_depth": self.wear_depth_over_taper,
             },
             "wall_time_s": self.wall_time,
             "notes": list(self.notes),

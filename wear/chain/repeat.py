@@ -66,6 +66,7 @@ from contact import effective_modulus
 from contact.theory import speed_components
 from wear.case import Case, check_job_case
 from wear.chain.axisymmetric_run import impact_wear
+from wear.chain.check import halfspace_check
 from wear.chain.plate import case_plate, coupling_settings, impact_on_law
 from wear.chain.records import ComputedImpact, ImpactRecord, RepeatResult, yield_strain
 from wear.chain.single import estimate_impact
@@ -302,8 +303,13 @@ def axisymmetric_repeat(
             progress(done, spec.impacts)
     if shakedown is None:
         notes.append(f"no impact without new plastic strain (tolerance Δᾱ <= {tolerance:.3g})")
-    return RepeatResult(
+    result = RepeatResult(
         case, records, fe_plate, acc.map(), shakedown, computed, time.perf_counter() - t_start, notes, axis_x, met
+    )
+    return replace(
+        result,
+        halfspace_check=halfspace_check(result),
+        wear_depth_over_taper=float(fe_plate.wear_depth.max() / fe_plate.taper_depth),
     )
 
 

@@ -98,7 +98,16 @@ def case_json(case: Case, job: str) -> dict:
             return "inf" if value > 0 else "-inf"
         return value
 
-    return finite(case.to_dict(JOBS[job].tables))
+    tables = case.to_dict(JOBS[job].tables)
+    for table, keys in read_keys(job).items():
+        tables[table] = {k: v for k, v in tables[table].items() if k in keys}
+    return finite(tables)
+
+
+def read_keys(job: str) -> dict[str, tuple[str, ...]]:
+    """The tables of which ``job`` reads a fixed part, and those keys (``--print-default`` prints only them)."""
+    fem_keys = JOBS[job].fem_keys
+    return {"fem": fem_keys} if fem_keys else {}
 
 
 def print_default(args: argparse.Namespace, job: str, case: Case) -> int:
@@ -116,7 +125,7 @@ def print_default(args: argparse.Namespace, job: str, case: Case) -> int:
         print(f"# impactwear {job}: the case it would run (the case file and options laid on its default case).")
         print("# Every key the command reads, with its meaning and valid range; SI units, angles in degrees from the")
         print("# plate normal.\n")
-    sys.stdout.write(dump_case(case, tables))
+    sys.stdout.write(dump_case(case, tables, only=read_keys(job)))
     return 0
 
 

@@ -20,7 +20,6 @@ from fem.solid.plate import SolidPlate
 from wear.app.figures.repeat import plot_repeat
 from wear.app.outputs.writer import versions, write_csv, write_json, write_mesh, write_npz, write_pvd
 from wear.case import JOBS
-from wear.chain.check import halfspace_check
 from wear.chain.records import RepeatResult
 
 __all__ = ["RepeatWriter"]
@@ -66,7 +65,7 @@ class RepeatWriter:
             "versions": versions(),
             **result.summary(),
         }
-        summary["halfspace_check"] = halfspace_check(result) if isinstance(result.plate, fem.Plate) else None
+        summary["halfspace_check"] = result.halfspace_check
         summary["notes"] = list(dict.fromkeys([*notes, *result.notes]))
         write_json(out / "summary.json", summary)
         if case.output.figures:
