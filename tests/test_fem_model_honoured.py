@@ -127,7 +127,7 @@ def test_every_plate_model_of_the_schema_has_a_plate():
         ),
         (
             ["run", "--set", "fem.solid_iterations=5"],
-            "fem.solid_iterations=5: only the 3-D plate reads it (fem.model='3d'); leave it out (default 3)",
+            "fem.solid_iterations=5: only the plate fem.model='3d' reads it; leave it out (default 3)",
         ),
         (
             ["run", "--set", "fem.coupling=none", "--set", "fem.load_steps=20"],
@@ -135,8 +135,8 @@ def test_every_plate_model_of_the_schema_has_a_plate():
         ),
         (
             ["run", "--set", "fem.coupling=one-way", "--set", "fem.overshoot=0.3"],
-            "fem.overshoot=0.3: the one-way coupling reads only fem.load_steps, fem.unload_steps and "
-            "fem.mesh_scale; leave it out (default 0.1)",
+            "fem.overshoot=0.3: the one-way coupling reads only fem.load_steps, fem.unload_steps, fem.mesh_scale; "
+            "leave it out (default 0.1)",
         ),
         (
             ["repeat", "--set", "fem.coupling=none"],

@@ -6,7 +6,7 @@ from __future__ import annotations
 from wear.case.case import Case
 from wear.case.jobs import JOBS
 
-__all__ = ["FEM_KEYS_OF_COUPLING", "SOLID_FEM_KEYS", "check_job_case", "fem_keys_read"]
+__all__ = ["FEM_KEYS_OF_COUPLING", "FEM_KEYS_OF_MODEL", "SOLID_FEM_KEYS", "check_job_case", "fem_keys_read"]
 
 #: The ``[fem]`` keys each coupling reads, besides ``fem.model`` and ``fem.coupling``.
 FEM_KEYS_OF_COUPLING: dict[str, tuple[str, ...]] = {
@@ -16,6 +16,8 @@ FEM_KEYS_OF_COUPLING: dict[str, tuple[str, ...]] = {
 }
 #: The ``[fem]`` keys only the 3-D plate reads (besides those of the axisymmetric coupling it starts from).
 SOLID_FEM_KEYS = ("solid_iterations", "solid_load_steps", "solid_unload_steps")
+#: The ``[fem]`` keys each plate model reads besides its coupling's.
+FEM_KEYS_OF_MODEL: dict[str, tuple[str, ...]] = {"axisymmetric": (), "3d": SOLID_FEM_KEYS}
 
 
 def fem_keys_read(case: Case, job: str) -> tuple[tuple[str, ...], str]:
@@ -24,14 +26,15 @@ def fem_keys_read(case: Case, job: str) -> tuple[tuple[str, ...], str]:
     if spec.fem_keys:
         return spec.fem_keys, f"impactwear {job} reads only fem.{', fem.'.join(spec.fem_keys)}"
     coupling = spec.fem_coupling or case.fem.coupling
-    keys = ("model", "coupling", *FEM_KEYS_OF_COUPLING[coupling])
-    if case.fem.model == "3d":
-        return (*keys, *SOLID_FEM_KEYS), "impactwear {job} on the 3-D plate does not read it"
+    keys = ("model", "coupling", *FEM_KEYS_OF_COUPLING[coupling], *FEM_KEYS_OF_MODEL[case.fem.model])
+    if FEM_KEYS_OF_MODEL[case.fem.model]:
+        return keys, f"impactwear {job} on the plate fem.model={case.fem.model!r} does not read it"
     if coupling == "none":
         return keys, "with fem.coupling='none' there is no FE plate"
     if coupling == "one-way":
-        return keys, "the one-way coupling reads only fem.load_steps, fem.unload_steps and fem.mesh_scale"
-    return keys, "only the 3-D plate reads it (fem.model='3d')"
+        return keys, f"the one-way coupling reads only fem.{', fem.'.join(FEM_KEYS_OF_COUPLING['one-way'])}"
+    readers = [repr(m) for m, own in FEM_KEYS_OF_MODEL.items() if own]
+    return keys, f"only the plate fem.model={' or '.join(readers)} reads it"
 
 
 def check_job_case(case: Case, job: str) -> Case:
@@ -56,7 +59,5 @@ def check_job_case(case: Case, job: str) -> Case:
         default = spec.default_case().fem
         for key, value in case.fem.values().items():
             if key not in read and value != getattr(default, key):
-                raise ValueError(
-                    f"fem.{key}={value!r}: {why.format(job=job)}; leave it out (default {getattr(default, key)!r})"
-                )
+                raise ValueError(f"fem.{key}={value!r}: {why}; leave it out (default {getattr(default, key)!r})")
     return case
