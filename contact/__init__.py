@@ -3,6 +3,8 @@
 Knows nothing of meshes or wear. SI units throughout; angles in degrees from the plate normal.
 """
 
+from importlib.metadata import PackageNotFoundError, version
+
 from contact.halfspace import HalfspaceContact, halfspace_contact, sphere_on_axisymmetric_surface
 from contact.impact import simulate_impact, simulate_impacts
 from contact.materials import Material, effective_modulus, effective_shear_modulus
@@ -10,7 +12,14 @@ from contact.results import BatchResult, History, ImpactResult
 from contact.tabulated import TabulatedLaw
 from contact.theory import yield_velocity
 
+try:
+    #: The installed impactwear's version (stated once, in pyproject.toml); ``fem`` and ``wear`` give the same.
+    __version__ = version("impactwear")
+except PackageNotFoundError:  # a source tree used without being installed
+    __version__ = "0+unknown"
+
 __all__ = [
+    "__version__",
     "BatchResult",
     "HalfspaceContact",
     "History",

@@ -99,7 +99,7 @@ def dimensionless_restitution(c: float) -> float:
 
 @lru_cache(maxsize=64)
 def dashpot_coefficient(restitution: float) -> float:
-    r"""Dashpot coefficient c (dimensionless) of errata Eq. 6 that gives the normal ``restitution`` e.
+    r"""Dashpot coefficient c (dimensionless) of errata equation 6 that gives the normal ``restitution`` e.
 
     Solved once per e by root finding on :func:`dimensionless_restitution` (cached); e = 1 gives c = 0.
     The linear-spring shortcut :math:`c = -2\sqrt{5/6}\ln e/\sqrt{\ln^2 e + \pi^2}` is not used (it is off by

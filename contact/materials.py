@@ -96,7 +96,7 @@ class Material:
 
 
 def effective_modulus(ball: Material, plate: Material) -> float:
-    r"""Effective contact modulus (Pa), errata Eq. 5.
+    r"""Effective contact modulus (Pa), errata equation 5.
 
     .. math:: \frac{1}{E^*} = \frac{1-\nu_1^2}{E_1} + \frac{1-\nu_2^2}{E_2}
 
@@ -109,7 +109,7 @@ def effective_modulus(ball: Material, plate: Material) -> float:
 
 
 def effective_shear_modulus(ball: Material, plate: Material) -> float:
-    r"""Effective tangential contact modulus (Pa), errata Eq. 9.
+    r"""Effective tangential contact modulus (Pa), errata equation 9.
 
     .. math:: \frac{1}{G^*} = \frac{2-\nu_1}{G_1} + \frac{2-\nu_2}{G_2}, \quad G = \frac{E}{2(1+\nu)}
     """

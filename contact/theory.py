@@ -78,7 +78,7 @@ def sphere_mass(radius: float, density: float) -> float:
 
 
 def hertz_force(overlap, radius, effective_modulus):
-    r"""Hertz normal force (N): :math:`F = \tfrac43 E^* \sqrt{R}\,\delta^{3/2}` (errata Eq. 4).
+    r"""Hertz normal force (N): :math:`F = \tfrac43 E^* \sqrt{R}\,\delta^{3/2}` (errata equation 4).
 
     Negative overlaps (no contact) give zero.
 
@@ -107,7 +107,7 @@ def hertz_contact_radius_from_force(force, radius, effective_modulus):
 
 
 def hertz_peak_pressure(force, radius, effective_modulus):
-    r"""Hertz peak pressure (Pa), errata Eq. 17: :math:`p_0 = (6FE^{*2}/(\pi^3R^2))^{1/3} = 3F/(2\pi a^2)`."""
+    r"""Hertz peak pressure (Pa), errata equation 17: :math:`p_0 = (6FE^{*2}/(\pi^3R^2))^{1/3} = 3F/(2\pi a^2)`."""
     f = np.maximum(np.asarray(force, dtype=float), 0.0)
     return np.cbrt(6.0 * f * effective_modulus**2 / (math.pi**3 * radius**2))
 
@@ -203,7 +203,7 @@ class FirstYield:
 def first_yield(
     radius: float, effective_modulus: float, yield_strength: float, nu: float, coefficient: float | None = None
 ) -> FirstYield:
-    r"""Onset of yield in a Hertz contact, errata Eq. 18:
+    r"""Onset of yield in a Hertz contact, errata equation 18:
 
     .. math:: F_y = \frac{\pi^3 (C Y)^3 R^2}{6 E^{*2}}
 
@@ -284,7 +284,7 @@ def thornton_restitution(speed_ratio):
 
 
 def hertz_pressure(r, contact_radius, peak_pressure):
-    r"""Hertz pressure profile (Pa), errata Eq. 16: :math:`p(r) = p_0\sqrt{1 - r^2/a^2}`, 0 for r ≥ a."""
+    r"""Hertz pressure profile (Pa), errata equation 16: :math:`p(r) = p_0\sqrt{1 - r^2/a^2}`, 0 for r ≥ a."""
     r = np.asarray(r, dtype=float)
     if contact_radius <= 0.0:
         return np.zeros_like(r)
@@ -294,7 +294,7 @@ def hertz_pressure(r, contact_radius, peak_pressure):
 
 def hertz_surface_displacement(r, force: float, contact_radius: float, effective_modulus: float) -> np.ndarray:
     r"""Normal surface displacement (m, into the body) of a Hertz pressure carrying ``force`` (N) over
-    ``contact_radius`` a (m) on a half-space of modulus E* (Pa) (Johnson 1985, Eqs. 3.41a-b):
+    ``contact_radius`` a (m) on a half-space of modulus E* (Pa) (Johnson 1985, equations 3.41a-b):
 
     .. math:: u_z = \frac{\pi p_0}{4aE^*}(2a^2 - r^2),\ r \le a; \quad
               u_z = \frac{p_0}{2aE^*}\left[(2a^2 - r^2)\arcsin\frac{a}{r} + a\sqrt{r^2 - a^2}\right],\ r > a
@@ -314,7 +314,7 @@ def hertz_surface_displacement(r, force: float, contact_radius: float, effective
 
 def mesarovic_johnson_pressure(r, contact_radius, unloading_radius, unloading_pressure):
     r"""Pressure (Pa) during elastic unloading from a uniform pressure p* over radius a*
-    (Mesarovic & Johnson 2000; errata Eq. 19):
+    (Mesarovic & Johnson 2000; errata equation 19):
 
     .. math:: p(r) = \frac{2p^*}{\pi}\arctan\sqrt{\frac{a^2 - r^2}{a^{*2} - a^2}}, \quad r \le a \le a^*
 

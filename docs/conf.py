@@ -63,8 +63,10 @@ extensions = [
     "sphinx.ext.autosummary",
     "sphinx.ext.intersphinx",
     "sphinx.ext.mathjax",
+    "sphinx-mathjax-offline",  # MathJax from the pip package, copied into the build: equations render offline
     "sphinx.ext.napoleon",
     "sphinx_gallery.gen_gallery",
+    "build_checks",  # docs/_ext: no page loads maths from the network; no API summary cut at "Eq."
 ]
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
@@ -80,6 +82,7 @@ exclude_patterns = [
     "auto_examples/*.json",
     "auto_examples/*.md5",
     "sg_execution_times.rst",
+    "auto_examples/sg_execution_times.rst",  # of an earlier build (write_computation_times is off)
 ]
 if not API:
     exclude_patterns += ["_generated/api"]  # stubs of an earlier build
@@ -203,6 +206,7 @@ sphinx_gallery_conf = {
     "only_warn_on_example_error": False,
     "show_memory": False,
     "capture_repr": (),
+    "write_computation_times": False,  # its page loads a stylesheet from a CDN: the docs must work offline
 }
 
 

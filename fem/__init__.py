@@ -13,6 +13,7 @@ The 3-D plate (half block about the plane of incidence, quadratic tetrahedra, Co
 oblique impact on it, :mod:`fem.solid_coupling`).
 """
 
+from contact import __version__
 from fem.axisymmetric.indent import indent, indent_impact, plate_mesh
 from fem.axisymmetric.mesh import generate_mesh, load_mesh
 from fem.axisymmetric.plate import Plate, surface_profile
@@ -27,6 +28,7 @@ from fem.solid.indentation import SolidIndentation, indent_solid
 from fem.solid_coupling import SolidCoupledImpact, couple_solid
 
 __all__ = [
+    "__version__",
     "REGIMES",
     "ConvergenceError",
     "CoupledImpact",

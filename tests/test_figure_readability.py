@@ -17,7 +17,6 @@ from matplotlib.ticker import MaxNLocator
 import wear.app.figures.erosion as erosion_figures
 import wear.app.figures.repeat as repeat_figures
 import wear.app.figures.sweep as sweep_figures
-from wear.app.figures.common import plt
 from wear.app.figures.field import barycentric, child_of, project_to_nodes, split_in_four
 from wear.app.figures.indent import plastic_zone_figure
 from wear.app.outputs.render import default_exaggeration, exaggeration_for, round_ticks
@@ -34,9 +33,7 @@ def captured(monkeypatch):
 
     for module in (erosion_figures, repeat_figures, sweep_figures):
         monkeypatch.setattr(module, "save_figure", keep)
-    yield figures
-    for fig in figures.values():
-        plt.close(fig)
+    return figures
 
 
 # ------------------------------------------------------------------ plastic zone
@@ -105,22 +102,19 @@ def test_plastic_zone_is_a_filled_field_with_the_boundary_as_a_line():
         contact_radius=np.array([0.0, a, 0.8 * a]),
     )
     fig = plastic_zone_figure(res)
-    try:
-        ax, cax = fig.axes
-        sets = [c for c in ax.collections if isinstance(c, ContourSet)]
-        filled = [c for c in sets if c.filled]
-        lines = [c for c in sets if not c.filled]
-        assert len(filled) == 1 and len(lines) == 1
-        assert filled[0].levels[0] == 0.0 and filled[0].levels[-1] >= 0.4  # ᾱ max 0.4 %
-        boundary = np.vstack([p.vertices for p in lines[0].get_paths() if len(p.vertices)])
-        radius_um = np.hypot(boundary[:, 0], boundary[:, 1] + 50.0)
-        assert np.all(np.abs(radius_um - 40.0) < 10.0), (radius_um.min(), radius_um.max())
-        assert "µm" in ax.get_xlabel() and "µm" in ax.get_ylabel()
-        assert ax.get_aspect() == 1.0
-        assert "%" in cax.get_ylabel() and "plastic strain" in cax.get_ylabel()
-        assert ax.get_xlim() == pytest.approx((0.0, 125.0)) and ax.get_ylim() == pytest.approx((-125.0, 0.0))
-    finally:
-        plt.close(fig)
+    ax, cax = fig.axes
+    sets = [c for c in ax.collections if isinstance(c, ContourSet)]
+    filled = [c for c in sets if c.filled]
+    lines = [c for c in sets if not c.filled]
+    assert len(filled) == 1 and len(lines) == 1
+    assert filled[0].levels[0] == 0.0 and filled[0].levels[-1] >= 0.4  # ᾱ max 0.4 %
+    boundary = np.vstack([p.vertices for p in lines[0].get_paths() if len(p.vertices)])
+    radius_um = np.hypot(boundary[:, 0], boundary[:, 1] + 50.0)
+    assert np.all(np.abs(radius_um - 40.0) < 10.0), (radius_um.min(), radius_um.max())
+    assert "µm" in ax.get_xlabel() and "µm" in ax.get_ylabel()
+    assert ax.get_aspect() == 1.0
+    assert "%" in cax.get_ylabel() and "plastic strain" in cax.get_ylabel()
+    assert ax.get_xlim() == pytest.approx((0.0, 125.0)) and ax.get_ylim() == pytest.approx((-125.0, 0.0))
 
 
 # ------------------------------------------------------------------ 3-D surface exaggeration

@@ -30,6 +30,7 @@ from typing import Any
 
 #: name → the module that defines it; ``wear.<name>`` imports that module on first access.
 _EXPORTS = {
+    "__version__": "contact",  # the installed impactwear's version, read in one place
     "Case": "wear.case",
     "default_case": "wear.case",
     "dump_case": "wear.case",

@@ -1,4 +1,4 @@
-r"""Integration of the wear law (errata Eq. 15) over one impact on a 2-D grid of the plate surface.
+r"""Integration of the wear law (errata equation 15) over one impact on a 2-D grid of the plate surface.
 
 .. math:: w(x, y) = \int K\,p\big(\sqrt{(x - x_c(t))^2 + y^2},\,t\big)^{\alpha}\,v(t)^{\beta}\,dt
 
@@ -220,7 +220,7 @@ def integrate_wear(
     scar_threshold: float = 0.01,
     engine: str = "numba",
 ) -> WearMap:
-    """Wear depth map of one impact (Eq. 15 integrated over the moving contact patch).
+    """Wear depth map of one impact (equation 15 integrated over the moving contact patch).
 
     ``pressure``: p(r, t) about the contact centre (:func:`wear.pressure_history`); ``speed``: the sliding
     speed (:func:`wear.sliding_speed`); ``law``: :class:`WearLaw`; ``density``: plate density (kg/m³) for

@@ -1,4 +1,4 @@
-r"""The local wear law (errata Eq. 15) and the units of its coefficient.
+r"""The local wear law (errata equation 15) and the units of its coefficient.
 
 .. math:: \frac{dw}{dt} = K\,p^{\alpha}\,v^{\beta}
 
@@ -61,7 +61,7 @@ def parse_units(text: str) -> dict[str, float]:
 
 @dataclass(frozen=True)
 class WearLaw:
-    r"""Wear law dw/dt = K p^α v^β (errata Eq. 15); ``w`` is a depth in m.
+    r"""Wear law dw/dt = K p^α v^β (errata equation 15); ``w`` is a depth in m.
 
     Parameters
     ----------

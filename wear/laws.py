@@ -174,7 +174,7 @@ def pressed_area(pressure: PressureHistory, alpha: float) -> np.ndarray:
 
 
 def local_volume(pressure: PressureHistory, speed: SlidingSpeed, law: WearLaw, area: np.ndarray | None = None) -> float:
-    r"""Worn volume (m³) of Eq. 15 over a whole impact, without the surface grid:
+    r"""Worn volume (m³) of equation 15 over a whole impact, without the surface grid:
     :math:`V = K \int v^\beta \int p^\alpha\,dA\,dt` (:func:`pressed_area`, given as ``area`` if already known for
     this α), the time integral by the trapezoidal rule (the sliding speed interpolated to the pressure's times). It is
     the volume of :func:`wear.integrate_wear`'s map without its spatial discretisation."""

@@ -1,4 +1,4 @@
-r"""Contact pressure p(r, t) and sliding speed v(t) along one impact: the inputs of the wear law (Eq. 15).
+r"""Contact pressure p(r, t) and sliding speed v(t) along one impact: the inputs of the wear law (equation 15).
 
 Every pressure source produces the same small representation, :class:`PressureHistory`: at each time
 t_i the pressure is axisymmetric about the contact centre ``contact_x[i]`` (m, along the impact
@@ -173,7 +173,7 @@ def _checked_impact_arrays(time, contact_x, contact_radius, normal_force):
 def hertz_pressure_history(
     time, contact_x, contact_radius, normal_force, *, limiting_pressure: float = math.inf, points: int = DEFAULT_POINTS
 ) -> PressureHistory:
-    """Force-conserving Hertz pressure (Eq. 16), optionally truncated at ``limiting_pressure`` (Pa).
+    """Force-conserving Hertz pressure (equation 16), optionally truncated at ``limiting_pressure`` (Pa).
 
     ``time`` (s), ``contact_x`` (m), ``contact_radius`` (m) and ``normal_force`` (N) are the impact's
     histories; ``points`` is the size of the table in s (see :class:`PressureHistory`). With a finite
@@ -200,7 +200,7 @@ def paper_pressure_history(
     loading_after_yield: str = "flat",
     points: int = DEFAULT_POINTS,
 ) -> PressureHistory:
-    r"""The paper's pressure recipe: Eq. 16 up to first yield, then Eq. 19 (Mesarovic & Johnson) on unloading.
+    r"""The paper's pressure recipe: equation 16 up to first yield, then equation 19 (Mesarovic & Johnson) on unloading.
 
     Recipe, sample by sample (k* = sample of maximum ``overlap``, F* = F(k*), a* = a(k*), p* = F*/(πa*²)):
 

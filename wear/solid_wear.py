@@ -1,4 +1,4 @@
-r"""Wear and dent of the 3-D plate: Eq. 15 integrated with the 3-D plate's own pressure and stick/slip fields, and
+r"""Wear and dent of the 3-D plate: equation 15 integrated with the 3-D plate's own pressure and stick/slip fields, and
 its residual surface on the wear grid (SI units: m, s, Pa).
 
 The 3-D plate (:func:`fem.indent_solid`, :func:`fem.couple_solid`) gives, at each of its steps k placed at impact

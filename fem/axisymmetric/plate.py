@@ -132,7 +132,7 @@ class Plate:
         return self._virgin
 
     def first_yield_overlap(self) -> float | None:
-        """Overlap δ_y (m) at which a virgin plate first yields under Hertz contact (errata Eq. 18 with the exact
+        """Overlap δ_y (m) at which a virgin plate first yields under Hertz contact (errata equation 18 with the exact
         C(ν)); None for a plate that never yields or is no longer virgin (its first yield is behind it)."""
         m = self.material
         if not self._virgin or m.yield_strength is None:

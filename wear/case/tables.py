@@ -147,7 +147,7 @@ class ImpactSpec(Table):
 
 @dataclass(frozen=True)
 class WearSpec(Table):
-    """The wear law (:mod:`wear.laws`): ``law`` by name; the local law (errata Eq. 15, dw/dt = K p^α v^β): ``K``
+    """The wear law (:mod:`wear.laws`): ``law`` by name; the local law (errata equation 15, dw/dt = K p^α v^β): ``K``
     (m^(1−β) s^(β−1) Pa^(−α)), ``alpha``, ``beta``, the ``pressure`` source along the impact, the sliding ``speed``
     model, ``points_across`` grid points across the largest contact diameter; Finnie's cutting: ``cutting_fraction``,
     ``force_ratio``, ``depth_ratio`` (and the plate's ``hardness``); Bitter's deformation wear:

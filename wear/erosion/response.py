@@ -42,7 +42,7 @@ class Footprint:
     """The worn depth (m, positive into the plate) of one impact on a grid ``x`` (along the tangential direction
     from the first-contact point) × ``y`` (across), m; ``length_scale`` L (m): its largest contact radius;
     ``cutting_volume_m3`` and ``deformation_volume_m3`` split the worn volume (m³) into the part that is not
-    Bitter's deformation wear (cutting, Eq. 15 or a correlation) and Bitter's; ``dent`` (m) optional.
+    Bitter's deformation wear (cutting, equation 15 or a correlation) and Bitter's; ``dent`` (m) optional.
     """
 
     x: np.ndarray

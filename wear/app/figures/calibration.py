@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
-from wear.app.figures.common import plt, save_figure
+from wear.app.figures.common import save_figure, subplots
 from wear.chain.calibrate import CalibrationResult
 
 __all__ = ["plot_calibration"]
@@ -39,7 +39,7 @@ def plot_calibration(result: CalibrationResult, path: str | os.PathLike) -> Path
     """Measured (markers) and predicted (lines) wear of ``result`` into ``path`` (PNG)."""
     d = result.data
     predicted = np.where(result.predicted > 0, result.predicted, np.nan)
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.2))
+    fig, (a1, a2) = subplots(1, 2, figsize=(11, 4.2))
     _panel(a1, d.angle, d.speed, d.measured, predicted, "impact angle from the normal (deg)", "m/s:")
     _panel(a2, d.speed, d.angle, d.measured, predicted, "impact speed (m/s)", "deg:")
     a2.set_xscale("log")

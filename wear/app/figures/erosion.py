@@ -14,7 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
-from wear.app.figures.common import plt, save_figure
+from wear.app.figures.common import save_figure, subplots
 
 __all__ = ["plot_time_series", "plot_surface", "plot_angles", "HEADROOM", "headroom_top"]
 
@@ -35,7 +35,7 @@ def plot_time_series(
 ) -> Path:
     """Mass loss (kg) and cumulative erosion rate (kg/kg; with ``interval_rate`` also the rate between samples)
     against exposure time (s) into ``path``."""
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
+    fig, (ax1, ax2) = subplots(1, 2, figsize=(10, 4))
     t = np.asarray(time)
     ax1.plot(t, np.asarray(mass_loss_kg), "-")
     ax1.set_xlabel("exposure time (s)")
@@ -62,7 +62,7 @@ def plot_time_series(
 
 def plot_surface(x, y, depth, path: str | os.PathLike, azimuth_deg: float = 0.0, title: str = "") -> Path:
     """Depth map (µm, into the plate) over the patch (x, y in mm) with an arrow along the stream azimuth."""
-    fig, ax = plt.subplots(figsize=(6, 5))
+    fig, ax = subplots(figsize=(6, 5))
     x, y = np.asarray(x), np.asarray(y)
     extent = (x[0] * 1e3, x[-1] * 1e3, y[0] * 1e3, y[-1] * 1e3)
     im = ax.imshow(np.asarray(depth) * 1e6, origin="lower", extent=extent, cmap="viridis", interpolation="nearest")
@@ -87,7 +87,7 @@ def plot_surface(x, y, depth, path: str | os.PathLike, azimuth_deg: float = 0.0,
 
 def plot_angles(angles_deg, erosion_rate, mass_loss_kg, path: str | os.PathLike, title: str = "") -> Path:
     """Erosion rate (kg/kg) and mass loss (kg) against the stream angle (deg from the plate normal)."""
-    fig, ax1 = plt.subplots(figsize=(6, 4))
+    fig, ax1 = subplots(figsize=(6, 4))
     a = np.asarray(angles_deg, dtype=float)
     ax1.plot(a, np.asarray(erosion_rate), "o-", color="C0")
     ax1.set_xlabel("stream angle from the plate normal (deg)")

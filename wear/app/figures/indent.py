@@ -1,5 +1,5 @@
-"""Figures of an FE indentation (``impactwear indent``): pressure profiles against Hertz (errata Eq. 16) and
-Mesarovic–Johnson (Eq. 19), the force–overlap loop, and the plastic zone. SI units on every axis (shown in
+"""Figures of an FE indentation (``impactwear indent``): pressure profiles against Hertz (errata equation 16) and
+Mesarovic–Johnson (equation 19), the force–overlap loop, and the plastic zone. SI units on every axis (shown in
 µm, N, MPa)."""
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from contact.theory import hertz_pressure, mesarovic_johnson_pressure
-from wear.app.figures.common import plt, save_figure
+from wear.app.figures.common import save_figure, subplots
 from wear.app.figures.field import quadrature_field_on_mesh
 
 __all__ = ["pressure_figure", "force_overlap_figure", "plastic_zone_axes", "plastic_zone_figure", "write_figures"]
@@ -29,10 +29,10 @@ def _pick_steps(res, count: int = 4) -> tuple[list[int], list[int]]:
 
 
 def pressure_figure(res):
-    """Pressure p(r) at chosen loading steps (FE vs Hertz Eq. 16 at the FE's F) and unloading steps (FE vs
-    Mesarovic–Johnson Eq. 19 from the FE's p*, a* at the maximum)."""
+    """Pressure p(r) at chosen loading steps (FE vs Hertz equation 16 at the FE's F) and unloading steps (FE vs
+    Mesarovic–Johnson equation 19 from the FE's p*, a* at the maximum)."""
     loading, unloading = _pick_steps(res)
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), sharey=True)
+    fig, axes = subplots(1, 2, figsize=(11, 4.2), sharey=True)
     r = res.surface_r
     e_star, radius = res.effective_modulus, res.radius
     for k in loading:
@@ -61,8 +61,8 @@ def pressure_figure(res):
 
 
 def force_overlap_figure(res):
-    """F–δ loading and unloading (FE) with the Hertz curve (errata Eq. 4) and the FE first yield."""
-    fig, ax = plt.subplots(figsize=(5.5, 4.2))
+    """F–δ loading and unloading (FE) with the Hertz curve (errata equation 4) and the FE first yield."""
+    fig, ax = subplots(figsize=(5.5, 4.2))
     d = np.r_[0.0, res.overlap]
     ax.plot(d * 1e6, np.r_[0.0, res.force], "o-", ms=2.5, label="FE")
     dd = np.linspace(0, res.overlap.max(), 200)
@@ -137,7 +137,7 @@ def plastic_zone_figure(res):
     """Equivalent plastic strain under the contact after the last step, on the FE mesh (r–z in µm)."""
     run = res.run
     disc = run.solver.disc
-    fig, ax = plt.subplots(figsize=(6.0, 4.8))
+    fig, ax = subplots(figsize=(6.0, 4.8))
     filled = plastic_zone_axes(
         ax, disc.mesh.p.T, disc.mesh.t.T, disc.qp_r, disc.qp_z, run.final.alpha, res.contact_radius.max()
     )

@@ -16,7 +16,7 @@ from matplotlib.colors import BoundaryNorm, ListedColormap
 
 from contact.theory import thornton_restitution
 from fem import REGIMES
-from wear.app.figures.common import plt, save_figure
+from wear.app.figures.common import save_figure, subplots
 
 __all__ = [
     "save_sourced",
@@ -45,7 +45,7 @@ def save_sourced(fig, path: str | os.PathLike, source: str) -> Path:
 def plot_peak_force(angles, speeds, model_force, hertz_force, path, source: str) -> Path:
     """Peak normal force (N) against impact angle (deg), one line per speed (m/s), with the Hertz closed form
     F_max(v cos θ) as dashed lines. ``model_force`` and ``hertz_force`` have shape (speeds, angles)."""
-    fig, ax = plt.subplots(figsize=(7, 4.6))
+    fig, ax = subplots(figsize=(7, 4.6))
     for k, v in enumerate(speeds):
         c = COLORS[k % len(COLORS)]
         ax.plot(angles, model_force[k], "o", ms=3.5, color=c, label=f"H-DD model, {v * 1e3:g} mm/s")
@@ -63,7 +63,7 @@ def plot_peak_force(angles, speeds, model_force, hertz_force, path, source: str)
 def plot_rebound_angles(angles, centre, contact_point, data_angles, data_centre, path, source: str, note="") -> Path:
     """Rebound angle (deg from the normal) of the centre and of the contact point against impact angle (deg),
     with the measured centre rebound angles."""
-    fig, ax = plt.subplots(figsize=(7, 4.6))
+    fig, ax = subplots(figsize=(7, 4.6))
     ax.plot(angles, centre, "-", color="C0", label="model: centre of mass")
     ax.plot(angles, contact_point, "-", color="C1", label="model: contact point")
     ax.plot(data_angles, data_centre, "s", color="C0", mfc="none", label="Kharaz et al. 2001: centre of mass")
@@ -80,7 +80,7 @@ def plot_rebound_angles(angles, centre, contact_point, data_angles, data_centre,
 
 def plot_spin(angles, spin, data_angles, data_spin, et, data_et_angles, data_et, path, source: str, note="") -> Path:
     """Spin after impact (rad/s) and tangential restitution against impact angle (deg), with measured points."""
-    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(9, 4.2))
+    fig, (ax, ax2) = subplots(1, 2, figsize=(9, 4.2))
     ax.plot(angles, spin, "-", color="C2", label="model")
     ax.plot(data_angles, data_spin, "s", color="C2", mfc="none", label="Kharaz et al. 2001")
     ax.set_xlabel("impact angle θ (deg)")
@@ -102,7 +102,7 @@ def plot_wear_mass(series: Sequence[dict], path, source: str) -> Path:
     """Worn mass (kg) against impact angle (deg), one panel per series (each dict: ``label``, ``angles``,
     ``mass``), the angle of maximum wear marked."""
     n = len(series)
-    fig, axes = plt.subplots(1, n, figsize=(4.6 * n, 4.2), squeeze=False)
+    fig, axes = subplots(1, n, figsize=(4.6 * n, 4.2), squeeze=False)
     for k, (ax, s) in enumerate(zip(axes[0], series, strict=True)):
         angles, mass = np.asarray(s["angles"]), np.asarray(s["mass"])
         c = COLORS[k % len(COLORS)]
@@ -127,7 +127,7 @@ def plot_wear_mass(series: Sequence[dict], path, source: str) -> Path:
 def plot_sliding_duration(angles, speeds, ratio, path, source: str, rigid_body=None) -> Path:
     """Sliding time / contact time against impact angle (deg), one line per speed (m/s); ``ratio`` has shape
     (speeds, angles). ``rigid_body``: optional (angle of the rigid-body onset of sliding throughout, label)."""
-    fig, ax = plt.subplots(figsize=(7, 4.6))
+    fig, ax = subplots(figsize=(7, 4.6))
     markers = ("o", "s", "^", "v", "D", "x")
     for k, v in enumerate(speeds):
         ax.plot(angles, ratio[k], markers[k % len(markers)] + "-", ms=3.5, lw=0.8, label=f"{v:g} m/s", alpha=0.8)
@@ -144,10 +144,10 @@ def plot_sliding_duration(angles, speeds, ratio, path, source: str, rigid_body=N
 
 
 def plot_yield_onset(rows: Sequence[dict], path, source: str) -> Path:
-    """FE first-yield force over F_c of Eq. 18 with the exact C(ν) (and with C = 1.6), one point per case.
+    """FE first-yield force over F_c of equation 18 with the exact C(ν) (and with C = 1.6), one point per case.
 
     Each row: ``label`` (case text), ``fe`` (N), ``exact`` (N, C(ν)), ``paper`` (N, C = 1.6)."""
-    fig, ax = plt.subplots(figsize=(8, 4.6))
+    fig, ax = subplots(figsize=(8, 4.6))
     x = np.arange(len(rows))
     fe = np.array([r["fe"] for r in rows])
     exact = np.array([r["exact"] for r in rows])
@@ -167,12 +167,12 @@ def plot_yield_onset(rows: Sequence[dict], path, source: str) -> Path:
 
 
 def plot_pressure_regimes(loading: Sequence[dict], unloading: Sequence[dict], path, source: str) -> Path:
-    """FE pressure profiles (left: loading at w = δ/δ_c, against Hertz Eq. 16 at the same force; right:
-    unloading from the deepest load, against Mesarovic-Johnson Eq. 19 from the FE's p*, a*).
+    """FE pressure profiles (left: loading at w = δ/δ_c, against Hertz equation 16 at the same force; right:
+    unloading from the deepest load, against Mesarovic-Johnson equation 19 from the FE's p*, a*).
 
     Each dict: ``label``, ``r`` (m), ``p`` (Pa), ``ref_r`` (m), ``ref_p`` (Pa); axes normalised by ``scale_r``
     (m) and ``scale_p`` (Pa) given in each dict."""
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4.4))
+    fig, (ax1, ax2) = subplots(1, 2, figsize=(10, 4.4))
     for k, s in enumerate(loading):
         c = COLORS[k % len(COLORS)]
         ax1.plot(s["r"] / s["scale_r"], s["p"] / s["scale_p"], "-", color=c, label=s["label"])
@@ -201,7 +201,7 @@ def plot_pressure_regimes(loading: Sequence[dict], unloading: Sequence[dict], pa
 def plot_regime_map(speeds, yields, regime, ratio, e_fe, e_thornton, path, source: str) -> Path:
     """Maps over impact speed (m/s, x) and plate yield strength (Pa, y): regime (index into :data:`REGIMES`),
     p_max/p_mean, and the coupled-FE normal restitution against Thornton 1997. Arrays have shape (yields, speeds)."""
-    fig, axes = plt.subplots(1, 3, figsize=(13, 4.3))
+    fig, axes = subplots(1, 3, figsize=(13, 4.3))
     sx, sy = np.asarray(speeds), np.asarray(yields) / 1e6
     cmap = ListedColormap(["#4c72b0", "#55a868", "#dd8452", "#c44e52"])
     im = axes[0].pcolormesh(sx, sy, regime, cmap=cmap, norm=BoundaryNorm(np.arange(-0.5, 4.5), 4), shading="nearest")
@@ -230,7 +230,7 @@ def plot_regime_map(speeds, yields, regime, ratio, e_fe, e_thornton, path, sourc
 
 def plot_restitution(ratio, e_fe, ratio_curve, e_thornton, path, source: str, note="") -> Path:
     """Normal restitution against V/V_y: coupled FE points against Thornton's (1997) closed form."""
-    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(10, 4.3), gridspec_kw={"width_ratios": [3, 2]})
+    fig, (ax, ax2) = subplots(1, 2, figsize=(10, 4.3), gridspec_kw={"width_ratios": [3, 2]})
     ax.semilogx(ratio_curve, e_thornton, "-", color="k", lw=1, label="Thornton 1997 (closed form)")
     ax.semilogx(ratio, e_fe, "o", color="C0", label="coupled FE (this toolkit)")
     ax.set_xlabel("impact speed / yield velocity $V/V_y$")
@@ -251,7 +251,7 @@ def plot_wear_laws(curves: list[dict], data_angle, data_rate, speeds, path, sour
     """Erosion ratio (kg/kg) against the angle from the surface at the calibration speed, and against the speed at
     30° from the surface, for each law (``curves``: label, angles deg from the surface, rate, speeds m/s,
     rate_vs_speed; ``reference``: drawn in black), with the data they were calibrated to (markers)."""
-    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(11, 5.6))
+    fig, (ax, ax2) = subplots(1, 2, figsize=(11, 5.6))
     styles = iter(("--", ":", "-."))
     for k, c in enumerate(curves):
         style, colour = (next(styles), "k") if c.get("reference") else ("-", COLORS[k % len(COLORS)])

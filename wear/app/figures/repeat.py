@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.ticker import MaxNLocator
 
-from wear.app.figures.common import plt, save_figure
+from wear.app.figures.common import save_figure, subplots
 
 __all__ = ["plot_repeat", "shakedown_note"]
 
@@ -38,7 +38,7 @@ def plot_repeat(
     """The four panels above from ``columns`` (``wear.chain.repeat.RepeatResult.columns()``) into ``path``."""
     n = np.asarray(columns["impact_last"], float)
     computed = np.asarray(columns["computed"], float) > 0
-    fig, axes = plt.subplots(2, 2, figsize=(11, 7.5), sharex=True)
+    fig, axes = subplots(2, 2, figsize=(11, 7.5), sharex=True)
     (ax_d, ax_v), (ax_e, ax_p) = axes
 
     def series(ax, key, scale, label, style="-"):

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from contact.theory import hertz_pressure, mesarovic_johnson_pressure, thornton_restitution
-from wear.app.figures.common import plt, save_figure
+from wear.app.figures.common import save_figure, subplots
 
 __all__ = [
     "force_overlap",
@@ -30,7 +30,7 @@ __all__ = [
 def force_overlap(result, path) -> Path:
     """Normal force and overlap against time, and force against overlap."""
     h = result.impact.history
-    fig, (ax1, ax3) = plt.subplots(1, 2, figsize=(10, 4))
+    fig, (ax1, ax3) = subplots(1, 2, figsize=(10, 4))
     ax1.plot(h.t * 1e6, h.normal_force, "C0", label="normal force")
     ax1.plot(h.t * 1e6, np.abs(h.tangential_force), "C0--", label="|tangential force|")
     ax1.set_xlabel("time (µs)")
@@ -53,8 +53,8 @@ def force_overlap(result, path) -> Path:
 
 
 def pressure_profiles(result, path, stages: int = 6) -> Path:
-    """p(r) at several times along the impact against Hertz (Eq. 16) and, after the maximum, against the
-    Mesarovic–Johnson unloading profile (Eq. 19) built from the pressure at the maximum (p*, a*)."""
+    """p(r) at several times along the impact against Hertz (equation 16) and, after the maximum, against the
+    Mesarovic–Johnson unloading profile (equation 19) built from the pressure at the maximum (p*, a*)."""
     ph = result.pressure
     force = ph.force()
     i_max = int(np.argmax(force))
@@ -67,7 +67,7 @@ def pressure_profiles(result, path, stages: int = 6) -> Path:
             ]
         )
     )
-    fig, ax = plt.subplots(figsize=(7, 4.5))
+    fig, ax = subplots(figsize=(7, 4.5))
     h = result.impact.history
     # the contact radius of the impact at each pressure sample (the table's extent is the first node beyond it)
     radius = np.interp(ph.time, h.t, h.contact_radius)
@@ -97,7 +97,7 @@ def pressure_profiles(result, path, stages: int = 6) -> Path:
 def wear_map(result, path) -> Path:
     """Wear depth map over the plate (x along the impact, y across)."""
     wm = result.wear
-    fig, ax = plt.subplots(figsize=(7, 5))
+    fig, ax = subplots(figsize=(7, 5))
     mesh = ax.pcolormesh(wm.x * 1e6, wm.y * 1e6, wm.depth * 1e9, shading="auto", cmap="viridis")
     fig.colorbar(mesh, ax=ax, label="wear depth (nm)")
     ax.set_aspect("equal")
@@ -124,7 +124,7 @@ def cross_sections(result, path) -> Path:
     wear = s.wear_depth
     j0 = int(np.argmin(np.abs(s.y)))
     i0 = int(np.argmin(np.abs(s.x - s.dent_centre[0])))
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    fig, axes = subplots(1, 2, figsize=(10, 4))
     for ax, coord, d, w, label in (
         (axes[0], s.x, dent[:, j0], wear[:, j0], "x along the impact (µm), y = 0"),
         (axes[1], s.y, dent[i0, :], wear[i0, :], "y across (µm), x = dent centre"),
@@ -154,7 +154,7 @@ def restitution_comparison(speed_ratio, coupled_restitution, path, thornton=None
     e = np.asarray(coupled_restitution, float)
     fine = np.geomspace(max(x.min(), 1.0), max(x.max(), 1.01), 200)
     ref = thornton_restitution(x) if thornton is None else np.asarray(thornton, float)
-    fig, (ax, axd) = plt.subplots(2, 1, figsize=(6.5, 6), sharex=True, gridspec_kw={"height_ratios": [3, 1]})
+    fig, (ax, axd) = subplots(2, 1, figsize=(6.5, 6), sharex=True, gridspec_kw={"height_ratios": [3, 1]})
     ax.semilogx(fine, thornton_restitution(fine), "k-", label="Thornton 1997 (closed form)")
     ax.semilogx(x, e, "o", color="C3", label="coupled FE impact (two-way)")
     ax.set_ylabel("normal restitution e_n")
@@ -172,7 +172,7 @@ def plastic_zone(result, path) -> Path:
     along the impact against depth, after the impact."""
     x, z, eps, a = result.plate.plastic_section()
     near = (np.abs(x - result.surface.dent_centre[0]) < 3.0 * a) & (z > -3.0 * a)
-    fig, ax = plt.subplots(figsize=(8, 4))
+    fig, ax = subplots(figsize=(8, 4))
     art = ax.tricontourf(x[near] * 1e6, z[near] * 1e6, eps[near], levels=12, cmap="magma_r")
     fig.colorbar(art, ax=ax, label="equivalent plastic strain")
     ax.set_aspect("equal")

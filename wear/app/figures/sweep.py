@@ -12,7 +12,7 @@ import math
 import os
 from pathlib import Path
 
-from wear.app.figures.common import plt, save_figure
+from wear.app.figures.common import save_figure, subplots
 
 __all__ = ["plot_sweep", "panel_results", "scaled_unit", "MAX_PANELS", "ROUND_OFF"]
 
@@ -137,7 +137,7 @@ def plot_sweep(
 
     ncols = min(4, len(panels))
     nrows = math.ceil(len(panels) / ncols)
-    fig, grid = plt.subplots(
+    fig, grid = subplots(
         nrows, ncols, figsize=(3.6 * ncols + (1.2 if line_key else 0), 2.9 * nrows), squeeze=False, layout="constrained"
     )
     x_scale, x_unit = (1.0, units.get(x_key, "")) if x_labels is not None else scaled_unit(x_pos, units.get(x_key, ""))

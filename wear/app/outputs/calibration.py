@@ -12,7 +12,7 @@ import numpy as np
 
 from wear.app.figures.calibration import plot_calibration
 from wear.app.outputs.folder import output_folder
-from wear.app.outputs.writer import versions, write_json, write_rows, write_text
+from wear.app.outputs.writer import versions, write_rows, write_summary, write_text
 from wear.case import TABLES, dump_case
 from wear.chain.calibrate import CalibrationResult
 
@@ -27,7 +27,7 @@ def write_calibration(result: CalibrationResult, out: str | os.PathLike) -> dict
     d = result.data
     summary = {**result.summary(), "case": result.case.to_dict(CASE_TABLES), "versions": versions()}
     with output_folder(out, "calibrate") as tmp:
-        write_json(tmp / "calibration.json", summary)
+        summary = write_summary(tmp / "calibration.json", summary)
         fitted = d.fitted & ~np.isin(np.arange(d.angle.size), result.left_out)
         header = [
             "row",

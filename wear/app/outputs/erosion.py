@@ -24,7 +24,7 @@ import numpy as np
 
 from wear.app.figures import erosion as fig
 from wear.app.outputs.folder import output_folder
-from wear.app.outputs.writer import write_json, write_mesh, write_pvd, write_rows
+from wear.app.outputs.writer import write_mesh, write_pvd, write_rows, write_summary
 from wear.erosion import ErosionRun
 
 __all__ = ["write_erosion", "write_erosion_angles", "surface_grid_mesh", "EROSION_COLUMNS", "TABLE_COLUMNS"]
@@ -109,9 +109,7 @@ def _write_files(run: ErosionRun, out: Path, series: bool, notes: Sequence[str] 
             r.time, r.mass_loss_kg, r.erosion_rate, out / "erosion.png", title, interval_rate=r.interval_erosion_rate
         )
         fig.plot_surface(r.x, r.y, r.surface, out / "surface.png", r.stream.azimuth, title)
-    summary = {**run.summary(), "notes": list(dict.fromkeys(notes))}
-    write_json(out / "summary.json", summary)
-    return summary
+    return write_summary(out / "summary.json", {**run.summary(), "notes": list(dict.fromkeys(notes))})
 
 
 def write_erosion_angles(runs: list[ErosionRun], out: str | os.PathLike) -> list[tuple[float, float, float]]:

@@ -10,7 +10,7 @@ from pathlib import Path
 
 from wear.app.figures.indent import write_figures
 from wear.app.outputs.folder import output_folder
-from wear.app.outputs.writer import write_json, write_mesh, write_rows
+from wear.app.outputs.writer import write_mesh, write_rows, write_summary
 from wear.chain.indent import IndentRun
 
 __all__ = ["write_indent"]
@@ -63,6 +63,4 @@ def _write_files(run: IndentRun, out: Path, figures: bool, notes: Sequence[str])
     write_mesh(out / "plate.vtu", res.to_meshio())
     if figures:
         write_figures(res, out)
-    summary = {**run.summary(), "notes": list(dict.fromkeys(notes))}
-    write_json(out / "summary.json", summary)
-    return summary
+    return write_summary(out / "summary.json", {**run.summary(), "notes": list(dict.fromkeys(notes))})

@@ -18,7 +18,7 @@ from pathlib import Path
 import fem
 from fem.solid.plate import SolidPlate
 from wear.app.figures.repeat import plot_repeat
-from wear.app.outputs.writer import versions, write_csv, write_json, write_mesh, write_npz, write_pvd
+from wear.app.outputs.writer import versions, write_csv, write_mesh, write_npz, write_pvd, write_summary
 from wear.case import JOBS
 from wear.chain.records import RepeatResult
 
@@ -67,7 +67,7 @@ class RepeatWriter:
         }
         summary["halfspace_check"] = result.halfspace_check
         summary["notes"] = list(dict.fromkeys([*notes, *result.notes]))
-        write_json(out / "summary.json", summary)
+        summary = write_summary(out / "summary.json", summary)
         if case.output.figures:
             plot_repeat(
                 columns,

@@ -20,7 +20,7 @@ from contact import History
 from wear.app.figures.run import write_run_figures
 from wear.app.outputs.folder import output_folder
 from wear.app.outputs.render import render_surface, rendering_available
-from wear.app.outputs.writer import versions, write_csv, write_json, write_mesh, write_npz
+from wear.app.outputs.writer import versions, write_csv, write_mesh, write_npz, write_summary
 from wear.chain.single import RunResult
 from wear.surface import deform_plate_mesh, plate_block_mesh, surface_mesh
 
@@ -130,5 +130,5 @@ def write_run(
         summary["versions"] = versions()
         summary["notes"] = list(dict.fromkeys(notes))
         summary["files"] = [*sorted(p.name for p in Path(tmp).iterdir()), "summary.json"]
-        write_json(tmp / "summary.json", summary)
+        summary = write_summary(tmp / "summary.json", summary)
     return summary

@@ -27,6 +27,7 @@ import meshio
 import numpy as np
 
 __all__ = [
+    "SCHEMA_VERSION",
     "atomic_write",
     "is_temporary",
     "permissions",
@@ -39,6 +40,7 @@ __all__ = [
     "write_npz",
     "write_pvd",
     "write_rows",
+    "write_summary",
     "write_text",
 ]
 
@@ -126,6 +128,20 @@ def write_text(path: str | os.PathLike, text: str, fsync: bool = False) -> Path:
 def write_json(path: str | os.PathLike, data: Any, fsync: bool = False) -> Path:
     """Write ``data`` as indented JSON (non-finite floats as null)."""
     return write_text(path, json.dumps(to_jsonable(data), indent=2, allow_nan=False) + "\n", fsync=fsync)
+
+
+#: The version of the layout of the summary every command writes (``summary.json``; ``calibration.json`` of
+#: ``impactwear calibrate``), its first field ``schema_version``: raised when a field is renamed or removed or changes
+#: its meaning or units; a new field keeps it.
+SCHEMA_VERSION = 1
+
+
+def write_summary(path: str | os.PathLike, summary: Mapping[str, Any]) -> dict:
+    """Write a command's ``summary`` as JSON with :data:`SCHEMA_VERSION` as its first field; returns what was
+    written (what ``--json`` prints)."""
+    record = {"schema_version": SCHEMA_VERSION, **summary}
+    write_json(path, record)
+    return record
 
 
 def write_rows(path: str | os.PathLike, header: list[str], rows: Iterable[Iterable[Any]]) -> Path:

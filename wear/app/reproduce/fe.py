@@ -64,7 +64,7 @@ YIELD_CASES = (
 
 
 def yield_onset_rows(quick: bool) -> list[dict]:
-    """FE first-yield force against F_c (exact C(ν)) and Eq. 18 with C = 1.6, for the cases of YIELD_CASES."""
+    """FE first-yield force against F_c (exact C(ν)) and equation 18 with C = 1.6, for the cases of YIELD_CASES."""
     cases = YIELD_CASES[::6] if quick else YIELD_CASES
     rows = []
     for label, radius, Y, nu in cases:
@@ -153,7 +153,7 @@ def _sorted(res):
 
 def pressure_regimes(quick: bool) -> dict:
     """Two FE runs on the steel plate :data:`STEEL`: a load to w = 100 (profiles at :data:`REGIME_W` against Hertz at
-    the same force) and a load to w = 50 with unloading (profiles at a/a* = 0.75, 0.5 against Eq. 19)."""
+    the same force) and a load to w = 50 with unloading (profiles at a/a* = 0.75, 0.5 against equation 19)."""
     mat = plate(STEEL["E"], STEEL["nu"], STEEL["Y"])
     radius = STEEL["radius"]
     fy, e_star = _critical(radius, mat)

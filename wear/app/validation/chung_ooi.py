@@ -37,7 +37,7 @@ def chung_ooi_test2(quick: bool) -> list[Check]:
 @register("contact")
 def chung_ooi_test3(quick: bool) -> list[Check]:
     """Chung & Ooi (2011) test 3: the simulated normal restitution equals the requested e (0.5%), and with the
-    Tsuji-form dashpot (errata Eq. 6) it does not depend on the speed."""
+    Tsuji-form dashpot (errata equation 6) it does not depend on the speed."""
     out = []
     for material in (AL_OXIDE, Material(E=100e9, nu=0.25, density=7000.0, name="cast iron")):
         es = np.array([0.2, 0.4, 0.6, 0.8])

@@ -24,7 +24,8 @@ from wear.app.validation.references import kharaz_data, kharaz_rms
 
 @register("contact")
 def thornton_1997(quick: bool) -> list[Check]:
-    """Thornton (1997) J. Appl. Mech. 64:383: restitution of elastic-perfectly plastic impacts (engine, 0.2%)."""
+    """Restitution of elastic-perfectly plastic impacts against Thornton (1997), Journal of Applied Mechanics 64:383
+    (engine, 0.2%)."""
     ball = Material(E=70e9, nu=0.3, density=2700.0, yield_strength=100e6)
     vy = yield_velocity(5e-3, ball, RIGID)
     ratios = np.array([1.5, 2.0, 5.0, 10.0, 100.0])
@@ -77,7 +78,7 @@ def kharaz_2001(quick: bool) -> list[Check]:
 
 @register("contact")
 def integration_and_energy(quick: bool) -> list[Check]:
-    """Velocity Verlet converges at order 2 (errata Eqs. 12-14 note) and the reported works close the energy
+    """Velocity Verlet converges at order 2 (errata equations 12-14 note) and the reported works close the energy
     balance E_in − E_out = W_normal + W_friction (conservation of energy)."""
     ball = Material(E=210e9, nu=0.3, density=7800.0)
     e_star = effective_modulus(ball, RIGID)
@@ -120,8 +121,8 @@ def integration_and_energy(quick: bool) -> list[Check]:
 @register("contact")
 def closed_forms(quick: bool) -> list[Check]:
     """Closed forms against published numbers and against quadrature: MOOSE Hertz benchmark, exact first-yield
-    coefficient C(0.3) = 1.6128 at z = 0.481a (Johnson 1985 §6.2; errata Eq. 18), Green's (2005) fit, and the
-    force carried by the Eq. 16 and Eq. 19 profiles (scipy quadrature)."""
+    coefficient C(0.3) = 1.6128 at z = 0.481a (Johnson 1985 §6.2; errata equation 18), Green's (2005) fit, and the
+    force carried by the equation 16 and equation 19 profiles (scipy quadrature)."""
     out = [
         relative(
             "contact",
@@ -248,7 +249,7 @@ def thornton_table(
 @register("contact")
 def tabulated_law(quick: bool) -> list[Check]:
     """The tabulated normal law (the FE → impact path of the two-way coupling) with tables written from closed
-    forms: a Hertz table reproduces the Hertz impact closed form (errata Eqs. 10-11, 0.2%); a table of
+    forms: a Hertz table reproduces the Hertz impact closed form (errata equations 10-11, 0.2%); a table of
     Thornton's curves reproduces Thornton's restitution (0.5%: interpolation between unloading curves)."""
 
     steel = Material(E=210e9, nu=0.3, density=7800.0)

@@ -153,7 +153,7 @@ def fem_elastic_plastic(quick: bool) -> list[Check]:
     (their case is a deformable sphere on a rigid flat: the same while elastic, close in early plasticity); the
     plastic zone reaches the surface between w = 4 and 10; elastic unloading stiffness
     dF/dδ = 2E*a at the start of unloading within 3%; after w = 50, the unloading pressure at
-    a/a* = 0.75 and 0.5 within 15% RMS of p* of Mesarovic & Johnson (Eq. 19) from the FE's own a*, p*."""
+    a/a* = 0.75 and 0.5 within 15% RMS of p* of Mesarovic & Johnson (equation 19) from the FE's own a*, p*."""
     fc = _critical()
     dc = fc.overlap
     pc, ac = fc.force, math.pi * R * dc

@@ -200,7 +200,7 @@ def calibration_round_trip(quick: bool) -> list[Check]:
 
 @register("wear")
 def laws_against_measured_trends(quick: bool) -> list[Check]:
-    """Calibrated on Oka et al.'s (2005) carbon-steel curve at two speeds (30, 60 m/s), the combined law (Eq. 15 +
+    """Calibrated on Oka et al.'s (2005) carbon-steel curve at two speeds (30, 60 m/s), the combined law (equation 15 +
     Bitter's deformation wear; K, β, ε free) falls inside the measured ranges of ductile metals: velocity exponent
     2.3–2.9, maximum 15–35° from the surface, normal incidence / maximum 0.25–0.7; and DNV's exponent fitted to
     Oka's curve is Oka's k₂ = 2.3 H_v^0.038."""

@@ -1,4 +1,4 @@
-"""Validation checks of ``wear`` (Eq. 15 integrated over the moving contact patch), for ``impactwear validate``.
+"""Validation checks of ``wear`` (equation 15 integrated over the moving contact patch), for ``impactwear validate``.
 
 References: closed forms evaluated here (the steady Hertz track; the impulse identity V = K m V_n (1 + e) from
 conservation of momentum; Archard's V = K W_f/μ), an independent quadrature of the normal Hertz impact's depth
@@ -170,7 +170,7 @@ def hertz_impact_profile(quick: bool) -> list[Check]:
 @register("wear")
 def sliding_and_additivity(quick: bool) -> list[Check]:
     """A normal impact with β > 0 and the gross-sliding speed wears nothing (the contact point never slides);
-    without geometry update Eq. 15 is additive (5 impacts = 5 × one); α = 1, β = 1 in gross sliding gives
+    without geometry update equation 15 is additive (5 impacts = 5 × one); α = 1, β = 1 in gross sliding gives
     Archard's V = K W_f/μ with W_f the friction work of the impact engine (0.5%)."""
     law = WearLaw(1e-12, 1.0, 0.3)
     normal = _impact(angle=0.0)
@@ -220,7 +220,7 @@ def sliding_and_additivity(quick: bool) -> list[Check]:
 
 @register("wear")
 def fe_table_source(quick: bool) -> list[Check]:
-    """The ``"fe"`` pressure source fed with a nodal table of the Hertz profile (Eq. 16 sampled on 80 graded
+    """The ``"fe"`` pressure source fed with a nodal table of the Hertz profile (equation 16 sampled on 80 graded
     surface nodes at 60 steps, as an FE result would be) gives the wear of the ``"hertz"`` source (1%)."""
     imp = _impact(speed=3.9, angle=40.0)
     h = imp.history
@@ -287,7 +287,7 @@ def erosion_flux_balance(quick: bool) -> list[Check]:
 @register("wear")
 def coupling(quick: bool) -> list[Check]:
     """Two-way impact-FE coupling (wear.run, fem.couple): on an elastic plate the
-    coupled normal impact has the Hertz closed-form max force and contact time (errata Eqs. 10-11, 1%); on a
+    coupled normal impact has the Hertz closed-form max force and contact time (errata equations 10-11, 1%); on a
     plastic plate its normal restitution is within 5% of Thornton (1997) for V/V_y ≤ 2 (both near-Hertz there)."""
 
     fem_options = dict(mesh_scale=4.0, load_steps=8, unload_steps=4) if quick else {}

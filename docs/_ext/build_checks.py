@@ -1,0 +1,107 @@
+"""Checks of the built HTML, run at the end of every docs build; each finding is a warning (an error with ``-W``).
+
+- **Offline maths**: no page loads MathJax (or any script) from a network address, and the MathJax the pages load
+  (``sphinx-mathjax-offline``'s copy, under ``_static/``) is in the build. A page opened without a network then
+  renders every equation.
+- **Whole API summaries**: autosummary takes the first sentence of a docstring as its one-line summary and ends a
+  sentence at any period followed by a space, so ``errata Eq. 6`` in a first sentence cut the summary to
+  ``errata Eq.``. A summary of the API tables that ends in such an abbreviation is reported (write "equation 6" in
+  a docstring's first sentence).
+- **No runaway italics**: in the Markdown pages, an emphasis opened inside a word (``8G*a`` reads ``*`` as an
+  opening delimiter, which italicises everything up to the next ``*``), or one longer than a sentence, is reported
+  (write ``8G\\*a``).
+"""
+
+from __future__ import annotations
+
+import html
+import re
+from pathlib import Path
+
+from markdown_it import MarkdownIt
+from mdit_py_plugins.dollarmath import dollarmath_plugin
+from sphinx.util import logging
+
+logger = logging.getLogger(__name__)
+
+#: A script or stylesheet loaded from a network address (src/href of script and link tags).
+_REMOTE_ASSET = re.compile(r"<(?:script|link)\b[^>]*\b(?:src|href)=[\"'](?:https?:)?//[^\"']+", re.IGNORECASE)
+#: A MathJax or CDN address anywhere in a page, e.g. in an inline loader script.
+_REMOTE_MATH = re.compile(r"(?:https?:)?//[^\s\"'<>]*(?:mathjax|katex|cdn\.jsdelivr|cdnjs|unpkg)", re.IGNORECASE)
+#: The summary cell of an autosummary table row (the second cell).
+_SUMMARY_CELL = re.compile(r"<tr class=\"row-(?:odd|even)\"><td>.*?</td>\s*<td><p>(.*?)</p></td>", re.DOTALL)
+#: Abbreviations autosummary takes for a sentence end (its own list: et al., e.g., i.e., vs.).
+_ABBREVIATION = re.compile(r"\b(?:Eqs?|Figs?|Refs?|Secs?|Tabs?|Nos?|Vol|Proc|cf|approx|resp|incl|ca)\.$")
+
+
+def _pages(outdir: Path) -> list[Path]:
+    return sorted(outdir.rglob("*.html"))
+
+
+def _check_offline_math(app, pages: list[Path]) -> None:
+    outdir = Path(app.outdir)
+    local = outdir / "_static" / app.config.mathjax_path
+    if app.config.mathjax_path.startswith(("http:", "https:", "//")) or not local.is_file():
+        logger.warning(f"MathJax is not served from the build: mathjax_path = {app.config.mathjax_path!r}")
+    for page in pages:
+        text = page.read_text(encoding="utf-8")
+        found = _REMOTE_ASSET.findall(text) + _REMOTE_MATH.findall(text)
+        if found:
+            logger.warning(f"{page.relative_to(outdir)} loads from the network: {found[0]}")
+
+
+def _check_api_summaries(app, pages: list[Path]) -> None:
+    outdir = Path(app.outdir)
+    for page in pages:
+        for cell in _SUMMARY_CELL.findall(page.read_text(encoding="utf-8")):
+            summary = html.unescape(re.sub(r"<[^>]+>", "", cell)).strip()
+            if _ABBREVIATION.search(summary):
+                logger.warning(f"{page.relative_to(outdir)}: API summary cut at an abbreviation: {summary!r}")
+
+
+#: The longest emphasis (characters) a page means: a title in italics; longer ones ran on past a stray delimiter.
+_LONGEST_EMPHASIS = 100
+
+
+def _emphasis_problems(text: str) -> list[str]:
+    """The emphases of a Markdown ``text`` that a stray ``*`` or ``_`` opened: inside a word, or running on."""
+    parser = MarkdownIt("commonmark").enable("table").use(dollarmath_plugin)  # $...$ as MyST reads it
+    problems = []
+    for block in parser.parse(text):
+        children = block.children or []
+        for k, token in enumerate(children):
+            if token.type not in ("em_open", "strong_open"):
+                continue
+            before = children[k - 1] if k else None
+            close = token.type.replace("_open", "_close")
+            end = next((j for j in range(k + 1, len(children)) if children[j].type == close), len(children))
+            inside = "".join(c.content for c in children[k + 1 : end])
+            line = (block.map[0] + 1) if block.map else 0
+            if before is not None and before.type == "text" and before.content[-1:].isalnum():
+                problems.append(f"line {line}: emphasis opened inside a word: {before.content[-10:]}{token.markup}")
+            elif len(inside) > _LONGEST_EMPHASIS:
+                problems.append(f"line {line}: emphasis of {len(inside)} characters: {inside[:40]!r}…")
+    return problems
+
+
+def _check_emphasis(app) -> None:
+    srcdir = Path(app.srcdir)
+    for page in sorted(srcdir.glob("*.md")):
+        for problem in _emphasis_problems(page.read_text(encoding="utf-8")):
+            logger.warning(f"{page.relative_to(srcdir)}, {problem}")
+
+
+def check_build(app, exception: Exception | None) -> None:
+    """Run the checks on a finished HTML build."""
+    if exception is not None or app.builder.format != "html":
+        return
+    pages = _pages(Path(app.outdir))
+    _check_offline_math(app, pages)
+    _check_api_summaries(app, pages)
+    _check_emphasis(app)
+
+
+def setup(app) -> dict:
+    # after sphinx-mathjax-offline has copied MathJax into the build (its handler has the default priority, 500)
+    app.connect("build-finished", check_build, priority=900)
+    return {"parallel_read_safe": True, "parallel_write_safe": True}
