@@ -156,6 +156,8 @@ def _start(case: Case, model: ForwardModel, rows: np.ndarray, free: tuple[str, .
         value = base[name]
         if value is None and name == "oka_k2":
             value = oka_exponents(flow_pressure_of(base, case.plate.material()))[2]
+        if value is None and name not in _SCALE_POWER:
+            raise ValueError(f"wear.{name}=None: give a starting value for the free constant {name}")
         # a scale without a value (Bitter's ε) starts anywhere positive: it is rescaled by the data just below
         start[name] = 1.0 if value is None else float(value)
     scales = [name for name in free if name in _SCALE_POWER]
@@ -169,7 +171,8 @@ def _start(case: Case, model: ForwardModel, rows: np.ndarray, free: tuple[str, .
         parts.append(model.predict(doubled)[rows] - at)
     parts_m = np.array(parts).T
     rest = at - parts_m.sum(axis=1)
-    useful = parts_m.sum(axis=1) > 1e-12 * max(float(parts_m.sum(axis=1).max(initial=0.0)), 1e-300)
+    total = parts_m.sum(axis=1)
+    useful = total > 1e-12 * total.max(initial=0.0)
     if not useful.any():
         return start
     scale, _ = nnls(parts_m[useful] / measured[useful, None], 1.0 - rest[useful] / measured[useful])

@@ -3,8 +3,10 @@
 
 One row per measurement — ``angle_deg`` (from the normal), ``speed_m_s``, one measured quantity
 (:data:`QUANTITIES`: the erosion ratio kg/kg, the mass or the volume worn per impact), and optionally case keys per
-row as extra columns named as in the schema (``ball.radius``, ``impact.friction``, ``plate.hardness``, ...). A row
-whose measured value is empty is predicted, not fitted.
+row as extra columns named as in the schema (``ball.radius``, ``impact.friction``, ``plate.hardness``, ...; those a
+calibration would not read are refused by :func:`wear.chain.calibrate.check_data_keys`). A row whose measured value
+is empty is predicted, not fitted. The file is UTF-8 text (a byte-order mark, as Excel writes, is read); each column
+is named once.
 """
 
 from __future__ import annotations

@@ -189,7 +189,7 @@ def log_fit(
 
 
 def _on_bound(x: float, low: float, high: float) -> str | None:
-    """ "low"/"high" where the coordinate ``x`` is on (within 1e-6 of) that bound, else None."""
+    """The bound ("low" or "high") the coordinate ``x`` is on (within 1e-6), else None."""
     for side, bound in (("low", low), ("high", high)):
         if math.isfinite(bound) and abs(x - bound) <= 1e-6 * (1.0 + abs(bound)):
             return side
