@@ -220,8 +220,10 @@ def simulate_impacts(
     if isinstance(history_every, bool) or not isinstance(history_every, (int, np.integer)) or history_every < 1:
         raise ValueError(f"history_every={history_every!r} is out of range: must be an integer >= 1 (steps)")
     try:
+        # copies: a broadcast view (one row broadcast against a scalar) is flagged "warn on write", which numba
+        # reads as a FutureWarning
         speed, angle, friction = (
-            np.ascontiguousarray(np.ravel(a)) for a in np.broadcast_arrays(speed, angle, friction)
+            np.array(np.ravel(a), dtype=float) for a in np.broadcast_arrays(speed, angle, friction)
         )
     except ValueError:
         raise ValueError(

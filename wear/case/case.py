@@ -51,6 +51,7 @@ class Case:
         for f in fields(self):
             if not isinstance(getattr(self, f.name), TABLES[f.name]):
                 raise ValueError(f"[{f.name}]={getattr(self, f.name)!r} is not a {TABLES[f.name].__name__}")
+        self.wear.check_deformation_factor(self.calibration.fits("deformation_factor"))
         self.check_time_step()
 
     def check_time_step(self, histories: bool = False) -> None:

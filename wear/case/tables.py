@@ -199,7 +199,11 @@ class WearSpec(Table):
 
     def check(self) -> None:
         self.wear_law()
-        if self.law in ("deformation", "combined") and self.deformation_factor is None:
+
+    def check_deformation_factor(self, fitted: bool) -> None:
+        """A one-line ``ValueError`` if the law needs Bitter's ε and the case gives none, unless a calibration
+        ``fitted`` it (it then starts from the data)."""
+        if self.law in ("deformation", "combined") and self.deformation_factor is None and not fitted:
             raise ValueError(
                 f"wear.deformation_factor=None: wear.law={self.law!r} needs Bitter's deformation wear "
                 "factor epsilon (J/m^3)"
@@ -390,6 +394,12 @@ class CalibrationSpec(Table):
     def free_constants(self) -> tuple[str, ...]:
         """The free constants' names."""
         return tuple(n.strip() for n in self.free.split(",") if n.strip())
+
+    def fits(self, name: str) -> bool:
+        """Whether this calibration (a ``data`` file given) fits the constant ``name`` of a law that has it: named
+        in ``free``, or ``free`` empty and ``name`` a law's scale (Bitter's ε is the deformation laws')."""
+        free = self.free_constants()
+        return bool(self.data) and (name in free or (not free and name == "deformation_factor"))
 
 
 #: The case tables, in order: TOML name → table class.

@@ -9,15 +9,17 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.optimize import nnls
 
 from wear.case import TABLES, Case, check_job_case
+from wear.case.check import fem_keys_read
 from wear.chain.calibration_data import CalibrationData
 from wear.chain.fit import Constant, LogFit, log_fit
-from wear.chain.forward_model import ForwardModel
+from wear.chain.forward_model import ForwardModel, fe_coupled
 from wear.chain.plate import wear_constants
 from wear.laws import flow_pressure_of, oka_exponents
 
-__all__ = ["CalibrationResult", "calibrate", "law_constants"]
+__all__ = ["CalibrationResult", "calibrate", "check_data_keys", "law_constants"]
 
 #: Constants of each law that a calibration may fit.
 _CONSTANTS = {
@@ -37,6 +39,8 @@ _SCALE = {
 }
 #: Constants fitted in log coordinates (positive scales); the others (exponents) as they are.
 _LOG = {"K", "cutting_fraction", "force_ratio", "depth_ratio", "deformation_factor", "oka_e90", "dnv_K"}
+#: How each scale enters its law: the worn volume of its part is proportional to scale ** power.
+_SCALE_POWER = {"K": 1.0, "cutting_fraction": 1.0, "deformation_factor": -1.0, "oka_e90": 1.0, "dnv_K": 1.0}
 
 
 def law_constants(case: Case) -> tuple[tuple[str, ...], tuple[str, ...]]:
@@ -82,6 +86,7 @@ class CalibrationResult:
                 "start": self.start[name],
                 "interval_95": None if interval is None else list(interval),
                 "determined": f.determined[k],
+                "on_bound": f.on_bound[k],
                 "units": TABLES["wear"].keys()[name].units,
             }
         return {
@@ -108,9 +113,76 @@ class CalibrationResult:
         }
 
 
+def check_data_keys(case: Case, data: CalibrationData, free: tuple[str, ...]) -> None:
+    """A one-line ``ValueError`` naming a per-row case-key column of ``data`` that a calibration of ``case`` fitting
+    ``free`` would not read: a table other than ``[ball]``, ``[plate]``, ``[impact]``, ``[wear]`` and (with the FE
+    plate coupled) ``[fem]``; ``impact.speed`` or ``impact.angle`` (a row's ``speed_m_s`` and ``angle_deg``); a wear
+    key the law does not read, or a free constant (one value for all rows)."""
+    law_keys, _ = law_constants(case)
+    for dotted in data.keys:
+        table, _, name = dotted.partition(".")
+        why = ""
+        if table == "impact" and name in ("speed", "angle"):
+            why = f"a row's {name} is its {'speed_m_s' if name == 'speed' else 'angle_deg'} column"
+        elif table == "wear" and name in free:
+            why = f"{name} is a free constant: the fit gives it one value for all rows"
+        elif table == "wear" and name not in law_keys:
+            why = f"wear.law={case.wear.law!r} does not read it (it reads {', '.join(law_keys)})"
+        elif table == "fem" and not fe_coupled(case):
+            why = "this calibration computes no FE plate (fem.coupling='two-way' and a law that uses the FE do)"
+        elif table == "fem" and name not in fem_keys_read(case, "calibrate")[0]:
+            why = fem_keys_read(case, "calibrate")[1].format(job="calibrate")
+        elif table not in ("ball", "plate", "impact", "wear", "fem"):
+            why = f"impactwear calibrate does not read [{table}] per row"
+        if why:
+            raise ValueError(f"column {dotted!r} of data={data.source!r} is a case key calibrate does not read: {why}")
+
+
 def _constant(name: str, start: float) -> Constant:
     spec = TABLES["wear"].keys()[name]
     return Constant(name, start, name in _LOG, spec.low, spec.high)
+
+
+def _start(case: Case, model: ForwardModel, rows: np.ndarray, free: tuple[str, ...]) -> dict[str, float]:
+    r"""The start of the fit: the case's values of the free exponents (Oka's k2 from the hardness where not given)
+    and free scales from the data. The prediction is linear in :math:`u_j = s_j^{q_j}` of each free scale
+    :math:`s_j` (:data:`_SCALE_POWER`): :math:`y_i = y^0_i + \sum_j c_j t_{ij}`, with :math:`t_{ij}` the part of
+    row i that :math:`u_j` multiplies (found by doubling it) and :math:`y^0_i` the rest; the :math:`c_j \ge 0`
+    minimising :math:`\sum_i ((y^0_i + \sum_j c_j t_{ij}) / m_i - 1)^2` (non-negative least squares on relative
+    errors) scale each :math:`u_j`. A part the data do not need starts at 1% of the data."""
+    base = wear_constants(case)
+    start = {}
+    for name in free:
+        value = base[name]
+        if value is None and name == "oka_k2":
+            value = oka_exponents(flow_pressure_of(base, case.plate.material()))[2]
+        if value is None and name not in _SCALE_POWER:
+            raise ValueError(f"wear.{name}=None: give a starting value for the free constant {name}")
+        # a scale without a value (Bitter's ε) starts anywhere positive: it is rescaled by the data just below
+        start[name] = 1.0 if value is None else float(value)
+    scales = [name for name in free if name in _SCALE_POWER]
+    if not scales:
+        return start
+    measured = model.data.measured[rows]
+    at = model.predict(start)[rows]
+    parts = []
+    for name in scales:
+        doubled = {**start, name: start[name] * 2.0 ** (1.0 / _SCALE_POWER[name])}
+        parts.append(model.predict(doubled)[rows] - at)
+    parts_m = np.array(parts).T
+    rest = at - parts_m.sum(axis=1)
+    total = parts_m.sum(axis=1)
+    useful = total > 1e-12 * total.max(initial=0.0)
+    if not useful.any():
+        return start
+    scale, _ = nnls(parts_m[useful] / measured[useful, None], 1.0 - rest[useful] / measured[useful])
+    for j, name in enumerate(scales):
+        own = parts_m[useful, j] > 0.0
+        if not own.any():
+            continue
+        floor = 0.01 * float(np.exp(np.mean(np.log(measured[useful][own] / parts_m[useful, j][own]))))
+        start[name] *= max(float(scale[j]), floor) ** (1.0 / _SCALE_POWER[name])
+    return start
 
 
 def calibrate(case: Case, data: CalibrationData, free: tuple[str, ...] | None = None) -> CalibrationResult:
@@ -133,20 +205,13 @@ def calibrate(case: Case, data: CalibrationData, free: tuple[str, ...] | None = 
             f"data has {n_fit} measured rows for {len(free)} free constants ({', '.join(free)}): give "
             "at least as many rows as constants"
         )
+    check_data_keys(case, data, free)
     t0 = time.perf_counter()
     model = ForwardModel(case, data)
     t1 = time.perf_counter()
-    base = wear_constants(case)
-    start = {}
-    for name in free:
-        value = base[name]
-        if value is None and name == "oka_k2":
-            value = oka_exponents(flow_pressure_of(base, case.plate.material()))[2]
-        if value is None:
-            raise ValueError(f"wear.{name}=None: give a starting value for the free constant {name}")
-        start[name] = float(value)
-    at_start = model.predict(start)
     fitted = np.flatnonzero(data.fitted)
+    start = _start(case, model, fitted, free)
+    at_start = model.predict(start)
     # no wear, or a round-off remainder of it (Finnie's cos²α at normal incidence): no log to fit
     left_out = tuple(int(i) for i in fitted if at_start[i] <= 1e-12 * at_start[fitted].max(initial=0.0))
     rows = np.array([i for i in fitted if i not in left_out], dtype=int)

@@ -3,13 +3,16 @@
 
 One row per measurement — ``angle_deg`` (from the normal), ``speed_m_s``, one measured quantity
 (:data:`QUANTITIES`: the erosion ratio kg/kg, the mass or the volume worn per impact), and optionally case keys per
-row as extra columns named as in the schema (``ball.radius``, ``impact.friction``, ``plate.hardness``, ...). A row
-whose measured value is empty is predicted, not fitted.
+row as extra columns named as in the schema (``ball.radius``, ``impact.friction``, ``plate.hardness``, ...; those a
+calibration would not read are refused by :func:`wear.chain.calibrate.check_data_keys`). A row whose measured value
+is empty is predicted, not fitted. The file is UTF-8 text (a byte-order mark, as Excel writes, is read); each column
+is named once.
 """
 
 from __future__ import annotations
 
 import csv
+import io
 import math
 import os
 from dataclasses import dataclass
@@ -64,11 +67,25 @@ def read_data(path: str | os.PathLike) -> CalibrationData:
     p = Path(path)
     if not p.is_file():
         raise ValueError(f"data={str(p)!r} is not a file")
-    with open(p, newline="", encoding="utf-8") as f:
-        rows = list(csv.reader(f))
+    try:
+        # utf-8-sig: a byte-order mark (Excel's "CSV UTF-8") is not part of the first column's name
+        with open(p, newline="", encoding="utf-8-sig") as f:
+            text = f.read()
+        if "\x00" in text:  # no text file holds a NUL (UTF-16 text does: it is not UTF-8)
+            raise UnicodeError
+        rows = list(csv.reader(io.StringIO(text, newline="")))
+    except (UnicodeError, csv.Error):
+        raise ValueError(
+            f"data={str(p)!r} is not a CSV text file (UTF-8): give a header row and one row per measurement"
+        ) from None
     if not rows:
         raise ValueError(f"data={str(p)!r} is empty: give a header row and one row per measurement")
     header, body = [h.strip() for h in rows[0]], [r for r in rows[1:] if any(c.strip() for c in r)]
+    for name in header:
+        if header.count(name) > 1:
+            raise ValueError(
+                f"column {name!r} appears {header.count(name)} times in data={str(p)!r}: give each column once"
+            )
     measured = [h for h in header if h in QUANTITIES]
     for need in ("angle_deg", "speed_m_s"):
         if need not in header:

@@ -7,10 +7,13 @@ for an exponent. At the optimum, with J the Jacobian of the residuals in those c
 .. math:: s^2 = \frac{\sum r_i^2}{n - p}, \qquad C = s^2 (J^T J)^{-1}, \qquad
           \theta_k \pm t_{0.975,\,n-p}\sqrt{C_{kk}}
 
-(an interval in log coordinates is mapped back: multiplicative). A direction along which the residuals do not
-change (a singular value of J below 1e-7 of the largest: e.g. a speed exponent fitted to a single speed, where it
-trades off exactly against the scale constant) has no interval: the constants that move along it are reported as
-not determined by the data, instead of a number.
+(an interval in log coordinates is mapped back: multiplicative), clipped to the constant's valid range. A direction
+along which the residuals do not change (a singular value of J below 1e-7 of the largest: e.g. a speed exponent
+fitted to a single speed, where it trades off exactly against the scale constant) has no interval: the constants that
+move along it are reported as not determined by the data, instead of a number. Two constants whose correlation
+:math:`\rho` exceeds 0.999 in magnitude are reported as nearly interchangeable: each interval is
+:math:`1/\sqrt{1 - \rho^2}` times as wide as with the other held (e.g. Eq. 15's K and α, where the pressure varies
+little between rows next to its size). A constant the fit leaves on a bound of its valid range is reported so.
 """
 
 from __future__ import annotations
@@ -29,6 +32,8 @@ __all__ = ["Constant", "LogFit", "log_fit"]
 SINGULAR = 1e-7
 #: A constant whose component in such a direction exceeds this is not determined.
 LOADING = 0.05
+#: Two determined constants correlated beyond this (in magnitude) are nearly interchangeable.
+INTERCHANGEABLE = 0.999
 
 
 @dataclass(frozen=True)
@@ -62,7 +67,8 @@ class LogFit:
     """A log least-squares fit: ``names``, ``values`` (the fitted constants), ``intervals`` (95% (low, high), or None
     where not determined or without residual degrees of freedom), ``determined`` (per constant), ``statements`` (plain
     sentences on what the data cannot determine), ``residuals`` (ln predicted − ln measured per fitted row),
-    ``rms_log_error``, ``correlations`` (p × p, NaN where undefined), ``dof`` (n − p), ``evaluations``."""
+    ``rms_log_error``, ``correlations`` (p × p, NaN where undefined), ``dof`` (n − p), ``evaluations``,
+    ``on_bound`` (per constant: "low" or "high" where the fit sits on that bound of its valid range, else None)."""
 
     names: tuple[str, ...]
     values: tuple[float, ...]
@@ -74,6 +80,7 @@ class LogFit:
     correlations: np.ndarray
     dof: int
     evaluations: int
+    on_bound: tuple[str | None, ...]
 
     def as_dict(self) -> dict[str, float]:
         return dict(zip(self.names, self.values, strict=True))
@@ -120,9 +127,13 @@ def log_fit(
         )
     s2 = float(r @ r / dof) if dof > 0 else math.nan
     if dof <= 0:
-        statements.append(f"{n} rows for {p} constants: no residual degree of freedom, no interval")
+        statements.append(
+            f"{n} row{'' if n == 1 else 's'} for {p} constants: no residual degree of freedom, no interval"
+        )
     inv_sv = np.where(sv > SINGULAR * max(sv[0], 1e-300), 1.0 / np.maximum(sv, 1e-300), 0.0)
-    cov = (vt.T * inv_sv**2) @ vt * s2
+    # the correlations do not depend on s², so they are given without residual degrees of freedom too
+    shape = (vt.T * inv_sv**2) @ vt
+    cov = shape * s2
     intervals: list[tuple[float, float] | None] = []
     quantile = float(student_t.ppf(0.975, dof)) if dof > 0 else math.nan
     for k, c in enumerate(constants):
@@ -130,15 +141,38 @@ def log_fit(
             intervals.append(None)
             continue
         half = quantile * math.sqrt(max(cov[k, k], 0.0))
-        lo, hi = solution.x[k] - half, solution.x[k] + half
-        intervals.append((c.from_coordinate(lo), c.from_coordinate(hi)))
-    sd = np.sqrt(np.maximum(np.diag(cov), 0.0))
+        lo, hi = (
+            c.from_coordinate(float(x)) for x in np.clip([solution.x[k] - half, solution.x[k] + half], low[k], high[k])
+        )
+        # once more in the constant's own units: exp(ln b) may differ from the bound b by a rounding
+        bottom, top = -math.inf if c.low is None else c.low, math.inf if c.high is None else c.high
+        intervals.append((min(max(lo, bottom), top), min(max(hi, bottom), top)))
+    sd = np.sqrt(np.maximum(np.diag(shape), 0.0))
     with np.errstate(invalid="ignore", divide="ignore"):
-        corr = cov / np.outer(sd, sd)
+        corr = shape / np.outer(sd, sd)
     corr[~np.isfinite(corr)] = math.nan
     for k in range(p):
         if not determined[k]:
             corr[k, :] = corr[:, k] = math.nan
+    for j in range(p):
+        for k in range(j + 1, p):
+            rho = float(corr[j, k])
+            if abs(rho) > INTERCHANGEABLE:
+                statements.append(
+                    f"the data hardly tell {constants[j].name} and {constants[k].name} apart: they are nearly "
+                    f"interchangeable (correlation {'-' if rho < 0 else '+'}(1 - {1.0 - abs(rho):.2g})), so each "
+                    "interval is "
+                    f"{1.0 / math.sqrt(max(1.0 - rho * rho, 1e-300)):.3g} times as wide as with the other held; "
+                    "fix one of them to determine the other"
+                )
+    on_bound = [_on_bound(x, lo, hi) for x, lo, hi in zip(solution.x, low, high, strict=True)]
+    for c, x, side in zip(constants, solution.x, on_bound, strict=True):
+        if side is not None:
+            valid = f"[{c.low if c.low is not None else '-inf'}, {c.high if c.high is not None else 'inf'}]"
+            statements.append(
+                f"{c.name} = {c.from_coordinate(float(x)):.6g} sits on the {'lower' if side == 'low' else 'upper'} "
+                f"bound of its valid range {valid}: the data pull it further; its interval is cut there"
+            )
     return LogFit(
         names=tuple(c.name for c in constants),
         values=tuple(c.from_coordinate(float(v)) for c, v in zip(constants, solution.x, strict=True)),
@@ -150,4 +184,13 @@ def log_fit(
         correlations=corr,
         dof=dof,
         evaluations=evaluations[0],
+        on_bound=tuple(on_bound),
     )
+
+
+def _on_bound(x: float, low: float, high: float) -> str | None:
+    """The bound ("low" or "high") the coordinate ``x`` is on (within 1e-6), else None."""
+    for side, bound in (("low", low), ("high", high)):
+        if math.isfinite(bound) and abs(x - bound) <= 1e-6 * (1.0 + abs(bound)):
+            return side
+    return None

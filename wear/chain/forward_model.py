@@ -27,7 +27,19 @@ from wear.law import WearLaw
 from wear.laws import impact_wear, local_volume, pressed_area
 from wear.pressure import PressureHistory, SlidingSpeed, pressure_history, sliding_speed
 
-__all__ = ["ForwardModel"]
+__all__ = ["ForwardModel", "fe_coupled"]
+
+
+def _uses_local(case: Case) -> bool:
+    """Whether the case's law evaluates Eq. 15 on the pressure histories."""
+    return case.wear.law == "local" or (case.wear.law == "combined" and case.wear.cutting == "local")
+
+
+def fe_coupled(case: Case) -> bool:
+    """Whether the forward model computes each row's coupled FE impact (and so reads ``[fem]``): a two-way coupling
+    and a law that uses the FE (its pressure or the plastic work of the deformation laws)."""
+    uses_work = case.wear.law in ("deformation", "combined")
+    return case.fem.coupling == "two-way" and ((_uses_local(case) and case.wear.pressure == "fe") or uses_work)
 
 
 def _row_case(case: Case, data: CalibrationData, i: int) -> Case:
@@ -56,10 +68,8 @@ class ForwardModel:
 
     def __init__(self, case: Case, data: CalibrationData) -> None:
         self.case, self.data = case, data
-        law, cut = case.wear.law, case.wear.cutting
-        uses_local = law == "local" or (law == "combined" and cut == "local")
-        uses_work = law in ("deformation", "combined")
-        coupled = case.fem.coupling == "two-way" and ((uses_local and case.wear.pressure == "fe") or uses_work)
+        uses_local = _uses_local(case)
+        coupled = fe_coupled(case)
         if case.wear.pressure == "fe" and uses_local and not coupled:
             raise ValueError("wear.pressure='fe' needs the FE plate: set fem.coupling='two-way' (or another pressure)")
         cases = [_row_case(case, data, i) for i in range(data.angle.size)]

@@ -42,8 +42,14 @@ def _table(summary: dict, out: str) -> str:
     ]
     for name, c in summary["constants"].items():
         interval = c["interval_95"]
-        ci = "not determined by the data" if interval is None else f"95% [{interval[0]:.4g}, {interval[1]:.4g}]"
-        lines.append(f"  {name} = {c['value']:.6g} {c['units']}  ({ci})".rstrip())
+        if not c["determined"]:
+            ci = "not determined by the data"
+        elif interval is None:
+            ci = "no interval: no residual degree of freedom"
+        else:
+            ci = f"95% [{interval[0]:.4g}, {interval[1]:.4g}]"
+        bound = "" if c["on_bound"] is None else f"; on its {'lower' if c['on_bound'] == 'low' else 'upper'} bound"
+        lines.append(f"  {name} = {c['value']:.6g} {c['units']}  ({ci}{bound})".rstrip())
     lines += [f"  note: {s}" for s in summary["statements"]]
     lines.append(
         f"{summary['evaluations']} evaluations of the forward model ({summary['evaluations_per_s']:.3g}/s); "
