@@ -15,7 +15,7 @@ from wear.chain.calibration_data import CalibrationData
 from wear.chain.fit import Constant, LogFit, log_fit
 from wear.chain.forward_model import ForwardModel
 from wear.chain.plate import wear_constants
-from wear.laws import flow_pressure_of, oka_exponents
+from wear.laws import oka_constants
 
 __all__ = ["CalibrationResult", "calibrate", "law_constants"]
 
@@ -140,8 +140,8 @@ def calibrate(case: Case, data: CalibrationData, free: tuple[str, ...] | None = 
     start = {}
     for name in free:
         value = base[name]
-        if value is None and name == "oka_k2":
-            value = oka_exponents(flow_pressure_of(base, case.plate.material()))[2]
+        if value is None and name in ("oka_e90", "oka_k2"):
+            value = oka_constants(base, case.plate.material())[("oka_e90", "oka_k2").index(name)]
         if value is None:
             raise ValueError(f"wear.{name}=None: give a starting value for the free constant {name}")
         start[name] = float(value)
