@@ -170,8 +170,9 @@ def oka_erosion_ratio(
     speed, angle, hardness: float, diameter: float, e90: float, k2: float | None = None, k3: float = 0.19
 ) -> np.ndarray:
     """Oka et al. (2005) erosion ratio (kg/kg) at ``speed`` (m/s) and ``angle`` (deg from the normal): ``hardness``
-    (Pa, Vickers), particle ``diameter`` (m), ``e90`` the ratio at normal incidence at 104 m/s and 326 µm; ``k2``
-    (default 2.3 H_v^0.038) and ``k3`` the speed and size exponents."""
+    (Pa, Vickers; H_v = hardness / 1e9 in GPa in the formulas), particle ``diameter`` (m), ``e90`` the ratio (kg/kg)
+    at normal incidence at 104 m/s and 326 µm (:func:`oka_e90`); ``k2`` (default 2.3 H_v^0.038) and ``k3`` the speed
+    and size exponents."""
     n1, n2, k2_oka = oka_exponents(hardness)
     s = np.sin(_from_surface(angle))
     g = s**n1 * (1.0 + hardness / 1e9 * (1.0 - s)) ** n2
