@@ -52,7 +52,8 @@ def test_calibrate_writes_outputs_and_calibrated_case(tmp_path, capsys):
 def test_calibrated_case_reproduces_the_fitted_curve_in_erode(tmp_path, capsys):
     """calibrate → calibrated.toml → impactwear erode --angles: the stream's erosion rate at each angle equals the
     calibration's prediction there (the stream erodes a flat patch with the same impacts and law; measured within
-    0.5%: table interpolation and the slight roughening; tolerance 3%)."""
+    0.12%, at 80°: the slight roughening; tolerance 0.5%; 1.5% at 60° and 5.1% at 80° when the response table was
+    interpolated linearly in the normal speed)."""
     data = _oka_csv(tmp_path / "oka.csv", speeds=(30.0,), extra_row="")
     out = tmp_path / "cal"
     assert main(["calibrate", str(data), "--law", "finnie", "--set", "plate.hardness=1.4e9", "--out", str(out),
@@ -60,13 +61,14 @@ def test_calibrated_case_reproduces_the_fitted_curve_in_erode(tmp_path, capsys):
     predicted = {float(r.split(",")[1]): float(r.split(",")[4]) for r in (out / "calibration.csv").read_text()
                  .splitlines()[1:]}  # fmt: skip
     case_file = out / "calibrated.toml"
-    assert main(["erode", str(case_file), "--angles", "30,60", "--out", str(tmp_path / "erode"), "--quiet",
-                 "--set", "impact.speed=30.0", "--set", "erosion.grid=128", "--set", "erosion.exposure_time=2.0",
-                 "--set", "erosion.samples=2"]) == 0  # fmt: skip
+    assert main(["erode", str(case_file), "--angles", "30,60,80", "--out", str(tmp_path / "erode"), "--quiet",
+                 "--set", "impact.speed=30.0", "--set", "erosion.grid=128", "--set", "erosion.patch_size=9e-4",
+                 "--set", "erosion.exposure_time=2.0", "--set", "erosion.samples=2"]) == 0  # fmt: skip
     rows = (tmp_path / "erode" / "erosion_vs_angle.csv").read_text().splitlines()[1:]
+    assert len(rows) == 3
     for row in rows:
         angle, rate = float(row.split(",")[0]), float(row.split(",")[1])
-        assert rate == pytest.approx(predicted[angle], rel=0.03), angle
+        assert rate == pytest.approx(predicted[angle], rel=0.005), angle
 
 
 def test_a_speed_exponent_from_one_speed_is_not_determined():

@@ -28,9 +28,11 @@ def test_table_interpolation_error_between_nodes():
     """Footprint interpolated half-way between table nodes vs computed there directly by the same chain.
 
     Default angle step (2.5°), 5 normal speeds over V cos 65° .. V cos 25°. Measured at (mid speed, 46.25°):
-    volume 0.27%, contact radius 0.08%, depth map 0.53% in L1 norm; tolerances 1%, 1% and 3% (a wrong axis,
+    volume 0.04%, contact radius 0.05%, depth map 0.63% in L1 norm; tolerances 1%, 1% and 3% (a wrong axis,
     a swapped weight or an unscaled L gives tens of %). Along the stream's curve v_n = V cos θ the volume
-    error of this table stays below 0.4% for θ ≤ 55° and reaches 1% near 64° (curvature of the volume in θ)."""
+    error of this table stays below 0.35% for θ ≤ 59.5° (0.51% before the power-law interpolation) and reaches
+    1.2% at 60.5° and 0.5% at 61.5–63.5°, the angle steps around the kink of this law's volume in θ near 61°
+    (1% at 63.5° before)."""
     response = ImpactResponse(RADIUS, SAND, STEEL, 0.3, LAW, points_across=48)
     vn, angles = table_axes(SPEED, 45.0, angle_margin=20.0, angle_step=2.5, speeds=5)
     table = build_response_table(response, vn, angles, points_per_length=12)

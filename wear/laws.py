@@ -16,15 +16,20 @@ from the plate normal, θ; the erosion literature's α from the surface is 90° 
   normal work ½ m v_n² (1 − e_n²) dissipated by the normal law in use (zero while elastic: below Thornton's yield
   speed, close to Bitter's elastic-limit speed :func:`bitter_threshold_velocity`).
 - ``"combined"``: a cutting law (``"local"`` or ``"finnie"``) plus ``"deformation"``, each share reported.
-- ``"oka"``: Oka, Okamura & Yoshida (2005, Wear 259: 95–109), the erosion ratio (kg of plate per kg of particles)
+- ``"oka"``: Oka, Okamura & Yoshida (2005), "Practical estimation of erosion damage caused by solid particle
+  impact, Part 1: Effects of impact parameters on a predictive equation", Wear 259: 95–101, and Oka & Yoshida
+  (2005), "Part 2: Mechanical properties of materials directly associated with erosion damage", Wear 259: 102–109:
+  the erosion ratio (kg of plate per kg of particles)
 
   .. math:: E = E_{90}\left(\frac{V}{V'}\right)^{k_2}\left(\frac{D}{D'}\right)^{k_3} (\sin\alpha)^{n_1}
             \left(1 + H_v(1 - \sin\alpha)\right)^{n_2}, \quad n_1 = 0.71 H_v^{0.14},\ n_2 = 2.4 H_v^{-0.94},\
             k_2 = 2.3 H_v^{0.038}
 
-  (H_v the plate's Vickers hardness in GPa, V' = 104 m/s, D' = 326 µm, k_3 = 0.19; the exponents of silica sand).
+  (H_v the plate's Vickers hardness in GPa, V' = 104 m/s, D' = 326 µm, k_3 = 0.19; the exponents of silica sand),
+  with E_90, the ratio at normal incidence at V' and D', from Part 2's volume correlation for silica sand
+  (:func:`oka_e90`) unless given.
 - ``"dnv"``: DNV-RP-O501 (2015), E = K U^n F(α), F(α) = 0.6 (sin α + 7.2 (sin α − sin²α))^0.6 (1 − e^{−20α})
-  (α in rad from the surface; steel: K = 2e-9 (kg/kg)(m/s)^−n, n = 2.6).
+  (α in rad from the surface; steel: K = 2e-9 (kg/kg)(m/s)^−n, n = 2.6); F is largest, 0.998, at α = 34.71°.
 
 The correlations give a mass ratio; the volume per impact is E m_p / ρ_plate.
 """
@@ -56,6 +61,8 @@ __all__ = [
     "flow_pressure_of",
     "impact_wear",
     "local_volume",
+    "oka_constants",
+    "oka_e90",
     "oka_exponents",
     "pressed_area",
     "oka_erosion_ratio",
@@ -79,6 +86,9 @@ OKA_SPEED, OKA_DIAMETER = 104.0, 326e-6
 OKA_N1 = (0.71, 0.14)
 OKA_N2 = (2.4, -0.94)
 OKA_K2 = (2.3, 0.038)
+#: Oka & Yoshida (2005, Part 2): the volume eroded at normal incidence per mass of silica sand at V' and D',
+#: 65 H_v^−0.12 mm³/kg (H_v in GPa), as (m³/kg, exponent).
+OKA_E90 = (65e-9, -0.12)
 #: Bitter's (1963) constant of the elastic-limit speed and his pressure factor 1.59 (of Y).
 BITTER_FACTOR = math.pi**2 / (2.0 * math.sqrt(10.0))
 BITTER_YIELD_FACTOR = 1.59
@@ -142,12 +152,27 @@ def oka_exponents(hardness: float) -> tuple[float, float, float]:
     return OKA_N1[0] * hv ** OKA_N1[1], OKA_N2[0] * hv ** OKA_N2[1], OKA_K2[0] * hv ** OKA_K2[1]
 
 
+def oka_e90(hardness: float, density: float) -> float:
+    r"""Oka & Yoshida's (2005, Part 2) erosion ratio (kg/kg) at normal incidence, 104 m/s and 326 µm, of silica sand
+    on a plate of Vickers ``hardness`` H (Pa) and ``density`` ρ (kg/m³): their volume per particle mass,
+    65 H_v^−0.12 mm³/kg with H_v = H / 10⁹ Pa in GPa, times ρ (1 mm³ = 10⁻⁹ m³):
+    :math:`E_{90} = 65\times10^{-9}\,(H/10^9)^{-0.12}\,\rho`.
+
+    A carbon steel of H_v 1.7 GPa, 7850 kg/m³: 65e-9 · 1.7^−0.12 · 7850 = 4.788e-4.
+
+    >>> f"{oka_e90(1.7e9, 7850.0):.4e}"
+    '4.7877e-04'
+    """
+    return OKA_E90[0] * (hardness / 1e9) ** OKA_E90[1] * density
+
+
 def oka_erosion_ratio(
     speed, angle, hardness: float, diameter: float, e90: float, k2: float | None = None, k3: float = 0.19
 ) -> np.ndarray:
     """Oka et al. (2005) erosion ratio (kg/kg) at ``speed`` (m/s) and ``angle`` (deg from the normal): ``hardness``
-    (Pa, Vickers), particle ``diameter`` (m), ``e90`` the ratio at normal incidence at 104 m/s and 326 µm; ``k2``
-    (default 2.3 H_v^0.038) and ``k3`` the speed and size exponents."""
+    (Pa, Vickers; H_v = hardness / 1e9 in GPa in the formulas), particle ``diameter`` (m), ``e90`` the ratio (kg/kg)
+    at normal incidence at 104 m/s and 326 µm (:func:`oka_e90`); ``k2`` (default 2.3 H_v^0.038) and ``k3`` the speed
+    and size exponents."""
     n1, n2, k2_oka = oka_exponents(hardness)
     s = np.sin(_from_surface(angle))
     g = s**n1 * (1.0 + hardness / 1e9 * (1.0 - s)) ** n2
@@ -156,8 +181,8 @@ def oka_erosion_ratio(
 
 
 def dnv_angle_function(angle) -> np.ndarray:
-    """DNV-RP-O501's F(α) of ductile materials at ``angle`` (deg from the normal): 0.6 at normal incidence, 1 at
-    its peak (α = 34.7° from the surface)."""
+    """DNV-RP-O501's F(α) of ductile materials at ``angle`` (deg from the normal): 0.6 at normal incidence, 0.998 at
+    its peak (α = 34.71° from the surface)."""
     a = _from_surface(angle)
     return 0.6 * (np.sin(a) + 7.2 * (np.sin(a) - np.sin(a) ** 2)) ** 0.6 * (1.0 - np.exp(-20.0 * a))
 
@@ -219,6 +244,18 @@ def _need(constants: Mapping[str, float | str | None], law: str, *names: str) ->
     return values
 
 
+def oka_constants(constants: Mapping[str, float | str | None], plate: Material) -> tuple[float, float]:
+    """Oka's (E90 kg/kg, k2) of the ``constants`` (``oka_e90``, ``oka_k2``), each absent one from Oka et al.'s
+    formulas at the plate's hardness (:func:`flow_pressure_of`): :func:`oka_e90` (with the plate's density) and
+    2.3 H_v^0.038 (:func:`oka_exponents`)."""
+    e90, k2 = constants.get("oka_e90"), constants.get("oka_k2")
+    if e90 is None or k2 is None:
+        hardness = flow_pressure_of(constants, plate)
+        e90 = oka_e90(hardness, plate.density) if e90 is None else e90
+        k2 = oka_exponents(hardness)[2] if k2 is None else k2
+    return float(e90), float(k2)
+
+
 def flow_pressure_of(constants: Mapping[str, float | str | None], plate: Material) -> float:
     """The plate's plastic flow pressure (Pa): ``hardness`` if given, else 3 × its yield strength (the indentation
     hardness of a rigid–perfectly plastic metal, Tabor 1951)."""
@@ -271,10 +308,8 @@ def impact_wear(
         return ImpactWear(law, {"cutting": cutting(str(constants.get("cutting"))), "deformation": deformation()})
     density = impact.plate.density
     if law == "oka":
-        (e90,) = _need(constants, law, "oka_e90")
-        ratio = oka_erosion_ratio(
-            speed, angle, flow_pressure_of(constants, impact.plate), 2.0 * impact.radius, e90, constants.get("oka_k2")
-        )
+        e90, k2 = oka_constants(constants, impact.plate)
+        ratio = oka_erosion_ratio(speed, angle, flow_pressure_of(constants, impact.plate), 2.0 * impact.radius, e90, k2)
     else:
         K, n = _need(constants, law, "dnv_K", "dnv_n")
         ratio = dnv_erosion_ratio(speed, angle, K, n)

@@ -180,14 +180,16 @@ class WearSpec(Table):
         optional=True,
         absent="none: the deformation and combined laws need it",
     )
-    oka_e90: float = key(
+    oka_e90: float | None = key(
         float,
-        6.154e-4,
+        None,
         "Oka's erosion ratio at normal incidence, 104 m/s, 326 um",
         "kg/kg",
         low=0.0,
         low_open=True,
         high=1.0,
+        optional=True,
+        absent="65e-9 m^3/kg x (Hv/GPa)^-0.12 x plate density (Oka & Yoshida 2005)",
     )
     oka_k2: float | None = key(
         float, None, "Oka's speed exponent", low=0.5, high=5.0, optional=True, absent="2.3 Hv^0.038"

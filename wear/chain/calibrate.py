@@ -17,7 +17,7 @@ from wear.chain.calibration_data import CalibrationData
 from wear.chain.fit import Constant, LogFit, log_fit
 from wear.chain.forward_model import ForwardModel, fe_coupled
 from wear.chain.plate import wear_constants
-from wear.laws import flow_pressure_of, oka_exponents
+from wear.laws import oka_constants
 
 __all__ = ["CalibrationResult", "calibrate", "check_data_keys", "law_constants"]
 
@@ -144,8 +144,8 @@ def _constant(name: str, start: float) -> Constant:
 
 
 def _start(case: Case, model: ForwardModel, rows: np.ndarray, free: tuple[str, ...]) -> dict[str, float]:
-    r"""The start of the fit: the case's values of the free exponents (Oka's k2 from the hardness where not given)
-    and free scales from the data. The prediction is linear in :math:`u_j = s_j^{q_j}` of each free scale
+    r"""The start of the fit: the case's values of the free exponents (Oka's E90 and k2 from the hardness where not
+    given, :func:`wear.laws.oka_constants`) and free scales from the data. The prediction is linear in :math:`u_j = s_j^{q_j}` of each free scale
     :math:`s_j` (:data:`_SCALE_POWER`): :math:`y_i = y^0_i + \sum_j c_j t_{ij}`, with :math:`t_{ij}` the part of
     row i that :math:`u_j` multiplies (found by doubling it) and :math:`y^0_i` the rest; the :math:`c_j \ge 0`
     minimising :math:`\sum_i ((y^0_i + \sum_j c_j t_{ij}) / m_i - 1)^2` (non-negative least squares on relative
@@ -154,8 +154,8 @@ def _start(case: Case, model: ForwardModel, rows: np.ndarray, free: tuple[str, .
     start = {}
     for name in free:
         value = base[name]
-        if value is None and name == "oka_k2":
-            value = oka_exponents(flow_pressure_of(base, case.plate.material()))[2]
+        if value is None and name in ("oka_e90", "oka_k2"):
+            value = oka_constants(base, case.plate.material())[("oka_e90", "oka_k2").index(name)]
         if value is None and name not in _SCALE_POWER:
             raise ValueError(f"wear.{name}=None: give a starting value for the free constant {name}")
         # a scale without a value (Bitter's ε) starts anywhere positive: it is rescaled by the data just below

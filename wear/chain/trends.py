@@ -42,10 +42,17 @@ def erosion_curve(case: Case, speeds, angles, values: dict[str, float] | None = 
 
 def law_trends(case: Case, speed: float = 50.0, speeds: tuple[float, float] = (25.0, 75.0)) -> LawTrends:
     """The trends of the case's wear law (see the module docstring), angles every 0.5° from 0 to 89° from the
-    normal."""
-    angles = np.arange(0.0, 89.01, 0.5)
+    normal; the angle of maximum is the vertex of the parabola through the largest value and its two neighbours
+    (DNV-RP-O501's 34.71° from the surface, not the grid's 34.5°)."""
+    step = 0.5
+    angles = np.arange(0.0, 89.01, step)
     e = erosion_curve(case, np.full(angles.size, speed), angles)
     k = int(np.argmax(e))
-    pair = erosion_curve(case, np.array(speeds), np.full(2, angles[k]))
+    peak = float(angles[k])
+    if 0 < k < angles.size - 1:
+        curvature = e[k - 1] - 2.0 * e[k] + e[k + 1]
+        if curvature < 0.0:  # the largest sample is at least its neighbours: the vertex is within half a step
+            peak += 0.5 * step * float(e[k - 1] - e[k + 1]) / float(curvature)
+    pair = erosion_curve(case, np.array(speeds), np.full(2, peak))
     exponent = math.log(pair[1] / pair[0]) / math.log(speeds[1] / speeds[0]) if pair.min() > 0 else math.nan
-    return LawTrends(case.wear.law, exponent, 90.0 - float(angles[k]), float(e[0] / e[k]) if e[k] > 0 else math.nan)
+    return LawTrends(case.wear.law, exponent, 90.0 - peak, float(e[0] / e[k]) if e[k] > 0 else math.nan)

@@ -19,10 +19,11 @@ particles on the patch area A (m_p = 4/3 π R³ ρ_p). Impact points are uniform
 2. the local angle cos θ_l = −d̂·n and normal speed v_n = V cos θ_l of the particle direction d̂; the
    footprint's u axis is the horizontal projection of the tangential velocity d̂ − (d̂·n)n (the stream
    azimuth at normal local incidence); particles with θ_l ≥ 89° (shadowed) do not hit;
-3. the footprint is interpolated bilinearly in the :class:`wear.erosion.table.ResponseTable` at (v_n, θ_l)
-   (clamped to the table; counted in ``clamped``), sampled bilinearly at every node it covers in the rotated
-   frame, rescaled so that the nodes receive exactly the interpolated volume, and added (wrapping across
-   the periodic edges).
+3. the footprint is interpolated in the :class:`wear.erosion.table.ResponseTable` at (V, θ_l)
+   (:func:`wear.erosion.table.table_entries`: along the speed V between the angle columns, a power law of the
+   normal speed within one; clamped to the table, counted in ``clamped``), sampled bilinearly at every node it
+   covers in the rotated frame, rescaled so that the nodes receive exactly the interpolated volume, and added
+   (wrapping across the periodic edges).
 
 Approximations: the footprint is laid on the horizontal grid and removed vertically, which is exact on a
 flat surface and in error by O(slope²) on a tilted one (1% at a slope of 0.1); the slope is the average over

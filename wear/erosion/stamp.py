@@ -9,8 +9,9 @@ of a periodic grid of spacing ``h`` (m), for the impact points ``positions`` (k,
 - the least-squares slope over the node offsets ``disc``, scaled by ``disc_norm`` = 1/(h Σ p²);
 - the local angle and normal speed of the particle ``direction`` = (sin θ cos ψ, sin θ sin ψ, cos θ, cos ψ,
   sin ψ) at ``speed`` (m/s);
-- bilinear interpolation in the table (``vn_axis`` m/s, ``angle_axis`` deg, ``shape``, ``volume`` m³,
-  ``length`` m, ``dent_table``; footprint grid origin ``u0``, ``v0`` and spacing ``du`` in units of L);
+- the table's four entries at (``speed``, θ_l) and their weights (:func:`wear.erosion.table.table_entries`: axes
+  ``vn_axis`` m/s, ``angle_axis`` deg, ``volume`` m³), which weigh ``shape``, ``length`` (m) and ``dent_table``
+  (footprint grid origin ``u0``, ``v0`` and spacing ``du`` in units of L);
 - the rotated footprint sampled at the nodes, rescaled to the interpolated volume, and added.
 
 ``scratch``/``dent_scratch`` are work arrays; ``counts`` [shadowed, clamped] and ``removed`` [m³] are
@@ -24,23 +25,12 @@ import math
 import numba
 import numpy as np
 
+from wear.erosion.table import table_entries
+
 __all__ = ["stamp_impacts", "stamp_impacts_numpy", "GRAZING_ANGLE"]
 
 #: Local angles at or beyond this (deg from the local normal) count as shadowed: no impact.
 GRAZING_ANGLE = 89.0
-
-
-@numba.njit(cache=True, inline="always")
-def _bracket(axis, value):
-    n = axis.size
-    if n == 1:
-        return 0, 0.0, False
-    out = value < axis[0] or value > axis[n - 1]
-    k = 0
-    while k < n - 2 and value >= axis[k + 1]:
-        k += 1
-    f = (value - axis[k]) / (axis[k + 1] - axis[k])
-    return k, min(max(f, 0.0), 1.0), out
 
 
 @numba.njit(cache=True)
@@ -106,18 +96,12 @@ def stamp_impacts(
         else:
             c, s = direction[3], direction[4]
         theta_l = math.degrees(math.acos(min(cos_l, 1.0)))
-        ia, fa, out_a = _bracket(vn_axis, speed * cos_l)
-        ib, fb, out_b = _bracket(angle_axis, theta_l)
-        if out_a or out_b:
+        entries, vol, outside = table_entries(vn_axis, angle_axis, volume, speed, theta_l)
+        if outside:
             counts[1] += 1
-        ia1 = min(ia + 1, vn_axis.size - 1)
-        ib1 = min(ib + 1, angle_axis.size - 1)
-        w00 = (1.0 - fa) * (1.0 - fb)
-        w01 = (1.0 - fa) * fb
-        w10 = fa * (1.0 - fb)
-        w11 = fa * fb
-        vol = w00 * volume[ia, ib] + w01 * volume[ia, ib1] + w10 * volume[ia1, ib] + w11 * volume[ia1, ib1]
-        L = w00 * length[ia, ib] + w01 * length[ia, ib1] + w10 * length[ia1, ib] + w11 * length[ia1, ib1]
+        L = 0.0
+        for a, b, w in entries:
+            L += w * length[a, b]
         if vol <= 0.0 and not has_dent:
             continue
         # bounding box of the rotated footprint rectangle, in nodes
@@ -159,7 +143,7 @@ def stamp_impacts(
                 c10 = (1.0 - gu) * gv
                 c11 = gu * gv
                 val = 0.0
-                for a, b, w in ((ia, ib, w00), (ia, ib1, w01), (ia1, ib, w10), (ia1, ib1, w11)):
+                for a, b, w in entries:
                     if w == 0.0:
                         continue
                     t = shape[a, b]
@@ -235,21 +219,9 @@ def stamp_impacts_numpy(
         th = math.hypot(t[0], t[1])
         c, s = (t[0] / th, t[1] / th) if th > 1e-12 else (direction[3], direction[4])
         theta_l = math.degrees(math.acos(min(cos_l, 1.0)))
-        vn = speed * cos_l
-        if not (vn_axis[0] <= vn <= vn_axis[-1] and angle_axis[0] <= theta_l <= angle_axis[-1]):
+        entries, vol, outside = table_entries(vn_axis, angle_axis, volume, speed, theta_l)
+        if outside:
             counts[1] += 1
-        ia = min(max(np.searchsorted(vn_axis, vn, side="right") - 1, 0), max(vn_axis.size - 2, 0))
-        ib = min(max(np.searchsorted(angle_axis, theta_l, side="right") - 1, 0), max(angle_axis.size - 2, 0))
-        ia1, ib1 = min(ia + 1, vn_axis.size - 1), min(ib + 1, angle_axis.size - 1)
-        fa = 0.0 if ia1 == ia else min(max((vn - vn_axis[ia]) / (vn_axis[ia1] - vn_axis[ia]), 0.0), 1.0)
-        fb = 0.0 if ib1 == ib else min(max((theta_l - angle_axis[ib]) / (angle_axis[ib1] - angle_axis[ib]), 0.0), 1.0)
-        entries = (
-            (ia, ib, (1 - fa) * (1 - fb)),
-            (ia, ib1, (1 - fa) * fb),
-            (ia1, ib, fa * (1 - fb)),
-            (ia1, ib1, fa * fb),
-        )
-        vol = sum(w * volume[a, b] for a, b, w in entries)
         L = sum(w * length[a, b] for a, b, w in entries)
         if vol <= 0.0 and not has_dent:
             continue

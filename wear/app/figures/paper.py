@@ -264,7 +264,7 @@ def plot_wear_laws(curves: list[dict], data_angle, data_rate, speeds, path, sour
             label=c["label"],
         )
         ax2.loglog(c["speeds"], c["rate_vs_speed"], style, color=colour, lw=1.3)
-    ax.plot(data_angle, data_rate, "ko", ms=4, label="calibration data (Oka et al. 2005 curve, 50 m/s)")
+    ax.plot(data_angle, data_rate, "ko", ms=4, label="calibration data (Oka et al. 2005 correlation, 50 m/s)")
     top = max(np.nanmax(c["rate"]) for c in curves)
     ax.set_ylim(top * 1e-3, top * 2)
     ax.set_xlabel("impact angle from the surface (deg)")

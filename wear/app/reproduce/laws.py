@@ -69,7 +69,7 @@ def law_table(quick: bool = False) -> list[dict]:
             }
         )
     for label, keys in (
-        ("Oka et al. 2005 (the data)", {"law": "oka"}),
+        ("Oka et al. 2005 (their correlation)", {"law": "oka"}),
         ("DNV-RP-O501 (K 2e-9, n 2.6)", {"law": "dnv"}),
     ):
         case = CASE.with_(wear=keys)

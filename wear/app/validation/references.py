@@ -107,17 +107,18 @@ def unloading_path_w(quick: bool) -> tuple[np.ndarray, np.ndarray]:
     return w_load, w_unload
 
 
-#: Oka, Okamura & Yoshida (2005, Wear 259: 95–109) for silica sand (D 300 µm) on a plain carbon steel (H_v 1.4 GPa):
-#: their correlation's angle and speed dependence (n₁ = 0.71 H_v^0.14, n₂ = 2.4 H_v^−0.94, k₂ = 2.3 H_v^0.038). Its
-#: scale E90 (kg/kg at 104 m/s, 326 µm) is the sand–steel value of the Ansys Fluent Theory Guide's Oka example
-#: (6.154e-4): it only scales the curve, which every law is calibrated to.
+#: Oka, Okamura & Yoshida (2005, Wear 259: 95–101, Part 1) for silica sand (D 300 µm) on a plain carbon steel (H_v
+#: 1.4 GPa): their correlation's angle and speed dependence (n₁ = 0.71 H_v^0.14, n₂ = 2.4 H_v^−0.94, k₂ = 2.3
+#: H_v^0.038). Its scale E90 (kg/kg at 104 m/s, 326 µm) is the Ansys Fluent Theory Guide's example value for sand on
+#: a steel of H_v 1.8 GPa (6.154e-4; Oka & Yoshida's own E90, Part 2, Wear 259: 102–109, gives 4.9e-4 for this
+#: steel, :func:`wear.laws.oka_e90`): it only scales the curve, which every law is calibrated to.
 OKA_CARBON_STEEL = {
     "hardness": 1.4e9,
     "diameter": 300e-6,
     "e90": 6.154e-4,
     "angles": (0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 55.0, 60.0, 65.0, 70.0, 75.0, 80.0),
 }
-OKA_SOURCE = "Oka, Okamura & Yoshida 2005, Wear 259: 95-109 (correlation, carbon steel Hv 1.4 GPa, SiO2 300 um)"
+OKA_SOURCE = "Oka, Okamura & Yoshida 2005, Wear 259: 95-101 (their correlation, carbon steel Hv 1.4 GPa, SiO2 300 um)"
 
 #: The measured ranges of ductile metals: velocity exponent (Finnie; Oka et al. 2005; DNV-RP-O501 n = 2.6), the angle
 #: of maximum erosion from the surface (Hutchings 1981: 20–30°; Oka: ~30° for steels), and the erosion at normal
