@@ -145,11 +145,11 @@ def _constant(name: str, start: float) -> Constant:
 
 def _start(case: Case, model: ForwardModel, rows: np.ndarray, free: tuple[str, ...]) -> dict[str, float]:
     r"""The start of the fit: the case's values of the free exponents (Oka's E90 and k2 from the hardness where not
-    given, :func:`wear.laws.oka_constants`) and free scales from the data. The prediction is linear in :math:`u_j = s_j^{q_j}` of each free scale
-    :math:`s_j` (:data:`_SCALE_POWER`): :math:`y_i = y^0_i + \sum_j c_j t_{ij}`, with :math:`t_{ij}` the part of
-    row i that :math:`u_j` multiplies (found by doubling it) and :math:`y^0_i` the rest; the :math:`c_j \ge 0`
-    minimising :math:`\sum_i ((y^0_i + \sum_j c_j t_{ij}) / m_i - 1)^2` (non-negative least squares on relative
-    errors) scale each :math:`u_j`. A part the data do not need starts at 1% of the data."""
+    given, :func:`wear.laws.oka_constants`) and free scales from the data. The prediction is linear in :math:`u_j =
+    s_j^{q_j}` of each free scale :math:`s_j` (:data:`_SCALE_POWER`): :math:`y_i = y^0_i + \sum_j c_j t_{ij}`, with
+    :math:`t_{ij}` the part of row i that :math:`u_j` multiplies (found by doubling it) and :math:`y^0_i` the rest; the
+    :math:`c_j \ge 0` minimising :math:`\sum_i ((y^0_i + \sum_j c_j t_{ij}) / m_i - 1)^2` (non-negative least squares on
+    relative errors) scale each :math:`u_j`. A part the data do not need starts at 1% of the data."""
     base = wear_constants(case)
     start = {}
     for name in free:
