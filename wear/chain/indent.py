@@ -9,6 +9,7 @@ zero.
 
 from __future__ import annotations
 
+import math
 import time
 from dataclasses import dataclass
 
@@ -24,7 +25,7 @@ from fem.axisymmetric.result import join
 from wear.case import Case
 from wear.chain.plate import case_mesh
 
-__all__ = ["IndentRun", "indent_case", "DEFAULT_YIELD_MULTIPLE", "DEFAULT_ELASTIC_OVERLAP"]
+__all__ = ["IndentRun", "indent_case", "largest_force", "DEFAULT_YIELD_MULTIPLE", "DEFAULT_ELASTIC_OVERLAP"]
 
 #: Default depth of a plate that yields: w = δ/δ_c.
 DEFAULT_YIELD_MULTIPLE = 20.0
@@ -91,6 +92,25 @@ def _overlap_for_force(force: float, radius: float, e_star: float, exact: FirstY
     return 1.25 * w * exact.overlap
 
 
+def largest_force(case: Case) -> float:
+    """The largest ``max_force`` (N) of :func:`indent_case` whose estimated overlap (Hertz, or Kogut & Etsion past
+    first yield, +25%) stays within the ball radius that the FE plate is built for (bisection in log F to 1e-9)."""
+    radius = case.ball.radius
+    plate = case.plate.material()
+    e_star = effective_modulus(case.ball.material(), plate)
+    exact = None if plate.yield_strength is None else first_yield(radius, e_star, plate.yield_strength, plate.nu)
+    # brackets in log F about Hertz's force at overlap R, 4/3 E* R^2 (Johnson 1985, Eq. 4.23)
+    hertz = math.log(4.0 / 3.0 * e_star * radius**2)
+    low, high = hertz - 80.0, hertz + 20.0
+    while high - low > 1e-9:
+        mid = 0.5 * (low + high)
+        if _overlap_for_force(math.exp(mid), radius, e_star, exact) <= radius:
+            low = mid
+        else:
+            high = mid
+    return math.exp(low)
+
+
 def indent_case(
     case: Case,
     *,
@@ -117,7 +137,8 @@ def indent_case(
     if max_overlap is not None:
         d_max = check_number("max_overlap", max_overlap, low=0.0, low_open=True, high=radius, units="m")
     elif max_force is not None:
-        max_force = check_number("max_force", max_force, low=0.0, low_open=True, units="N")
+        high = largest_force(case)
+        max_force = check_number("max_force", max_force, low=0.0, low_open=True, high=high, units="N")
         d_max = _overlap_for_force(max_force, radius, e_star, exact)
     else:
         d_max = DEFAULT_YIELD_MULTIPLE * exact.overlap if exact is not None else DEFAULT_ELASTIC_OVERLAP * radius
