@@ -13,7 +13,7 @@ import numpy as np
 from wear.case import TABLES, Case, check_job_case
 from wear.chain.calibration_data import CalibrationData
 from wear.chain.fit import Constant, LogFit, log_fit
-from wear.chain.forward_model import ForwardModel
+from wear.chain.forward_model import ForwardModel, check_rows
 from wear.chain.plate import wear_constants
 from wear.laws import flow_pressure_of, oka_exponents
 
@@ -133,6 +133,7 @@ def calibrate(case: Case, data: CalibrationData, free: tuple[str, ...] | None = 
             f"data has {n_fit} measured rows for {len(free)} free constants ({', '.join(free)}): give "
             "at least as many rows as constants"
         )
+    check_rows(data)
     t0 = time.perf_counter()
     model = ForwardModel(case, data)
     t1 = time.perf_counter()
