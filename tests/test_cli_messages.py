@@ -9,7 +9,7 @@ import time
 import pytest
 
 from contact import effective_modulus
-from wear.app.cli import main
+from wear.app.cli import build_parser, main
 from wear.case import default_case
 from wear.chain.indent import largest_force
 from wear.chain.single import estimate_impact
@@ -89,3 +89,14 @@ def test_sweep_scheduler_that_is_no_address_names_the_option(tmp_path, capsys):
     sweep.write_text('[sweep]\nstage = "impact"\n[grid]\n"impact.angle" = [10, 30]\n', encoding="utf-8")
     err = _refused(["sweep", str(sweep), "--scheduler", "garbage"], tmp_path, capsys)
     assert "--scheduler='garbage' is not a Dask scheduler address" in err
+
+
+def test_reproduce_only_an_unknown_figure_names_the_option_and_writes_nothing(tmp_path, capsys):
+    err = _refused(["reproduce", "--only", "nonexistent"], tmp_path, capsys)
+    assert "--only='nonexistent' is not a figure: choose from " in err
+
+
+def test_validate_writes_its_report_in_its_own_folder_by_default():
+    """The default --out is not the current folder, whose validation.md (e.g. the committed one) it would replace."""
+    args = build_parser().parse_args(["validate"])
+    assert args.out == "impactwear-validate"
