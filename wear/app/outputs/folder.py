@@ -105,7 +105,7 @@ def check_output_folder(path: str | os.PathLike, command: str, option: str = "--
             listed = ", ".join(foreign[:3]) + (f" and {len(foreign) - 3} more" if len(foreign) > 3 else "")
             raise ValueError(
                 f"{shown} holds files impactwear did not write ({listed}): give a new or empty folder, "
-                "or an earlier output folder of impactwear (its files are replaced, nothing else is "
+                "or an earlier output folder of this command (its files are replaced, nothing else is "
                 "touched)"
             )
         if manifest is not None:
