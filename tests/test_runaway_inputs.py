@@ -253,6 +253,8 @@ def test_default_cases_fit_and_the_element_estimate_bounds_the_meshes():
     here at the default case's overlap), within 40%."""
     for job in ("run", "repeat", "indent"):
         check_job_case(default_case(job), job)
+    # a repeat computes at most its impacts one by one: few impacts fit whatever max_plastic_impacts says
+    check_job_case(default_case("repeat").with_(repeat={"impacts": 5, "max_plastic_impacts": 100000}), "repeat")
     case = default_case("run")
     for scale in (2.0, 1.0, 0.5):
         elements = case_mesh(case.with_(fem={"mesh_scale": scale}), 2e-5).t.shape[1]

@@ -5,10 +5,11 @@ fits).
 FE wall time: :math:`c\,N_e\,(n_{load} + n_{unload})\,n_{pass}` with :math:`N_e` the plate's elements
 (:func:`fe_elements`), :math:`c` = :data:`SECONDS_PER_ELEMENT_STEP` and :math:`n_{pass}` the FE passes: a run's
 two-way coupling at most ``fem.max_iterations``, a one-way run or an indentation one, a repeat one per impact computed
-one by one before the blocks (at most ``repeat.max_plastic_impacts``; the blocks after them are bounded by the worn
-depth, which stops the run). FE memory: :data:`FE_MEMORY`. Wear grid memory: :data:`BYTES_PER_WEAR_CELL` per cell of
-a grid of ``wear.points_across`` across the Hertz contact diameter and, along the impact, that plus the travel
-:math:`V_t t_c` (Hertz contact time: an upper bound of the contact centre's travel while sliding).
+one by one before the blocks (at most ``repeat.max_plastic_impacts`` of the ``repeat.impacts``; the blocks after them
+are bounded by the worn depth, which stops the run). FE memory: :data:`FE_MEMORY`. Wear grid memory:
+:data:`BYTES_PER_WEAR_CELL` per cell of a grid of ``wear.points_across`` across the Hertz contact diameter and, along
+the impact, that plus the travel :math:`V_t t_c` (Hertz contact time: an upper bound of the contact centre's travel
+while sliding).
 
 The 3-D plate (``fem.model = "3d"``) is not estimated here.
 """
@@ -90,7 +91,7 @@ def _passes(case: Case, job: str) -> tuple[int, str]:
     if job == "indent":
         return 1, "one FE pass"
     if job == "repeat":
-        return case.repeat.max_plastic_impacts, "impacts computed one by one"
+        return min(case.repeat.impacts, case.repeat.max_plastic_impacts), "impacts computed one by one"
     if case.fem.coupling == "two-way":
         return case.fem.max_iterations, "passes of the two-way coupling at most"
     return (1, "one FE pass") if case.fem.coupling == "one-way" else (0, "")
@@ -134,7 +135,11 @@ def check_work(case: Case, job: str) -> None:
         ("fem.mesh_scale", scale, lambda s: fe_seconds(s, load + unload, passes), 8.0),
     ]
     if job == "repeat":
-        keys.insert(0, ("repeat.max_plastic_impacts", passes, lambda n: fe_seconds(scale, load + unload, int(n)), 1))
+        impacts, most = case.repeat.impacts, case.repeat.max_plastic_impacts
+        keys[:0] = [
+            ("repeat.max_plastic_impacts", most, lambda n: fe_seconds(scale, load + unload, min(impacts, int(n))), 1),
+            ("repeat.impacts", impacts, lambda n: fe_seconds(scale, load + unload, min(int(n), most)), 1),
+        ]
     elif job == "run" and f.coupling == "two-way":
         keys.insert(0, ("fem.max_iterations", passes, lambda n: fe_seconds(scale, load + unload, int(n)), 1))
     default = default_case(job).to_dict()
