@@ -13,12 +13,13 @@ import pytest
 
 from contact import Material, effective_modulus, simulate_impact, simulate_impacts, theory
 from contact.timestep import MAX_HISTORY_STEPS, MAX_STEPS, check_time_step
-from wear import WearLaw
+from wear import WearLaw, run
 from wear.app.cli import main
 from wear.case import Case, check_job_case, default_case
 from wear.case.budget import MAX_MEMORY, MAX_SECONDS, fitting_value, memory_budget
 from wear.case.work import fe_elements, fe_memory, fe_seconds, wear_grid_memory
 from wear.chain.forward_model import BYTES_PER_ROW
+from wear.chain.indent import indent_case
 from wear.chain.plate import case_mesh
 from wear.erosion import ImpactResponse, Stream, build_response_table, erode, erode_angles, erode_case, table_axes
 from wear.erosion.memory import check_patch_memory, patch_memory
@@ -259,3 +260,9 @@ def test_default_cases_fit_and_the_element_estimate_bounds_the_meshes():
     for scale in (2.0, 1.0, 0.5):
         elements = case_mesh(case.with_(fem={"mesh_scale": scale}), 2e-5).t.shape[1]
         assert elements <= fe_elements(scale) <= 1.4 * elements
+
+
+def test_library_entry_points_refuse_the_runaways_too():
+    _refused(lambda: run(default_case("run").with_(fem={"load_steps": 2000})), r"^fem\.load_steps=2000 needs ~")
+    indent = default_case("indent").with_(fem={"mesh_scale": 0.25})
+    _refused(lambda: indent_case(indent), r"^fem\.mesh_scale=0\.25 needs ~")

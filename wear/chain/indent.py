@@ -23,6 +23,7 @@ from contact.theory import PAPER_YIELD_COEFFICIENT, FirstYield, first_yield, her
 from fem import IndentationResult
 from fem.axisymmetric.result import join
 from wear.case import Case
+from wear.case.work import check_work
 from wear.chain.plate import case_mesh
 
 __all__ = ["IndentRun", "indent_case", "largest_force", "DEFAULT_YIELD_MULTIPLE", "DEFAULT_ELASTIC_OVERLAP"]
@@ -123,6 +124,7 @@ def indent_case(
     isotropic hardening; ``mesh``: a user mesh (or mesh file) instead of the case's."""
     if max_overlap is not None and max_force is not None:
         raise ValueError("max_overlap and max_force are both given: give one (m or N)")
+    check_work(case, "indent")  # a runaway is refused before any work
     radius = case.ball.radius
     plate = case.plate.material()
     if plate.is_rigid:

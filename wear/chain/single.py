@@ -38,6 +38,7 @@ from fem import CoupledImpact, PlateCycle
 from fem.axisymmetric.result import IndentationResult
 from fem.solid_coupling import SolidCoupledImpact
 from wear.case import JOBS, Case
+from wear.case.work import check_work
 from wear.chain.plates import PlateRun, couple_plate, prepare_case
 from wear.integrate import WearMap, implausible_wear
 from wear.laws import LAWS, ImpactWear
@@ -211,6 +212,7 @@ def run(case: Case, progress: Callable[[str], None] | None = None) -> RunResult:
     starts ("impact", "fem", "coupling", "plate3d", "wear", "surface")."""
     if not isinstance(case, Case):
         raise ValueError(f"case={type(case).__name__} is not a wear.Case")
+    check_work(case, "run")  # a runaway is refused before any work
     notify = progress or (lambda stage: None)
     ball, plate = case.ball.material(), case.plate.material()
     coupling_mode = case.fem.coupling
