@@ -100,3 +100,14 @@ def test_validate_writes_its_report_in_its_own_folder_by_default():
     """The default --out is not the current folder, whose validation.md (e.g. the committed one) it would replace."""
     args = build_parser().parse_args(["validate"])
     assert args.out == "impactwear-validate"
+
+
+def test_sweep_scheduler_that_cannot_be_reached_is_refused_before_the_folder_is_made(tmp_path, capsys):
+    pytest.importorskip("distributed")
+    sweep = tmp_path / "sweep.toml"
+    sweep.write_text('[sweep]\nstage = "impact"\n[grid]\n"impact.angle" = [10, 30]\n', encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["sweep", str(sweep), "--scheduler", "tcp://127.0.0.1:9", "--out", str(out), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "scheduler='tcp://127.0.0.1:9': cannot connect" in err
+    assert not out.exists()
