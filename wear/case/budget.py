@@ -2,7 +2,7 @@ r"""Work bounds: a case whose estimated memory or wall time would not fit is ref
 naming the key the user gave, its value, the estimate and the largest (or smallest) value of that key that fits.
 
 Memory: at most :func:`memory_budget`, the lesser of :data:`MAX_MEMORY` and half this machine's physical memory (read
-with ``os.sysconf``), so that a case refused on no machine never makes one swap. Time: at most :data:`MAX_SECONDS` of
+with ``os.sysconf``), so that no case it accepts makes this machine swap. Time: at most :data:`MAX_SECONDS` of
 estimated work, a fixed bound (a long run is a choice of the user's case, not of the machine).
 
 The estimates (each with the measurement behind it where it is defined) are upper bounds of the peak memory or
@@ -12,6 +12,7 @@ bisection, so that an estimate is written once and its refusal follows from it.
 
 from __future__ import annotations
 
+import math
 import os
 from collections.abc import Callable
 
@@ -85,8 +86,17 @@ def check_budget(
     if best is None:
         fix = f"no {name} in [{valid[0]:g}, {valid[1]:g}] fits with the case's other keys"
     else:
-        fix = f"give {name} {'<=' if increasing else '>='} {best:.4g}"
+        fix = f"give {name} {'<=' if increasing else '>='} {_shown(best, integer, up=not increasing)}"
     raise ValueError(f"{context}{name}={value:g} needs ~{amount} ({what}): {bound}; {fix}")
+
+
+def _shown(value: float, integer: bool, up: bool) -> str:
+    """``value`` as text: an integer as it is, else to 4 significant digits rounded ``up`` or down (toward the cheap
+    end, so that the value shown fits too)."""
+    if integer or value == 0.0:
+        return f"{value:g}"
+    quantum = 10.0 ** (math.floor(math.log10(abs(value))) - 3)
+    return f"{(math.ceil if up else math.floor)(value / quantum) * quantum:.4g}"
 
 
 def _duration(seconds: float) -> str:
