@@ -6,7 +6,8 @@ FE wall time: :math:`c\,N_e\,(n_{load} + n_{unload})\,n_{pass}` with :math:`N_e`
 (:func:`fe_elements`), :math:`c` = :data:`SECONDS_PER_ELEMENT_STEP` and :math:`n_{pass}` the FE passes: a run's
 two-way coupling at most ``fem.max_iterations``, a one-way run or an indentation one, a repeat one per impact computed
 one by one before the blocks (at most ``repeat.max_plastic_impacts`` of the ``repeat.impacts``; the blocks after them
-are bounded by the worn depth, which stops the run). FE memory: :data:`FE_MEMORY`. Wear grid memory:
+are bounded by the worn depth, which stops the run: ``impactwear repeat --impacts 1e9`` on the default case stopped
+at impact 77,114 after 309 computed impacts, 16 min and 0.7 GB on 2 shared cores). FE memory: :data:`FE_MEMORY`. Wear grid memory:
 :data:`BYTES_PER_WEAR_CELL` per cell of a grid of ``wear.points_across`` across the Hertz contact diameter and, along
 the impact, that plus the travel :math:`V_t t_c` (Hertz contact time: an upper bound of the contact centre's travel
 while sliding).
