@@ -101,8 +101,8 @@ def test_a_folder_of_user_files_is_refused_before_any_work(command, tmp_path, ca
 
 @pytest.mark.parametrize("command", list(FAST))
 def test_a_rerun_replaces_its_own_files_and_keeps_the_users(command, tmp_path, capsys):
-    """The files a user puts in an earlier output folder survive a rerun of the command (and of another command
-    into it), while the command's own files are replaced: no stale output of the earlier run is left."""
+    """The files a user puts in an earlier output folder survive a rerun of the command, while the command's own
+    files are replaced: no stale output of the earlier run is left; another command refuses the folder."""
     out = tmp_path / "out"
     args = _args(command, tmp_path)
     assert main([*args, "--out", str(out)]) == 0
@@ -118,13 +118,15 @@ def test_a_rerun_replaces_its_own_files_and_keeps_the_users(command, tmp_path, c
     assert second["complete"] and sorted(second["entries"]) == sorted(first["entries"])
     listed = {*second["entries"], "notes.txt", MANIFEST}
     assert {p.name for p in out.iterdir()} == listed  # nothing else: no temporary, no stale entry
+    # another command's output is refused before any work, never deleted
     other = "run" if command != "run" else "calibrate"
-    assert main([*_args(other, tmp_path), "--out", str(out)]) == 0
-    assert (out / "notes.txt").read_text() == "mine\n"
-    third = read_manifest(out)
-    assert third["command"] == other
-    assert {p.name for p in out.iterdir()} == {*third["entries"], "notes.txt", MANIFEST}
     capsys.readouterr()
+    before = {p.name: p.stat().st_mtime_ns for p in out.iterdir()}
+    assert main([*_args(other, tmp_path), "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and f"is the output folder of `impactwear {command}`" in err[0], err
+    assert {p.name: p.stat().st_mtime_ns for p in out.iterdir()} == before
+    assert read_manifest(out) == second
 
 
 def _bad_outs(tmp_path: Path) -> list[tuple[str, str]]:

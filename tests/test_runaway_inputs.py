@@ -13,11 +13,16 @@ import pytest
 
 from contact import Material, effective_modulus, simulate_impact, simulate_impacts, theory
 from contact.timestep import MAX_HISTORY_STEPS, MAX_STEPS, check_time_step
-from wear import WearLaw
+from wear import WearLaw, run
 from wear.app.cli import main
-from wear.case import Case, default_case
+from wear.case import Case, check_job_case, default_case
+from wear.case.budget import MAX_MEMORY, MAX_SECONDS, fitting_value, memory_budget
+from wear.case.work import fe_elements, fe_memory, fe_seconds, wear_grid_memory
+from wear.chain.forward_model import BYTES_PER_ROW
+from wear.chain.indent import indent_case
+from wear.chain.plate import case_mesh
 from wear.erosion import ImpactResponse, Stream, build_response_table, erode, erode_angles, erode_case, table_axes
-from wear.erosion.memory import MAX_PATCH_MEMORY, check_patch_memory, patch_memory
+from wear.erosion.memory import check_patch_memory, patch_memory
 from wear.erosion.table import MAX_TABLE_ENTRIES
 
 ALUMINA = Material(E=380e9, nu=0.23, density=4000.0)
@@ -123,11 +128,13 @@ def test_schema_grid_range_and_print_default():
 def test_patch_memory_refused_naming_grid_and_frames():
     case = default_case("erode").with_(erosion={"grid": 2048, "frames": 100})
     msg = _refused(lambda: erode_case(case), r"^erosion\.grid=2048 with erosion\.frames=100 needs ~6\.91 GB")
-    assert "at most 2 GB" in msg and "erosion.frames <= 26" in msg
+    limit = memory_budget()  # 2 GB, or half this machine's memory if less
+    frames = int((limit / (8.0 * 2048**2) - 6.0) // 2)  # ((1 + 1) frames + 6) 2048² 8 B <= limit
+    assert f"at most {limit / 1e9:.3g} GB on this machine" in msg and f"erosion.frames <= {frames}" in msg
     # several stream angles keep every run's frames: 4 angles x 10 frames on 2048² is 1.9 GB, 8 angles too much
     _refused(lambda: erode_angles(default_case("erode").with_(erosion={"grid": 2048}), [10.0 * k for k in range(8)]),
              r"^erosion\.grid=2048 with erosion\.frames=10 and 8 stream angles")  # fmt: skip
-    assert patch_memory(2048, 10, 4) < MAX_PATCH_MEMORY < patch_memory(2048, 10, 8)
+    assert patch_memory(2048, 10, 4) < 2e9 < patch_memory(2048, 10, 8)
     check_patch_memory(512, 10)  # the default: 55 MB
 
 
@@ -161,3 +168,101 @@ def test_patch_memory_estimate_bounds_the_measured_peak():
     assert result.n_impacts > 0
     assert 0.5 * patch_memory(256, 10) < peak < patch_memory(256, 10)
     _refused(lambda: erode(table, stream, grid=4096, frames=10), r"^grid=4096 with frames=10 needs ~3\.49 GB")
+
+
+# ---------------------------------------------------------------- the FE plate, the wear grid and the calibration
+
+
+def test_fitting_value_is_the_brute_force_bound_either_way():
+    def need(n):
+        return 3.0 * n * n
+
+    assert fitting_value(need, 300.0, 1, 1000) == max(n for n in range(1, 1001) if need(n) <= 300.0) == 10
+    # a need that falls with the value (a mesh size): the smallest value that fits, to 1e-3
+    assert fitting_value(lambda s: 1.0 / s**2, 16.0, 8.0, 0.1, integer=False) == pytest.approx(0.25, rel=1e-3)
+    assert fitting_value(need, 1.0, 1, 1000) is None
+    assert memory_budget() <= MAX_MEMORY
+
+
+def _fe_run_seconds(passes: int, steps: int = 24) -> float:
+    return fe_seconds(default_case("run").fem.mesh_scale, steps, passes)
+
+
+def _largest(need, limit: float, start: int) -> int:
+    """The largest n >= start with need(n) <= limit, counted up one by one (the reference for the bisection)."""
+    n = start
+    while need(n + 1) <= limit:
+        n += 1
+    return n
+
+
+def test_runaway_keys_refused_before_any_work_naming_the_value_that_fits(tmp_path, capsys):
+    """The issue's runaways: each one line naming the key, its value and the value that fits (from the same
+    estimate, counted up here), within a second, nothing written."""
+    run_case = default_case("run")
+    grid = _largest(lambda n: wear_grid_memory(run_case, n), memory_budget(), 64)
+    plastic = _largest(lambda n: fe_seconds(run_case.fem.mesh_scale, 24, n), MAX_SECONDS, 20)
+    steps = _largest(lambda n: _fe_run_seconds(8, n + 8), MAX_SECONDS, 16)
+    cases = [
+        (
+            ["repeat", "--impacts", "1e5", "--set", "repeat.max_plastic_impacts=100000"],
+            "repeat.max_plastic_impacts=100000 needs ~",
+            f"give repeat.max_plastic_impacts <= {plastic}",
+        ),
+        (["run", "--set", "fem.load_steps=2000"], "fem.load_steps=2000 needs ~", f"give fem.load_steps <= {steps}"),
+        (
+            ["run", "--set", "wear.points_across=2000"],
+            "wear.points_across=2000 needs ~",
+            f"give wear.points_across <= {grid}",
+        ),
+        (["indent", "--set", "fem.mesh_scale=0.25"], "fem.mesh_scale=0.25 needs ~", "give fem.mesh_scale >= 0.2"),
+    ]
+    for argv, named, fix in cases:
+        out = tmp_path / "out"
+        start = time.perf_counter()
+        assert main([*argv, "--out", str(out)]) == 2
+        assert time.perf_counter() - start < 2 * QUICK
+        err = capsys.readouterr().err.strip()
+        assert len(err.splitlines()) == 1 and named in err and fix in err, err
+        assert not out.exists()
+    # the mesh scale that fits is the one whose estimated memory is the budget
+    (line,) = _refused_cli(["indent", "--set", "fem.mesh_scale=0.25"], tmp_path, capsys)
+    smallest = float(line.rsplit(">= ", 1)[1])
+    assert fe_memory(smallest) <= memory_budget() < fe_memory(smallest * 0.999)
+
+
+def _refused_cli(argv, tmp_path, capsys):
+    assert main([*argv, "--out", str(tmp_path / "out")]) == 2
+    return capsys.readouterr().err.strip().splitlines()
+
+
+def test_calibration_of_too_many_rows_refused_naming_the_file(tmp_path, capsys):
+    data = tmp_path / "data.csv"
+    data.write_text("angle_deg,speed_m_s,erosion_kg_per_kg\n" + "30,40,1e-4\n" * 200_000, encoding="utf-8")
+    base, per_row = BYTES_PER_ROW
+    rows = _largest(lambda n: base + per_row * n, memory_budget(), 1)
+    start = time.perf_counter()
+    (line,) = _refused_cli(["calibrate", str(data), "--law", "dnv"], tmp_path, capsys)
+    assert time.perf_counter() - start < 5 * QUICK  # reading 200,000 rows; the impacts took minutes
+    assert f"data={str(data)!r}: rows=200000 needs ~" in line and f"give rows <= {rows}" in line
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.filterwarnings("ignore:elastic ball")
+def test_default_cases_fit_and_the_element_estimate_bounds_the_meshes():
+    """The default cases pass; the element estimate is at or above the meshes the plate is built on (generated
+    here at the default case's overlap), within 40%."""
+    for job in ("run", "repeat", "indent"):
+        check_job_case(default_case(job), job)
+    # a repeat computes at most its impacts one by one: few impacts fit whatever max_plastic_impacts says
+    check_job_case(default_case("repeat").with_(repeat={"impacts": 5, "max_plastic_impacts": 100000}), "repeat")
+    case = default_case("run")
+    for scale in (2.0, 1.0, 0.5):
+        elements = case_mesh(case.with_(fem={"mesh_scale": scale}), 2e-5).t.shape[1]
+        assert elements <= fe_elements(scale) <= 1.4 * elements
+
+
+def test_library_entry_points_refuse_the_runaways_too():
+    _refused(lambda: run(default_case("run").with_(fem={"load_steps": 2000})), r"^fem\.load_steps=2000 needs ~")
+    indent = default_case("indent").with_(fem={"mesh_scale": 0.25})
+    _refused(lambda: indent_case(indent), r"^fem\.mesh_scale=0\.25 needs ~")

@@ -41,6 +41,7 @@ __all__ = [
     "axisymmetric_wear_depth",
     "scar_extent",
     "MIN_POINTS_ACROSS",
+    "implausible_wear",
 ]
 
 #: Smallest accepted number of grid points across the largest contact diameter.
@@ -93,6 +94,25 @@ class WearMap:
     def centreline(self) -> np.ndarray:
         """Depth (m) along y = 0, shape (nx,)."""
         return self.depth[int(np.argmin(np.abs(self.y)))]
+
+
+def implausible_wear(wm: WearMap, contact_radius: float, ball_mass: float) -> list[str]:
+    """One line per way in which ``wm``, the wear of one impact, cannot be what one impact does: a depth beyond the
+    largest contact radius ``contact_radius`` (m; the contact mechanics assume a surface that stays nearly flat over
+    the contact), or a worn mass beyond the ball's ``ball_mass`` (kg; the ball's kinetic energy cannot remove more
+    than itself in any published wear mechanism). Both point to a wear coefficient far too large for the case."""
+    lines = []
+    if wm.max_depth_m > contact_radius:
+        lines.append(
+            f"the wear depth of one impact, {wm.max_depth_m:.3g} m, exceeds the contact radius {contact_radius:.3g} m:"
+            " the wear coefficient (wear.K or the law's constant) is far too large for this case"
+        )
+    if wm.mass_kg > ball_mass:
+        lines.append(
+            f"the worn mass of one impact, {wm.mass_kg:.3g} kg, exceeds the ball's mass {ball_mass:.3g} kg: the wear "
+            "coefficient (wear.K or the law's constant) is far too large for this case"
+        )
+    return lines
 
 
 @dataclass(frozen=True, eq=False)

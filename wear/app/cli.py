@@ -48,13 +48,16 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
-#: A negative number argparse would take for an option (it knows only -1 and -1.5, not -1e-6).
-_NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)$")
+#: A negative number argparse would take for an option (it knows only -1 and -1.5, not -1e-6), or a comma-separated
+#: list of numbers that starts with one (``--angles -5,30``).
+_NUMBER = r"(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?"
+_NEGATIVE_NUMBER = re.compile(rf"^-{_NUMBER}(,\s*[-+]?{_NUMBER})*$")
 
 
 def join_negative_values(argv: list[str]) -> list[str]:
-    """``--opt -1e-6`` as ``--opt=-1e-6``, so that a negative number in exponent notation reaches the option (and
-    its range check) instead of argparse's "expected one argument"."""
+    """``--opt -1e-6`` as ``--opt=-1e-6`` (and ``--opt -5,30`` as ``--opt=-5,30``), so that a negative number in
+    exponent notation or a list starting with one reaches the option (and its range check) instead of argparse's
+    "expected one argument"."""
     out: list[str] = []
     for arg in argv:
         if out and _NEGATIVE_NUMBER.match(arg) and out[-1].startswith("--") and "=" not in out[-1]:

@@ -5,6 +5,7 @@ degrees from the plate normal.
 
 from __future__ import annotations
 
+import difflib
 import math
 from dataclasses import dataclass, field, fields, replace
 from typing import Any
@@ -79,20 +80,38 @@ class Case:
         """A case from a dict of tables (e.g. a TOML document) laid over ``base`` (default ``Case()``); unknown
         tables and keys and bad values are one-line ``ValueError`` naming ``table.key``."""
         base = cls() if base is None else base
+        return base.with_tables(cls.tables_from_dict(tables, base))
+
+    @staticmethod
+    def tables_from_dict(tables: dict[str, Any], base: Case) -> dict[str, Any]:
+        """The checked tables (name → table) of a dict of tables laid over ``base``'s, each checked on its own
+        (unknown tables and keys, with the closest known name, and bad values: one-line ``ValueError`` naming
+        ``table.key``); :meth:`with_tables` makes them a case."""
         if not isinstance(tables, dict):
             raise ValueError(f"case={tables!r} is not a table of tables")
         parts = {}
         for name, values in tables.items():
             if name not in TABLES:
-                raise ValueError(f"[{name}] is not a known case table: known tables are {', '.join(TABLES)}")
+                raise ValueError(
+                    f"[{name}] is not a known case table{_closest(name, TABLES, '[{}]')}: known tables are "
+                    f"{', '.join(TABLES)}"
+                )
             if not isinstance(values, dict):
                 raise ValueError(f"{name}={values!r} is not a table: write it as [{name}]")
             known = TABLES[name].keys()
             for k in values:
                 if k not in known:
-                    raise ValueError(f"{name}.{k} is not a known key: keys of [{name}] are {', '.join(known)}")
+                    raise ValueError(
+                        f"{name}.{k} is not a known key{_closest(k, known, name + '.{}')}: keys of [{name}] are "
+                        f"{', '.join(known)}"
+                    )
             parts[name] = replace(getattr(base, name), **values)
-        return replace(base, **parts)
+        return parts
+
+    def with_tables(self, parts: dict[str, Any]) -> Case:
+        """A copy with whole tables replaced (checked tables of :meth:`tables_from_dict`); the whole case is
+        checked again (its time step)."""
+        return replace(self, **parts)
 
     def to_dict(self, tables: tuple[str, ...] | None = None) -> dict[str, dict[str, Any]]:
         """Tables of values (None for absent optional keys), all tables or only ``tables``."""
@@ -127,3 +146,9 @@ class Case:
         if args.get("history") or args.get("histories"):
             self.check_time_step(histories=True)
         return args
+
+
+def _closest(name: str, known: Any, form: str) -> str:
+    """`` (did you mean X?)`` with the known name closest to a mistyped ``name`` written in ``form``, or ""."""
+    match = difflib.get_close_matches(name, list(known), n=1)
+    return f" (did you mean {form.format(match[0])}?)" if match else ""

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from wear.case.case import Case
 from wear.case.jobs import JOBS
+from wear.case.work import check_work
 
 __all__ = ["FEM_KEYS_OF_COUPLING", "FEM_KEYS_OF_MODEL", "SOLID_FEM_KEYS", "check_job_case", "fem_keys_read"]
 
@@ -42,7 +43,8 @@ def check_job_case(case: Case, job: str) -> Case:
     that reads ``[fem]`` runs only the plate models (``fem.model``) of its :attr:`wear.case.Job.fem_models`, so
     that a model it would not run is refused, never ignored; a ``[fem]`` key the job would not read for this case
     (:func:`fem_keys_read`) is refused at any value but the job's default; a job that always runs one coupling
-    refuses another ``fem.coupling``."""
+    refuses another ``fem.coupling``; work past the memory or time budget is refused
+    (:func:`wear.case.work.check_work`)."""
     spec = JOBS[job]
     if "fem" in spec.tables and case.fem.model not in spec.fem_models:
         accepted = " or ".join(repr(m) for m in spec.fem_models)
@@ -60,4 +62,5 @@ def check_job_case(case: Case, job: str) -> Case:
         for key, value in case.fem.values().items():
             if key not in read and value != getattr(default, key):
                 raise ValueError(f"fem.{key}={value!r}: {why}; leave it out (default {getattr(default, key)!r})")
+    check_work(case, job)
     return case

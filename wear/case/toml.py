@@ -34,12 +34,42 @@ def parse_case(text: str, job: str = "run", source: str = "case", name: str = "c
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
+        twice = _given_twice(text)
+        if twice:
+            raise ValueError(f"{name}={source!r}: {twice}; give each once") from None
         raise ValueError(f"{name}={source!r} is not valid TOML: {exc}") from None
+    # every key is checked before a missing table is named: a mistyped table or key would otherwise be reported
+    # as the table it was meant to be
+    base = default_case(job)
+    tables = Case.tables_from_dict(data, base)
     for table in JOBS[job].required:
         if table not in data:
             need = ", ".join(f"[{t}]" for t in JOBS[job].required)
             raise ValueError(f"[{table}] is missing from {name}={source!r}: a {job} case needs {need}")
-    return Case.from_dict(data, base=default_case(job))
+    return base.with_tables(tables)
+
+
+def _given_twice(text: str) -> str:
+    """What the TOML ``text`` gives twice, as ``impact.angle is given twice (lines 3 and 5)`` (``[impact] is
+    declared twice`` for a table), or "" if no key or table is repeated; a plain line scan (tomllib names only the
+    line, not the key)."""
+    seen: dict[str, int] = {}
+    table = ""
+    for number, raw in enumerate(text.splitlines(), start=1):
+        line = raw.split("#", 1)[0].strip()
+        if line.startswith("[") and not line.startswith("[["):
+            table = line.strip("[] ")
+            what, shown = f"[{table}]", f"[{table}] is declared"
+        elif "=" in line:
+            key = line.split("=", 1)[0].strip().strip("\"'")
+            what = f"{table}.{key}" if table else key
+            shown = f"{what} is given"
+        else:
+            continue
+        if what in seen:
+            return f"{shown} twice (lines {seen[what]} and {number})"
+        seen[what] = number
+    return ""
 
 
 def load_case(path: str | os.PathLike | None, job: str = "run", name: str = "case") -> Case:

@@ -13,7 +13,7 @@ from contact import ImpactResult
 from fem import CoupledImpact, IndentationResult, PlateCycle, worst_regime
 from fem.solid_coupling import SolidCoupledImpact
 from wear.case import Case
-from wear.chain.plate import case_mesh, wear_constants
+from wear.chain.plate import case_mesh, check_impact_overlap, wear_constants
 from wear.integrate import WearMap, axisymmetric_wear_depth
 from wear.laws import ImpactWear, wear_of_impact
 from wear.pressure import PressureHistory, pressure_history, sliding_speed
@@ -48,6 +48,7 @@ def impact_wear(case: Case, impact: ImpactResult, fe_table=None, plate_work: flo
 def one_way(case: Case, impact: ImpactResult) -> IndentationResult:
     """The FE plate along the impact's overlap history (``fem.indent_impact``, ``fem.load_steps + unload_steps``
     increments, the mesh of ``fem.mesh_scale``): the FE stage of a one-way run."""
+    check_impact_overlap(case, impact.max_overlap)
     mesh = case_mesh(case, impact.max_overlap)
     steps = case.fem.load_steps + case.fem.unload_steps
     return fem.indent_impact(impact, case.plate.material(), steps=steps, mesh=mesh)

@@ -15,7 +15,7 @@ from wear.case import TABLES, Case, check_job_case
 from wear.case.check import fem_keys_read
 from wear.chain.calibration_data import CalibrationData
 from wear.chain.fit import Constant, LogFit, log_fit
-from wear.chain.forward_model import ForwardModel, fe_coupled
+from wear.chain.forward_model import ForwardModel, check_rows, fe_coupled
 from wear.chain.plate import wear_constants
 from wear.laws import oka_constants
 
@@ -206,6 +206,7 @@ def calibrate(case: Case, data: CalibrationData, free: tuple[str, ...] | None = 
             "at least as many rows as constants"
         )
     check_data_keys(case, data, free)
+    check_rows(data)
     t0 = time.perf_counter()
     model = ForwardModel(case, data)
     t1 = time.perf_counter()

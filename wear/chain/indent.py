@@ -9,6 +9,7 @@ zero.
 
 from __future__ import annotations
 
+import math
 import time
 from dataclasses import dataclass
 
@@ -22,9 +23,10 @@ from contact.theory import PAPER_YIELD_COEFFICIENT, FirstYield, first_yield, her
 from fem import IndentationResult
 from fem.axisymmetric.result import join
 from wear.case import Case
+from wear.case.work import check_work
 from wear.chain.plate import case_mesh
 
-__all__ = ["IndentRun", "indent_case", "DEFAULT_YIELD_MULTIPLE", "DEFAULT_ELASTIC_OVERLAP"]
+__all__ = ["IndentRun", "indent_case", "largest_force", "DEFAULT_YIELD_MULTIPLE", "DEFAULT_ELASTIC_OVERLAP"]
 
 #: Default depth of a plate that yields: w = δ/δ_c.
 DEFAULT_YIELD_MULTIPLE = 20.0
@@ -91,6 +93,25 @@ def _overlap_for_force(force: float, radius: float, e_star: float, exact: FirstY
     return 1.25 * w * exact.overlap
 
 
+def largest_force(case: Case) -> float:
+    """The largest ``max_force`` (N) of :func:`indent_case` whose estimated overlap (Hertz, or Kogut & Etsion past
+    first yield, +25%) stays within the ball radius that the FE plate is built for (bisection in log F to 1e-9)."""
+    radius = case.ball.radius
+    plate = case.plate.material()
+    e_star = effective_modulus(case.ball.material(), plate)
+    exact = None if plate.yield_strength is None else first_yield(radius, e_star, plate.yield_strength, plate.nu)
+    # brackets in log F about Hertz's force at overlap R, 4/3 E* R^2 (Johnson 1985, Eq. 4.23)
+    hertz = math.log(4.0 / 3.0 * e_star * radius**2)
+    low, high = hertz - 80.0, hertz + 20.0
+    while high - low > 1e-9:
+        mid = 0.5 * (low + high)
+        if _overlap_for_force(math.exp(mid), radius, e_star, exact) <= radius:
+            low = mid
+        else:
+            high = mid
+    return math.exp(low)
+
+
 def indent_case(
     case: Case,
     *,
@@ -103,6 +124,7 @@ def indent_case(
     isotropic hardening; ``mesh``: a user mesh (or mesh file) instead of the case's."""
     if max_overlap is not None and max_force is not None:
         raise ValueError("max_overlap and max_force are both given: give one (m or N)")
+    check_work(case, "indent")  # a runaway is refused before any work
     radius = case.ball.radius
     plate = case.plate.material()
     if plate.is_rigid:
@@ -117,7 +139,8 @@ def indent_case(
     if max_overlap is not None:
         d_max = check_number("max_overlap", max_overlap, low=0.0, low_open=True, high=radius, units="m")
     elif max_force is not None:
-        max_force = check_number("max_force", max_force, low=0.0, low_open=True, units="N")
+        high = largest_force(case)
+        max_force = check_number("max_force", max_force, low=0.0, low_open=True, high=high, units="N")
         d_max = _overlap_for_force(max_force, radius, e_star, exact)
     else:
         d_max = DEFAULT_YIELD_MULTIPLE * exact.overlap if exact is not None else DEFAULT_ELASTIC_OVERLAP * radius

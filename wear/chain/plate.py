@@ -12,7 +12,11 @@ from contact import ImpactResult, TabulatedLaw, simulate_impact
 from fem.axisymmetric.mesh import DEFAULT_PARAMETERS
 from wear.case import Case
 
-__all__ = ["case_mesh", "case_plate", "coupling_settings", "impact_on_law", "wear_constants"]
+__all__ = ["case_mesh", "case_plate", "check_impact_overlap", "coupling_settings", "impact_on_law", "wear_constants"]
+
+#: Hertz's maximum overlap grows as the normal speed to the power 4/5 (Johnson 1985, Eq. 11.24); a yielding plate's
+#: grows faster, so the speed scaled by this power's inverse is one the FE plate can take.
+HERTZ_OVERLAP_SPEED_POWER = 0.8
 
 
 def case_mesh(case: Case, max_overlap: float, growth: float = 1.0) -> MeshTri:
@@ -36,12 +40,28 @@ def case_mesh(case: Case, max_overlap: float, growth: float = 1.0) -> MeshTri:
     )
 
 
+def check_impact_overlap(case: Case, max_overlap: float) -> None:
+    """A one-line ``ValueError`` naming ``impact.speed`` when ``max_overlap`` (m), the FE plate's loading that the
+    case's impact asks for, is beyond the ball radius the FE plate is built for, with the largest speed that fits:
+    the speed scaled by (R / max_overlap)^(1/0.8) (:data:`HERTZ_OVERLAP_SPEED_POWER`)."""
+    radius = case.ball.radius
+    if max_overlap <= radius:
+        return
+    speed = case.impact.speed
+    largest = speed * (radius / max_overlap) ** (1.0 / HERTZ_OVERLAP_SPEED_POWER)
+    raise ValueError(
+        f"impact.speed={speed:g} m/s drives the ball {max_overlap:.3g} m into the FE plate, beyond the ball radius "
+        f"{radius:g} m that the plate is built for: give impact.speed <= {largest:.3g} m/s"
+    )
+
+
 def case_plate(case: Case, max_overlap: float, growth: float = 1.0, taper_depth: float | None = None) -> fem.Plate:
     """A virgin :class:`fem.Plate` of the case's plate (an elastic ball enters through E*) on :func:`case_mesh`,
-    sized for ``max_overlap`` (m)."""
+    sized for ``max_overlap`` (m), the loading its impact asks for (:func:`check_impact_overlap`)."""
     ball, plate = case.ball.material(), case.plate.material()
     if plate.is_rigid:
         raise ValueError("plate.rigid=true: the FE plate needs a deformable plate (set plate.rigid = false)")
+    check_impact_overlap(case, max_overlap)
     mesh = case_mesh(case, max_overlap, growth)
     return fem.Plate(
         case.ball.radius, plate, max_overlap, ball=None if ball.is_rigid else ball, mesh=mesh, taper_depth=taper_depth

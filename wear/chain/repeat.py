@@ -63,7 +63,7 @@ from scipy.ndimage import gaussian_filter1d
 
 import fem
 from contact import effective_modulus
-from contact.theory import speed_components
+from contact.theory import speed_components, sphere_mass
 from wear.case import Case, check_job_case
 from wear.chain.axisymmetric_run import impact_wear
 from wear.chain.check import halfspace_check
@@ -72,7 +72,7 @@ from wear.chain.records import ComputedImpact, ImpactRecord, RepeatResult, yield
 from wear.chain.single import estimate_impact
 from wear.chain.solid_repeat import solid_repeat
 from wear.chain.wear_accumulator import WearAccumulator
-from wear.integrate import WearMap
+from wear.integrate import WearMap, implausible_wear
 
 __all__ = [
     "REPEATS",
@@ -200,6 +200,7 @@ def axisymmetric_repeat(
     done, computed, shakedown, plastic_run = 0, 0, None, 0
     last = None
     shaken = False
+    stop = False  # the first impact alone wears deeper than the limit
     gave_up = False  # no shakedown within max_plastic_impacts: blocks go on, one computed impact between them
     last_increment = 0.0
     d_est = estimate.max_overlap
@@ -251,15 +252,20 @@ def axisymmetric_repeat(
                 count = int(room / step_depth)
                 if count < 1:
                     notes.append(
-                        f"stopped after impact {done}: the worn depth would exceed {wear_limit:.3g} m, half "
+                        f"stopped after impact {max(done, 1)}: the worn depth would exceed {wear_limit:.3g} m, half "
                         "the depth over which the FE mesh's nodes follow the wear (about the contact radius);"
                         " beyond it the small-strain FE plate and its moved mesh are not valid"
                     )
-                    break
+                    if records:
+                        break
+                    # the first impact alone wears deeper: it is reported, on the surface it met, and the run ends
+                    count, stop = 1, True
         if acc is None:
+            ball_mass = sphere_mass(case.ball.radius, ball.density)
+            notes.extend(implausible_wear(last.wear, last.coupled.contact_radius, ball_mass))
             acc = WearAccumulator(last.wear)
         acc.add(last.wear, count)
-        if spec.geometry_update:
+        if spec.geometry_update and not stop:
             fe_plate.move_surface(count * last.wear_profile)
         done += count
         total = acc.map()
@@ -301,6 +307,8 @@ def axisymmetric_repeat(
             on_computed(done, fe_plate)
         if progress is not None:
             progress(done, spec.impacts)
+        if stop:
+            break
     if shakedown is None:
         notes.append(f"no impact without new plastic strain (tolerance Δᾱ <= {tolerance:.3g})")
     result = RepeatResult(

@@ -28,17 +28,19 @@ from __future__ import annotations
 
 import math
 import time
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
 
 from contact import ImpactResult, Material, effective_modulus, simulate_impact
-from contact.theory import PAPER_YIELD_COEFFICIENT, first_yield, speed_components, yield_velocity
+from contact.theory import PAPER_YIELD_COEFFICIENT, first_yield, speed_components, sphere_mass, yield_velocity
 from fem import CoupledImpact, PlateCycle
 from fem.axisymmetric.result import IndentationResult
 from fem.solid_coupling import SolidCoupledImpact
 from wear.case import JOBS, Case
+from wear.case.work import check_work
 from wear.chain.plates import PlateRun, couple_plate, prepare_case
-from wear.integrate import WearMap
+from wear.integrate import WearMap, implausible_wear
 from wear.laws import LAWS, ImpactWear
 from wear.pressure import PressureHistory
 from wear.surface import DeformedSurface
@@ -210,6 +212,7 @@ def run(case: Case, progress: Callable[[str], None] | None = None) -> RunResult:
     starts ("impact", "fem", "coupling", "plate3d", "wear", "surface")."""
     if not isinstance(case, Case):
         raise ValueError(f"case={type(case).__name__} is not a wear.Case")
+    check_work(case, "run")  # a runaway is refused before any work
     notify = progress or (lambda stage: None)
     ball, plate = case.ball.material(), case.plate.material()
     coupling_mode = case.fem.coupling
@@ -230,6 +233,8 @@ def run(case: Case, progress: Callable[[str], None] | None = None) -> RunResult:
     estimate = timed("impact", estimate_impact, case)
     on_plate = couple_plate(case, estimate, timed)
     ph, wm, worn = timed("wear", on_plate.wear, case)
+    for line in implausible_wear(wm, on_plate.impact.max_contact_radius, sphere_mass(case.ball.radius, ball.density)):
+        warnings.warn(line, stacklevel=2)
     surface = timed("surface", on_plate.surface, wm)
     info = on_plate.yield_info(_yield_info(case, ball, plate))
     return RunResult(

@@ -87,7 +87,7 @@ def erode(
     Raises ValueError naming the parameter for an impossible stream (``concentration``/``mass_flux`` denser
     than close-packed particles), a patch smaller than a particle or a footprint (``patch_size``), a grid
     that does not resolve the contact (``grid``/``patch_size``), patch arrays beyond
-    :data:`wear.erosion.memory.MAX_PATCH_MEMORY` (``grid``/``frames``), or too many impacts (``exposure_time``).
+    :func:`wear.case.budget.memory_budget` (``grid``/``frames``), or too many impacts (``exposure_time``).
     """
     if not isinstance(table, ResponseTable):
         raise ValueError(f"table={table!r} is not a wear.erosion.table.ResponseTable (build_response_table)")

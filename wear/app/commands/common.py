@@ -64,8 +64,8 @@ def add_out_option(parser: argparse.ArgumentParser, default: str) -> None:
         default=default,
         metavar="DIR",
         help=f"output folder (default: {default}): a new or empty folder, or an earlier output folder "
-        "of impactwear, whose files are replaced while every other file in it is left alone; a "
-        "folder holding other files is refused before any work",
+        "of this command, whose files are replaced while every other file in it is left alone; a "
+        "folder holding other files, or another command's output, is refused before any work",
     )
 
 

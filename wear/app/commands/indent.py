@@ -26,7 +26,7 @@ from wear.app.commands.common import (
 )
 from wear.app.outputs.folder import check_output_folder
 from wear.app.outputs.indent import write_indent
-from wear.chain.indent import indent_case
+from wear.chain.indent import indent_case, largest_force
 
 DEFAULT_OUT = "impactwear-indent"
 
@@ -79,7 +79,7 @@ def main(args: argparse.Namespace) -> int:
     if args.max_overlap is not None:
         check_number("--max-overlap", args.max_overlap, low=0.0, low_open=True, high=case.ball.radius, units="m")
     if args.max_force is not None:
-        check_number("--max-force", args.max_force, low=0.0, low_open=True, units="N")
+        check_number("--max-force", args.max_force, low=0.0, low_open=True, high=largest_force(case), units="N")
     with collect_notes() as notes:
         run = indent_case(
             case, max_overlap=args.max_overlap, max_force=args.max_force, hardening=args.hardening, mesh=args.mesh

@@ -11,7 +11,7 @@ import argparse
 import sys
 
 from wear.app.outputs.folder import check_writable_folder
-from wear.app.reproduce.run import reproduce
+from wear.app.reproduce.run import FIGURES, reproduce
 
 HELP = "recompute the paper's figures (PNG) from this toolkit and write reproduce.md"
 
@@ -24,6 +24,9 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def main(args: argparse.Namespace) -> int:
+    unknown = [n for n in args.only or () if n not in FIGURES]
+    if unknown:
+        raise ValueError(f"--only={unknown[0]!r} is not a figure: choose from {', '.join(FIGURES)}")
     check_writable_folder(args.out)
 
     def progress(name: str) -> None:

@@ -11,11 +11,15 @@ Exit status: 0 all cases ok, 1 some case failed, 2 bad sweep file or options, 13
 from __future__ import annotations
 
 import argparse
+import re
 import sys
 
 from wear.app.sweep.execution import SweepAborted
 from wear.app.sweep.runner import failed_lines, run_sweep, summary_line
 from wear.app.sweep.spec import load_sweep
+
+#: A Dask scheduler address: ``tcp://host:8786``, ``tls://host:8786``, ``inproc://...`` or ``host:8786``.
+_ADDRESS = re.compile(r"^([a-z][a-z0-9+.-]*://\S+|[\w.-]+:\d+)$")
 
 HELP = "run a parameter sweep (SWEEP.toml) on local processes or a Dask cluster; reruns resume"
 
@@ -43,6 +47,11 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def main(args: argparse.Namespace) -> int:
+    if args.scheduler is not None and not _ADDRESS.match(args.scheduler):
+        raise ValueError(
+            f"--scheduler={args.scheduler!r} is not a Dask scheduler address: give PROTOCOL://HOST:PORT or HOST:PORT, "
+            "e.g. tcp://host:8786"
+        )
     spec = load_sweep(args.sweep)
     try:
         outcome = run_sweep(

@@ -19,8 +19,14 @@ from wear.app.validation.runner import render_report, run_validation, write_repo
 HELP = "run every validation check (contact, fem, wear) and write validation.md; exit 1 if any fails"
 
 
+#: The default folder of validation.md: its own, so that a validation.md in the current folder is never replaced.
+DEFAULT_OUT = "impactwear-validate"
+
+
 def configure(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--out", default=".", metavar="DIR", help="folder of validation.md (default: current)")
+    parser.add_argument(
+        "--out", default=DEFAULT_OUT, metavar="DIR", help=f"folder of validation.md (default: {DEFAULT_OUT})"
+    )
     parser.add_argument("--report", metavar="PATH", help="write the report to this file instead of DIR/validation.md")
     parser.add_argument("--quick", action="store_true", help="reduced sizes (the test suite's mode)")
     parser.add_argument("--only", action="append", metavar="TEXT", help="run the groups whose name contains TEXT")

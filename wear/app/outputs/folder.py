@@ -5,7 +5,7 @@ An output folder is new, empty, or one impactwear wrote: such a folder holds the
 command and the entries it wrote). A non-empty folder without a manifest holds the user's files: the command refuses
 it before any work (:func:`check_output_folder`: one line, exit status 2). In a folder of its own, a new run replaces
 exactly the entries the manifest lists and leaves every other file alone (notes a user put beside the results
-survive).
+survive); the output folder of another command is refused (its results are never deleted).
 
 The new output is built in a hidden temporary folder (``.NAME.partial-PID-XXXX``, inside the target when it exists,
 beside it otherwise), then moved in by :func:`output_folder`:
@@ -94,7 +94,8 @@ def check_writable_folder(path: str | os.PathLike, option: str = "--out") -> Pat
 def check_output_folder(path: str | os.PathLike, command: str, option: str = "--out") -> Path:
     """``path`` as a usable output folder of ``command``, checked before any work; ValueError (one line naming
     ``option`` and the value) when it is a file, lies under a file, cannot be written (:func:`check_writable_folder`),
-    or is a non-empty folder impactwear did not write (or a resumable folder of another command)."""
+    or is a non-empty folder impactwear did not write, or the output folder of another command (whose results
+    replacing it would delete)."""
     target = check_writable_folder(path, option)
     shown = f"{option}={str(path)!r}"
     if target.is_dir():
@@ -104,15 +105,15 @@ def check_output_folder(path: str | os.PathLike, command: str, option: str = "--
             listed = ", ".join(foreign[:3]) + (f" and {len(foreign) - 3} more" if len(foreign) > 3 else "")
             raise ValueError(
                 f"{shown} holds files impactwear did not write ({listed}): give a new or empty folder, "
-                "or an earlier output folder of impactwear (its files are replaced, nothing else is "
+                "or an earlier output folder of this command (its files are replaced, nothing else is "
                 "touched)"
             )
         if manifest is not None:
             owner = manifest.get("command")
-            if owner != command and (owner in RESUMABLE or command in RESUMABLE):
+            if owner != command:  # its results are another command's: replacing them would delete them
                 raise ValueError(
                     f"{shown} is the output folder of `impactwear {owner}`: give `impactwear "
-                    f"{command}` a new or empty folder"
+                    f"{command}` a new or empty folder (or its own earlier output folder)"
                 )
     return target
 

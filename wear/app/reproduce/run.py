@@ -30,13 +30,13 @@ def reproduce(out: str | os.PathLike, *, quick: bool = False, only=None, progres
     ``out/reproduce.md``. ``progress(name)`` is called before each figure. A figure whose computation raises is
     listed in reproduce.md as not produced, with the error. Returns the reports."""
     out = Path(out)
-    (out / "figures").mkdir(parents=True, exist_ok=True)
     names = list(FIGURES)
     if only:
         unknown = [n for n in only if n not in names]
         if unknown:
             raise ValueError(f"only={unknown[0]!r} is not a figure: choose from {', '.join(names)}")
         names = [n for n in names if n in only]
+    (out / "figures").mkdir(parents=True, exist_ok=True)
     reports = []
     for name in names:
         if progress is not None:

@@ -35,7 +35,7 @@ from pathlib import Path
 
 from tqdm import tqdm
 
-from wear.app.outputs.folder import claim_output_folder
+from wear.app.outputs.folder import check_output_folder, claim_output_folder
 from wear.app.outputs.writer import remove_stale_temps, write_text
 from wear.app.sweep.execution import dask_client, run_dask, run_local
 from wear.app.sweep.results import write_outputs
@@ -103,7 +103,19 @@ def run_sweep(
     for name, value in (("workers", workers), ("dask_local", dask_local)):
         if value is not None and (isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= 4096):
             raise ValueError(f"{name}={value!r} is out of range: must be an integer in [1, 4096] processes")
-    out = claim_output_folder(out, "sweep", ENTRIES)
+    check_output_folder(out, "sweep")
+    # an existing cluster that cannot be reached is refused before the folder is made
+    client = None if scheduler is None else dask_client(None, scheduler)
+    try:
+        return _run_sweep(spec, claim_output_folder(out, "sweep", ENTRIES), workers, dask_local, client, quiet)
+    finally:
+        if client is not None:
+            client.close()
+
+
+def _run_sweep(spec: SweepSpec, out: Path, workers, dask_local, client, quiet: bool) -> SweepOutcome:
+    """:func:`run_sweep` in its claimed folder ``out`` (``client``: the existing cluster's, which the caller
+    closes)."""
     (out / "cases").mkdir(exist_ok=True)
     remove_stale_temps(out / "cases")
     if spec.source:
@@ -147,15 +159,16 @@ def run_sweep(
         bar.update(1)
 
     try:
-        if pending and (dask_local is not None or scheduler is not None):
-            client = dask_client(dask_local, scheduler)
+        if pending and client is not None:
+            run_dask(pending, spec.stage, client, done)
+        elif pending and dask_local is not None:
+            local = dask_client(dask_local, None)
             try:
-                run_dask(pending, spec.stage, client, done)
+                run_dask(pending, spec.stage, local, done)
             finally:
-                cluster = client.cluster if dask_local is not None else None
-                client.close()
-                if cluster is not None:
-                    cluster.close()
+                cluster = local.cluster
+                local.close()
+                cluster.close()
         elif pending:
             run_local(pending, spec.stage, workers or os.cpu_count() or 1, done)
     except KeyboardInterrupt:
