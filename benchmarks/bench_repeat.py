@@ -59,9 +59,11 @@ def run(impacts: int, fraction: float, shortcuts: bool = True):
 def compare_solvers(impacts: int, fraction: float) -> None:
     fast, t_fast = run(impacts, fraction, shortcuts=True)
     full, t_full = run(impacts, fraction, shortcuts=False)
-    print(f"{impacts} impacts, surface_fraction {fraction:g}: elastic shortcuts {t_fast:.1f} s "
-          f"({fast.computed} computed, {fast.elastic_computed} of them elastic), Newton every step {t_full:.1f} s "
-          f"({full.computed} computed): speed-up {t_full / t_fast:.2f}x")  # fmt: skip
+    print(
+        f"{impacts} impacts, surface_fraction {fraction:g}: elastic shortcuts {t_fast:.1f} s "
+        f"({fast.computed} computed, {fast.elastic_computed} of them elastic), Newton every step {t_full:.1f} s "
+        f"({full.computed} computed): speed-up {t_full / t_fast:.2f}x"
+    )
     worst = {}
     for a, b in zip(fast.records, full.records, strict=False):
         for name in ("surface_depth", "total_wear_volume", "dent_depth", "max_pressure", "max_force"):
@@ -69,8 +71,11 @@ def compare_solvers(impacts: int, fraction: float) -> None:
             if ref:
                 worst[name] = max(worst.get(name, 0.0), abs(getattr(a, name) / ref - 1.0))
     same_rows = [(r.first, r.count) for r in fast.records] == [(r.first, r.count) for r in full.records]
-    print(f"  same rows: {same_rows}; largest relative difference: "
-          + ", ".join(f"{k} {v:.1e}" for k, v in worst.items()) + "\n")  # fmt: skip
+    print(
+        f"  same rows: {same_rows}; largest relative difference: "
+        + ", ".join(f"{k} {v:.1e}" for k, v in worst.items())
+        + "\n"
+    )
 
 
 def main() -> None:

@@ -20,6 +20,7 @@ import warnings
 import numpy as np
 
 from wear.case import JOBS
+from wear.case.check import on_plate
 from wear.chain.repeat import repeat
 
 
@@ -51,7 +52,7 @@ def main() -> None:
 
     result = repeat(case, progress=progress)
     axisymmetric = repeat(
-        case.with_(fem={"model": "axisymmetric"}, repeat={"elastic_after_shakedown": False}), progress=progress
+        on_plate(case, "axisymmetric", "repeat").with_(repeat={"elastic_after_shakedown": False}), progress=progress
     )
     print(
         f"{'impact':>6} {'dent_um':>8} {'pileup_um':>9} {'Wp_mJ':>8} {'wear_m3':>10} {'total_m3':>10} {'e_n':>7} "

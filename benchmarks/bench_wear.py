@@ -75,10 +75,14 @@ def bench_integration(points_across=(64, 160), repeats: int = 5) -> list[dict]:
     integrate_wear(ph, speed, law, density=PLATE.density)  # JIT compile (or load from the cache)
     integrate_wear(ph, speed, law_pow, density=PLATE.density)
     compile_s = time.perf_counter() - t0
-    print(f"impact: steel on steel, R 5 mm, 5 m/s at 45 deg, mu 0.3; {ph.time.size} history samples, "
-          f"contact radius {ph.max_extent * 1e6:.1f} um, contact time {impact.contact_time * 1e6:.2f} us")  # fmt: skip
-    print(f"numba threads: {numba.get_num_threads()} (cores: {os.cpu_count()}); first call incl. JIT/cache load: "
-          f"{compile_s:.2f} s")  # fmt: skip
+    print(
+        f"impact: steel on steel, R 5 mm, 5 m/s at 45 deg, mu 0.3; {ph.time.size} history samples, "
+        f"contact radius {ph.max_extent * 1e6:.1f} um, contact time {impact.contact_time * 1e6:.2f} us"
+    )
+    print(
+        f"numba threads: {numba.get_num_threads()} (cores: {os.cpu_count()}); first call incl. JIT/cache load: "
+        f"{compile_s:.2f} s"
+    )
     rows = []
     for n in points_across:
         x, y = surface_grid(ph, n)
@@ -100,11 +104,20 @@ def bench_integration(points_across=(64, 160), repeats: int = 5) -> list[dict]:
             diff = float(np.abs(a.depth - b.depth).max() / a.max_depth_m)
             rows.append(
                 dict(
-                    points_across=n, grid=f"{y.size}x{x.size}", substeps=sub.weight.size, alpha=lw.alpha,
-                    updates=updates, numba_s=fast, numpy_s=slow, numba_rate=updates / fast,
-                    kernel_rate=updates / kernel, numpy_rate=updates / slow, ratio=slow / fast, max_rel_diff=diff,
+                    points_across=n,
+                    grid=f"{y.size}x{x.size}",
+                    substeps=sub.weight.size,
+                    alpha=lw.alpha,
+                    updates=updates,
+                    numba_s=fast,
+                    numpy_s=slow,
+                    numba_rate=updates / fast,
+                    kernel_rate=updates / kernel,
+                    numpy_rate=updates / slow,
+                    ratio=slow / fast,
+                    max_rel_diff=diff,
                 )
-            )  # fmt: skip
+            )
     return rows
 
 

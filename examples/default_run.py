@@ -37,10 +37,14 @@ def main() -> None:
     imp, wear = result.impact, result.wear
     print(f"normal restitution e_n = {imp.normal_restitution:.4f}, max force {imp.max_force:.4g} N")
     print(f"coupling: {result.coupling.iterations} impact runs, final change {result.coupling.change:.2e}")
-    print(f"regime: {result.regime}; FE first yield {result.yield_info['fe_first_yield_force']:.4g} N "
-          f"(Eq. 18, C = 1.6: {result.yield_info['F_y_paper']:.4g} N)")  # fmt: skip
-    print(f"worn volume {wear.volume_m3:.4g} m^3, max wear depth {wear.max_depth_m:.4g} m, "
-          f"dent depth {result.surface.max_dent_depth:.4g} m")  # fmt: skip
+    print(
+        f"regime: {result.regime}; FE first yield {result.yield_info['fe_first_yield_force']:.4g} N "
+        f"(Eq. 18, C = 1.6: {result.yield_info['F_y_paper']:.4g} N)"
+    )
+    print(
+        f"worn volume {wear.volume_m3:.4g} m^3, max wear depth {wear.max_depth_m:.4g} m, "
+        f"dent depth {result.surface.max_dent_depth:.4g} m"
+    )
     print("stage times (s):", {k: round(v, 2) for k, v in summary["stage_times_s"].items()})
 
 

@@ -47,8 +47,13 @@ print(f"residual dent on the axis {res.residual_depth[0]:.3e} m")
 law = res.force_law()
 print(f"force law: residual overlap {law.residual_overlap[0]:.3e} m after δ_max {law.unloading_max_overlap[0]:.3e} m")
 
-np.savetxt(out / "force_overlap.csv", np.column_stack([res.overlap, res.force, res.contact_radius]), delimiter=",",
-           header="overlap_m,force_N,contact_radius_m", comments="")  # fmt: skip
+np.savetxt(
+    out / "force_overlap.csv",
+    np.column_stack([res.overlap, res.force, res.contact_radius]),
+    delimiter=",",
+    header="overlap_m,force_N,contact_radius_m",
+    comments="",
+)
 res.write(out / "plate.vtu")
 write_figures(res, out)
 print(f"outputs in {out}")

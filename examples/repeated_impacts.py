@@ -47,5 +47,9 @@ for row in result.records:
         )
 print(f"shakedown at impact {result.shakedown_impact}" if result.shakedown_impact else "no shakedown")
 write_csv(out / "repeat.csv", result.columns())
-plot_repeat(result.columns(), out / "repeat.png", title=f"{case.repeat.impacts} impacts at one site (no wear)",
-            shakedown_impact=result.shakedown_impact)  # fmt: skip
+plot_repeat(
+    result.columns(),
+    out / "repeat.png",
+    title=f"{case.repeat.impacts} impacts at one site (no wear)",
+    shakedown_impact=result.shakedown_impact,
+)

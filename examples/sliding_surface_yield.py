@@ -42,9 +42,14 @@ for nu in (0.3, 0.45):
     # twice the Cattaneo-Mindlin slide of gross sliding, 3 mu P (2 - nu) / (16 G a)
     slide = 2.0 * 3.0 * mu * hertz_force * (2.0 - nu) / (16.0 * shear_modulus * hertz_radius)
     result = fem.indent_solid(
-        radius, steel, [overlap, overlap], slides=[0.0, slide], friction=[0.0, mu], box_depth=0.3,
+        radius,
+        steel,
+        [overlap, overlap],
+        slides=[0.0, slide],
+        friction=[0.0, mu],
+        box_depth=0.3,
         edge_elements=None if quick else 16,
-    )  # fmt: skip
+    )
     force = result.normal_force[-1]
     a = (3.0 * force * radius / (4.0 * e_star)) ** (1.0 / 3.0)
     p0 = 3.0 * force / (2.0 * math.pi * a**2)
@@ -63,8 +68,10 @@ for nu in (0.3, 0.45):
 
 print("  nu    beta   pressure centroid x/a   per unit beta   p0/Y of the largest surface stress   at x/a, y/a")
 for nu, beta, centroid, ratio, xw, yw in rows:
-    print(f"  {nu:.2f}  {beta:.3f}  {centroid:+.4f}                {centroid / beta:+.4f}         "
-          f"{ratio:.3f}                                {xw:+.2f}, {yw:.2f}")  # fmt: skip
+    print(
+        f"  {nu:.2f}  {beta:.3f}  {centroid:+.4f}                {centroid / beta:+.4f}         "
+        f"{ratio:.3f}                                {xw:+.2f}, {yw:.2f}"
+    )
 print("  Hamilton (1983), nu = 0.3, the Hertz pressure and traction mu p: p0/Y = 1.045 at x = -a, y = 0")
 
 with open(out / "surface.csv", "w") as fh:

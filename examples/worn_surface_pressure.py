@@ -53,12 +53,19 @@ x_row = rho[cells // 2, cells // 2 :]  # a row through the centre (half a cell o
 
 print(f"first contact at δ = {first:.4g} m (closed form 0.375 a0²/R = {0.375 * d0:.4g} m)")
 print(f"force {force:.4g} N at δ = {res.overlap[-1]:.4g} m (half-space approach {bem.approach:.4g} m)")
-print(f"peak pressure: FE {p_fe.max():.4g} Pa at r = {r[np.argmax(p_fe)] / a0:.2f} a0; half-space "
-      f"{bem.max_pressure:.4g} Pa at r = {x_row[np.argmax(row)] / a0:.2f} a0; Hertz on the flat "
-      f"{hertz_peak_pressure(force, radius, e_star):.4g} Pa on the axis")  # fmt: skip
+print(
+    f"peak pressure: FE {p_fe.max():.4g} Pa at r = {r[np.argmax(p_fe)] / a0:.2f} a0; half-space "
+    f"{bem.max_pressure:.4g} Pa at r = {x_row[np.argmax(row)] / a0:.2f} a0; Hertz on the flat "
+    f"{hertz_peak_pressure(force, radius, e_star):.4g} Pa on the axis"
+)
 inside = r < 1.5 * a0
-np.savetxt(out / "profiles.csv", np.column_stack([r[inside], p_fe[inside], np.interp(r[inside], x_row, row)]),
-           delimiter=",", header="r_m,pressure_fe_Pa,pressure_halfspace_Pa", comments="")  # fmt: skip
+np.savetxt(
+    out / "profiles.csv",
+    np.column_stack([r[inside], p_fe[inside], np.interp(r[inside], x_row, row)]),
+    delimiter=",",
+    header="r_m,pressure_fe_Pa,pressure_halfspace_Pa",
+    comments="",
+)
 try:
     import matplotlib.pyplot as plt
 

@@ -52,15 +52,22 @@ def test_unknown_key_is_one_line_naming_it(command, tmp_path, capsys):
     path = tmp_path / "case.toml"
     path.write_text("".join(f"[{t}]\n" for t in JOBS[command].tables if t != "impact") + "[impact]\nsped = 3.0\n")
     flag = ["--config"] if command in ("impact", "indent") else []
-    assert main([command, *flag, str(path), "--out", str(tmp_path / "out")] if command != "impact"
-                else [command, *flag, str(path)]) == 2  # fmt: skip
+    assert (
+        main(
+            [command, *flag, str(path), "--out", str(tmp_path / "out")]
+            if command != "impact"
+            else [command, *flag, str(path)]
+        )
+        == 2
+    )
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "impact.sped is not a known key" in err
     assert not (tmp_path / "out").exists()
 
 
-@pytest.mark.parametrize("path", sorted(Path(__file__).resolve().parents[1].joinpath("examples").glob("*.toml")),
-                         ids=lambda p: p.name)  # fmt: skip
+@pytest.mark.parametrize(
+    "path", sorted(Path(__file__).resolve().parents[1].joinpath("examples").glob("*.toml")), ids=lambda p: p.name
+)
 def test_example_case_files_are_valid(path):
     """The case and sweep files shipped in examples/ stay valid against the schema."""
     if "[sweep]" in path.read_text(encoding="utf-8"):

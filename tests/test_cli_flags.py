@@ -64,11 +64,14 @@ def test_print_default_shows_every_key_with_its_range(capsys):
         assert any(w in line for w in ("in [", "in (", "> ", "one of", "text", "true or false")), line
 
 
-@pytest.mark.parametrize(("args", "named"), [
-    (["indent", "--max-overlap", "-1e-6"], "--max-overlap=-1e-06"),
-    (["impact", "--angle", "-1e1"], "impact.angle=-10"),
-    (["impact", "--speed", "-2.5E+1"], "impact.speed=-25"),
-])  # fmt: skip
+@pytest.mark.parametrize(
+    ("args", "named"),
+    [
+        (["indent", "--max-overlap", "-1e-6"], "--max-overlap=-1e-06"),
+        (["impact", "--angle", "-1e1"], "impact.angle=-10"),
+        (["impact", "--speed", "-2.5E+1"], "impact.speed=-25"),
+    ],
+)
 def test_negative_numbers_in_exponent_notation_reach_the_range_check(args, named, tmp_path, capsys):
     """``--max-overlap -1e-6`` was argparse's "expected one argument": now the option's own range check names it."""
     assert main([*args, *(["--out", str(tmp_path / "o")] if args[0] == "indent" else [])]) == 2
@@ -128,8 +131,18 @@ def test_a_run_case_file_is_read_by_the_other_commands(command, tmp_path, capsys
         assert math.isfinite(result["normal_restitution"])
     if command == "erode":
         out = tmp_path / "o"
-        small = ["--set", "erosion.grid=128", "--set", "erosion.table_speeds=2", "--set", "erosion.frames=1",
-                 "--set", "erosion.samples=3", "--set", "erosion.exposure_time=100.0"]  # fmt: skip
+        small = [
+            "--set",
+            "erosion.grid=128",
+            "--set",
+            "erosion.table_speeds=2",
+            "--set",
+            "erosion.frames=1",
+            "--set",
+            "erosion.samples=3",
+            "--set",
+            "erosion.exposure_time=100.0",
+        ]
         assert main([command, *where, *small, "--out", str(out), "--quiet"]) == 0
         notes = json.loads((out / "summary.json").read_text())["notes"]
         assert any("wear.pressure='fe'" in n for n in notes) and "wear.pressure='fe'" in capsys.readouterr().err

@@ -33,8 +33,10 @@ MALFORMED = {
     "negative density": (_replace("density = 3950.0", "density = -1.0"), "ball.density=-1"),
     "missing plate mesh file": (GOOD + "\n", None),
 }
-MALFORMED["missing plate mesh file"] = (_replace('plate_mesh = ""', 'plate_mesh = "nowhere.vtu"'),
-                                        "output.plate_mesh='nowhere.vtu'")  # fmt: skip
+MALFORMED["missing plate mesh file"] = (
+    _replace('plate_mesh = ""', 'plate_mesh = "nowhere.vtu"'),
+    "output.plate_mesh='nowhere.vtu'",
+)
 
 
 @pytest.mark.parametrize("kind", sorted(MALFORMED))

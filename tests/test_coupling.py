@@ -73,8 +73,22 @@ def closed_form_indent(radius, e_star, p_y=None):
         ratio = np.divide(r[None, :], a[:, None], out=np.full((a.size, r.size), 2.0), where=a[:, None] > 0)
         p = p0[:, None] * np.sqrt(np.maximum(1 - ratio**2, 0))
         n = overlaps.size
-        return fem.IndentationResult(overlaps, F, a, p.max(axis=1), p0 * 2 / 3, r, p, None, np.zeros_like(r),
-                                     np.zeros(n), ["elastic"] * n, np.zeros(n, int), radius, e_star)  # fmt: skip
+        return fem.IndentationResult(
+            overlaps,
+            F,
+            a,
+            p.max(axis=1),
+            p0 * 2 / 3,
+            r,
+            p,
+            None,
+            np.zeros_like(r),
+            np.zeros(n),
+            ["elastic"] * n,
+            np.zeros(n, int),
+            radius,
+            e_star,
+        )
 
     return indent
 

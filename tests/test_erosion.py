@@ -263,7 +263,7 @@ def test_erosion_rate_converges_with_the_grid(rough_table):
                 erode(rough_table, stream, grid=g, patch_size=patch, seed=s, samples=2, frames=1).final_erosion_rate
                 for s in range(5)
             ]
-        )  # fmt: skip
+        )
         for g in (128, 256)
     ]
     se = math.sqrt(sum(r.var(ddof=1) / r.size for r in rates))

@@ -12,10 +12,21 @@ from wear.app.cli import main
 
 # the embedded default case (alumina R 2.5 mm on glass, 3.9 m/s, 30°) on a small grid and a coarse table
 SMALL = [
-    "--set", "erosion.grid=128", "--set", "erosion.angle_step=10.0", "--set", "erosion.table_speeds=2",
-    "--set", "erosion.points_per_length=6", "--set", "erosion.frames=2", "--set", "erosion.samples=5",
-    "--set", "erosion.exposure_time=600.0",
-]  # fmt: skip
+    "--set",
+    "erosion.grid=128",
+    "--set",
+    "erosion.angle_step=10.0",
+    "--set",
+    "erosion.table_speeds=2",
+    "--set",
+    "erosion.points_per_length=6",
+    "--set",
+    "erosion.frames=2",
+    "--set",
+    "erosion.samples=5",
+    "--set",
+    "erosion.exposure_time=600.0",
+]
 
 
 def _rows(path):
@@ -30,9 +41,16 @@ def test_erode_writes_series_surface_and_table(tmp_path, capsys):
     rows = _rows(out / "erosion.csv")
     assert len(rows) == 6
     assert list(rows[0]) == [
-        "time_s", "impacts", "particle_mass_kg", "mass_loss_kg", "mass_loss_per_area_kg_m2", "erosion_rate",
-        "interval_erosion_rate", "max_depth_m", "rms_slope",
-    ]  # fmt: skip
+        "time_s",
+        "impacts",
+        "particle_mass_kg",
+        "mass_loss_kg",
+        "mass_loss_per_area_kg_m2",
+        "erosion_rate",
+        "interval_erosion_rate",
+        "max_depth_m",
+        "rms_slope",
+    ]
     mass = np.array([float(r["mass_loss_kg"]) for r in rows])
     assert mass[0] == 0.0 and np.all(np.diff(mass) > 0)
     assert float(rows[-1]["time_s"]) == pytest.approx(600.0)

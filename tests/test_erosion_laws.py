@@ -62,9 +62,17 @@ def test_erode_follows_each_closed_form_law_from_normal_to_grazing(law, formula)
         plate={"E": 200e9, "nu": 0.3, "density": STEEL_DENSITY, "yield_strength": 350e6, "hardness": HARDNESS},
         impact={"speed": SPEED, "friction": 0.3},
         wear={"law": law, "cutting_fraction": CUTTING_FRACTION, "force_ratio": FORCE_RATIO, "depth_ratio": DEPTH_RATIO},
-        erosion={"grid": 192, "patch_size": 6e-4, "exposure_time": 1.0, "samples": 2, "frames": 1,
-                 "table_speeds": 3, "angle_step": 5.0, "angle_margin": 10.0},
-    )  # fmt: skip
+        erosion={
+            "grid": 192,
+            "patch_size": 6e-4,
+            "exposure_time": 1.0,
+            "samples": 2,
+            "frames": 1,
+            "table_speeds": 3,
+            "angle_step": 5.0,
+            "angle_margin": 10.0,
+        },
+    )
     runs = erode_angles(case, list(ANGLES))
     rates = np.array([r.result.final_erosion_rate for r in runs])
     expected = np.array([formula(a) for a in ANGLES])

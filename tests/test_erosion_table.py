@@ -63,8 +63,9 @@ def test_plain_callable_with_dent_plugs_in():
 
     def model(normal_speed, angle):
         wear = 1e-9 * normal_speed * bowl  # arbitrary, scales with the speed
-        return Footprint(x=x, y=y, wear=wear, length_scale=L, cutting_volume_m3=float(wear.sum() * spacing**2),
-                         dent=0.5e-9 * bowl)  # fmt: skip
+        return Footprint(
+            x=x, y=y, wear=wear, length_scale=L, cutting_volume_m3=float(wear.sum() * spacing**2), dent=0.5e-9 * bowl
+        )
 
     m_p = 4 / 3 * math.pi * RADIUS**3 * 2650.0
     vn, angles = table_axes(SPEED, 30.0, angle_margin=10.0, angle_step=5.0, speeds=2)
@@ -97,9 +98,17 @@ def test_deformation_wear_at_normal_incidence_is_thorntons_plastic_work():
     an independent evaluation). Measured: −0.2% (200 impacts; the bowls tilt the surface, so later particles meet
     it slightly off normal); tolerance 1%."""
     eps = 5e9  # J/m^3, an illustrative value (no default in the toolkit)
-    response = ImpactResponse(RADIUS, SAND, STEEL, 0.3, LAW, points_across=48, normal_model="thornton",
-                              wear_law="combined",
-                              constants={"cutting": "local", "deformation_factor": eps})  # fmt: skip
+    response = ImpactResponse(
+        RADIUS,
+        SAND,
+        STEEL,
+        0.3,
+        LAW,
+        points_across=48,
+        normal_model="thornton",
+        wear_law="combined",
+        constants={"cutting": "local", "deformation_factor": eps},
+    )
     vn, angles = table_axes(SPEED, 0.0, angle_margin=10.0, angle_step=5.0, speeds=3)
     table = build_response_table(response, vn, angles, points_per_length=8)
     assert table.cutting_volume_m3[-1, 0] == 0.0
@@ -115,8 +124,9 @@ def test_response_input_errors():
     with pytest.raises(ValueError, match=r"^wear.deformation_factor=None"):
         ImpactResponse(RADIUS, SAND, STEEL, 0.3, LAW, normal_model="thornton", wear_law="deformation")(SPEED, 0.0)
     with pytest.raises(ValueError, match=r"impact.normal_model='hertz' is elastic"):
-        ImpactResponse(RADIUS, SAND, STEEL, 0.3, LAW, wear_law="deformation",
-                       constants={"deformation_factor": 1e9})(SPEED, 0.0)  # fmt: skip
+        ImpactResponse(RADIUS, SAND, STEEL, 0.3, LAW, wear_law="deformation", constants={"deformation_factor": 1e9})(
+            SPEED, 0.0
+        )
     with pytest.raises(ValueError, match=r"^wear_law='archard' is not a valid choice"):
         ImpactResponse(RADIUS, SAND, Material(E=200e9, nu=0.3, density=7850.0), 0.3, LAW, wear_law="archard")
     with pytest.raises(ValueError, match=r"^pressure='fe' is not a valid choice"):

@@ -26,8 +26,9 @@ def test_indent_impact_follows_the_impact_history():
     res = fem.indent_impact(imp, PLATE, steps=9, mesh=mesh)
     assert res.time is not None and res.time.shape == res.overlap.shape
     assert np.all(np.diff(res.time) > 0.0)
-    np.testing.assert_allclose(np.interp(res.time, imp.history.t, imp.history.overlap), res.overlap,
-                               rtol=0.0, atol=1e-3 * d_max)  # fmt: skip
+    np.testing.assert_allclose(
+        np.interp(res.time, imp.history.t, imp.history.overlap), res.overlap, rtol=0.0, atol=1e-3 * d_max
+    )
     e_star = effective_modulus(BALL, PLATE)
     inside = res.overlap > 0.05 * d_max
     np.testing.assert_allclose(res.force[inside], hertz_force(res.overlap[inside], R, e_star), rtol=0.02)

@@ -100,8 +100,10 @@ def test_plastic_profile_is_smooth(loading, w):
     slope_signs = np.sign(np.diff(p[r < 0.95 * a]))
     sign_changes = int(np.count_nonzero(np.diff(slope_signs[slope_signs != 0])))
     second = np.abs(np.diff(p[r < 0.95 * a], 2)) / p.max()
-    print(f"w = {loading.overlap[k] / FY.overlap:.2f}: slope sign changes {sign_changes}, "
-          f"largest second difference {second.max():.3f} of p_max")  # fmt: skip
+    print(
+        f"w = {loading.overlap[k] / FY.overlap:.2f}: slope sign changes {sign_changes}, "
+        f"largest second difference {second.max():.3f} of p_max"
+    )
     assert sign_changes <= 4
     assert second.max() < 0.05
 

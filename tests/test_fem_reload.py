@@ -94,11 +94,18 @@ def test_reload_of_a_dent_agrees_with_the_halfspace_solution_of_the_dent(dented)
     res = fem.elastic_reload(plate, [d0 + 0.5 * (D_MAX - d0)]).result
     force = float(res.force[0])
     a = float(res.contact_radius[0])
-    bem, _ = sphere_on_axisymmetric_surface(R, lambda rho: fem.surface_profile(plate.surface_r, plate.dent_depth, rho),
-                                            force, plate.effective_modulus, 3.0 * a)  # fmt: skip
-    print(f"peak FE {res.max_pressure[0]:.4g} Pa, half-space {bem.max_pressure:.4g} Pa; area FE "
-          f"{math.pi * a * a:.4g}, half-space {bem.contact_area:.4g} m^2; approach {res.overlap[0]:.4g} vs "
-          f"{bem.approach:.4g} m")  # fmt: skip
+    bem, _ = sphere_on_axisymmetric_surface(
+        R,
+        lambda rho: fem.surface_profile(plate.surface_r, plate.dent_depth, rho),
+        force,
+        plate.effective_modulus,
+        3.0 * a,
+    )
+    print(
+        f"peak FE {res.max_pressure[0]:.4g} Pa, half-space {bem.max_pressure:.4g} Pa; area FE "
+        f"{math.pi * a * a:.4g}, half-space {bem.contact_area:.4g} m^2; approach {res.overlap[0]:.4g} vs "
+        f"{bem.approach:.4g} m"
+    )
     assert res.max_pressure[0] == pytest.approx(bem.max_pressure, rel=0.03)
     assert math.pi * a * a == pytest.approx(bem.contact_area, rel=0.05)
     assert res.overlap[0] == pytest.approx(bem.approach, rel=0.02)

@@ -127,9 +127,14 @@ def test_partial_slip_matches_cattaneo_mindlin():
     # the path's slides from the Hertz contact; the checks use the FE's own normal force and its Hertz radius
     fractions = np.array([0.2, 0.5, 0.8, 1.2])
     result = indent_solid(
-        R, plate, np.full(fractions.size + 1, delta), slides=np.r_[0.0, fractions * gross_slide(hertz_force(delta),
-        math.sqrt(R * delta))], friction=np.r_[0.0, np.full(fractions.size, mu)], contact_elements=8, box_depth=0.3,
-    )  # fmt: skip
+        R,
+        plate,
+        np.full(fractions.size + 1, delta),
+        slides=np.r_[0.0, fractions * gross_slide(hertz_force(delta), math.sqrt(R * delta))],
+        friction=np.r_[0.0, np.full(fractions.size, mu)],
+        contact_elements=8,
+        box_depth=0.3,
+    )
     P = result.normal_force[0]
     a = (3.0 * P * R / (4.0 * E_STAR)) ** (1.0 / 3.0)
     slide_max = gross_slide(P, a)

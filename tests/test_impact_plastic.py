@@ -95,8 +95,15 @@ def test_tabulated_peak_pressure_has_no_spike_at_first_contact_or_separation():
     lo = np.linspace(0, 1.2 * h.max_overlap, 17)
     um = np.array([1.2 * h.max_overlap])
     uo = np.linspace(um[0], 0.0, 41)[None, :]
-    law = TabulatedLaw(lo, theory.hertz_force(lo, R, e_star), np.sqrt(R * lo), um, uo,
-                       theory.hertz_force(uo, R, e_star), np.sqrt(R * uo))  # fmt: skip
+    law = TabulatedLaw(
+        lo,
+        theory.hertz_force(lo, R, e_star),
+        np.sqrt(R * lo),
+        um,
+        uo,
+        theory.hertz_force(uo, R, e_star),
+        np.sqrt(R * uo),
+    )
     t = simulate_impact(
         radius=R, ball=steel, plate=RIGID, speed=2.0, angle=0.0, friction=0.3, normal_model="tabulated", force_law=law
     )

@@ -118,9 +118,11 @@ def test_fe_plastic_work_drives_deformation_wear_in_the_whole_chain():
     """With the FE plate, the deformation part is the plate's plastic dissipation ∫ σ_y dᾱ dV / ε; energy
     conservation bounds it by the normal kinetic energy the ball lost (the rest stays as residual elastic energy:
     measured W_p = 0.90 of it on the default case)."""
-    case = Case().with_(wear={"law": "combined", "deformation_factor": 1e10},
-                        fem={"mesh_scale": 4.0, "load_steps": 10, "unload_steps": 6},
-                        output={"figures": False, "render": False})  # fmt: skip
+    case = Case().with_(
+        wear={"law": "combined", "deformation_factor": 1e10},
+        fem={"mesh_scale": 4.0, "load_steps": 10, "unload_steps": 6},
+        output={"figures": False, "render": False},
+    )
     result = run(case)
     work = result.coupling.plastic_work
     assert 0.5 * result.impact.normal_work < work <= result.impact.normal_work
@@ -137,9 +139,13 @@ def test_deformation_wear_stops_at_shakedown():
     elastic response (no plastic work)."""
     case = Case()
     v_y = yield_velocity(case.ball.radius, case.ball.material(), case.plate.material())
-    case = case.with_(impact={"speed": 2.2 * v_y, "angle": 0.0}, fem={"mesh_scale": 4.0},
-                      wear={"law": "deformation", "deformation_factor": 1e10}, repeat={"impacts": 4},
-                      output={"figures": False, "render": False})  # fmt: skip
+    case = case.with_(
+        impact={"speed": 2.2 * v_y, "angle": 0.0},
+        fem={"mesh_scale": 4.0},
+        wear={"law": "deformation", "deformation_factor": 1e10},
+        repeat={"impacts": 4},
+        output={"figures": False, "render": False},
+    )
     result = repeat(case)
     volumes = [r.wear_volume for r in result.records]
     increments = [r.plastic_strain_increment for r in result.records]

@@ -28,17 +28,61 @@ from wear.app.outputs.writer import write_csv, write_json
 
 #: Each output-folder command with small, fast inputs (a few seconds each).
 FAST = {
-    "run": ["run", "--quiet", "--set", 'fem.coupling="none"', "--set", 'wear.pressure="hertz"',
-            "--set", "output.figures=false", "--set", "output.render=false"],
-    "indent": ["indent", "--quiet", "--no-figures", "--load-steps", "3", "--unload-steps", "2",
-               "--set", "fem.mesh_scale=4"],
-    "erode": ["erode", "--quiet", "--set", "erosion.grid=128", "--set", "erosion.angle_step=10.0",
-              "--set", "erosion.table_speeds=2", "--set", "erosion.points_per_length=6", "--set", "erosion.frames=2",
-              "--set", "erosion.samples=5", "--set", "erosion.exposure_time=60.0"],
-    "repeat": ["repeat", "--quiet", "--impacts", "1", "--set", "fem.mesh_scale=4", "--set", "plate.yield_strength=inf",
-               "--set", "output.figures=false"],
+    "run": [
+        "run",
+        "--quiet",
+        "--set",
+        'fem.coupling="none"',
+        "--set",
+        'wear.pressure="hertz"',
+        "--set",
+        "output.figures=false",
+        "--set",
+        "output.render=false",
+    ],
+    "indent": [
+        "indent",
+        "--quiet",
+        "--no-figures",
+        "--load-steps",
+        "3",
+        "--unload-steps",
+        "2",
+        "--set",
+        "fem.mesh_scale=4",
+    ],
+    "erode": [
+        "erode",
+        "--quiet",
+        "--set",
+        "erosion.grid=128",
+        "--set",
+        "erosion.angle_step=10.0",
+        "--set",
+        "erosion.table_speeds=2",
+        "--set",
+        "erosion.points_per_length=6",
+        "--set",
+        "erosion.frames=2",
+        "--set",
+        "erosion.samples=5",
+        "--set",
+        "erosion.exposure_time=60.0",
+    ],
+    "repeat": [
+        "repeat",
+        "--quiet",
+        "--impacts",
+        "1",
+        "--set",
+        "fem.mesh_scale=4",
+        "--set",
+        "plate.yield_strength=inf",
+        "--set",
+        "output.figures=false",
+    ],
     "calibrate": ["calibrate", "DATA", "--law", "dnv", "--free", "dnv_K", "--quiet"],
-}  # fmt: skip
+}
 
 SWEEP = """
 [sweep]
@@ -81,8 +125,14 @@ def test_a_folder_of_user_files_is_refused_before_any_work(command, tmp_path, ca
     def no_work(*_a, **_k):
         raise AssertionError("work started before --out was checked")
 
-    runners = ((run_cmd, "run"), (indent_cmd, "indent_case"), (erode_cmd, "erode_case"), (repeat_cmd, "repeat"),
-               (calibrate_cmd, "calibrate"), (sweep_execution, "execute_case"))  # fmt: skip
+    runners = (
+        (run_cmd, "run"),
+        (indent_cmd, "indent_case"),
+        (erode_cmd, "erode_case"),
+        (repeat_cmd, "repeat"),
+        (calibrate_cmd, "calibrate"),
+        (sweep_execution, "execute_case"),
+    )
     for module, name in runners:
         monkeypatch.setattr(module, name, no_work)
     out = tmp_path / "mine"
@@ -132,8 +182,11 @@ def test_a_rerun_replaces_its_own_files_and_keeps_the_users(command, tmp_path, c
 def _bad_outs(tmp_path: Path) -> list[tuple[str, str]]:
     a_file = tmp_path / "a_file"
     a_file.write_text("x")
-    return [(str(a_file), "is a file"), (str(a_file / "sub"), "is a file"),
-            ("/proc/impactwear_out/x", "cannot be written")]  # fmt: skip
+    return [
+        (str(a_file), "is a file"),
+        (str(a_file / "sub"), "is a file"),
+        ("/proc/impactwear_out/x", "cannot be written"),
+    ]
 
 
 @pytest.mark.parametrize("command", [*FAST, "sweep", "reproduce", "validate"])
@@ -193,8 +246,10 @@ def test_outputs_get_the_permissions_of_the_users_umask(umask, tmp_path):
     """Every file and folder of an output (summary.json, history.csv, pressure.npz, meshes, the folder itself) has
     the mode the user's umask gives (0644/0755 for umask 022), as files the user makes otherwise have."""
     out = tmp_path / "out"
-    code = (f"import os, sys; os.umask({umask}); from wear.app.cli import main; "
-            f"sys.exit(main({[*FAST['run'], '--out', str(out)]!r}))")  # fmt: skip
+    code = (
+        f"import os, sys; os.umask({umask}); from wear.app.cli import main; "
+        f"sys.exit(main({[*FAST['run'], '--out', str(out)]!r}))"
+    )
     subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, timeout=300)
     file_mode, dir_mode = 0o666 & ~umask, 0o777 & ~umask
     assert _mode(out) == dir_mode
@@ -207,8 +262,9 @@ def test_outputs_get_the_permissions_of_the_users_umask(umask, tmp_path):
 def _kill_while_writing(args: list[str], parent: Path, name: str) -> None:
     """Start ``impactwear args`` and ``kill -9`` it as soon as its output is being built (its temporary folder
     ``.NAME.partial-*`` in ``parent``, or ``.impactwear.partial-*`` inside an existing ``NAME``)."""
-    proc = subprocess.Popen([sys.executable, "-m", "wear.app.cli", *args], stdout=subprocess.DEVNULL,
-                            stderr=subprocess.DEVNULL)  # fmt: skip
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "wear.app.cli", *args], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL
+    )
     deadline = time.monotonic() + 240
     try:
         while time.monotonic() < deadline:
@@ -234,8 +290,18 @@ def test_kill_9_while_writing_leaves_no_complete_looking_output(command, tmp_pat
     # figures on: the writing lasts long enough (about a second) to be caught
     args = [*[a for a in FAST[command] if a != "--no-figures"], "--out", str(out)]
     if command == "run":
-        args = ["run", "--quiet", "--set", 'fem.coupling="none"', "--set", 'wear.pressure="hertz"', "--set",
-                "output.render=false", "--out", str(out)]  # fmt: skip
+        args = [
+            "run",
+            "--quiet",
+            "--set",
+            'fem.coupling="none"',
+            "--set",
+            'wear.pressure="hertz"',
+            "--set",
+            "output.render=false",
+            "--out",
+            str(out),
+        ]
     _kill_while_writing(args, tmp_path, "out")
     assert not out.exists()
     leftovers = list(tmp_path.glob(".out.partial-*"))

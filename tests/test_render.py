@@ -66,15 +66,17 @@ def test_run_without_rendering_libraries_still_succeeds(tmp_path, monkeypatch, c
 def test_render_writes_nothing_to_the_terminal(tmp_path):
     """VTK printed "bad X server connection" in colour codes to stderr on every run (even with --quiet and when not
     on a terminal) though the off-screen render succeeded: a render now leaves stderr empty."""
-    code = "\n".join([
-        "import numpy as np",
-        "from wear.app.outputs.render import render_surface",
-        "from wear.surface import DeformedSurface, surface_mesh",
-        "x = np.linspace(-2e-4, 2e-4, 41)",
-        "r = np.linspace(0, 2e-4, 50)",
-        "surface = DeformedSurface(x, x, np.zeros((41, 41)), r, 3e-6 * np.maximum(1 - (r / 1e-4) ** 2, 0))",
-        f"render_surface(surface_mesh(surface), {str(tmp_path / 'view.png')!r}, window_size=(200, 150))",
-    ])  # fmt: skip
+    code = "\n".join(
+        [
+            "import numpy as np",
+            "from wear.app.outputs.render import render_surface",
+            "from wear.surface import DeformedSurface, surface_mesh",
+            "x = np.linspace(-2e-4, 2e-4, 41)",
+            "r = np.linspace(0, 2e-4, 50)",
+            "surface = DeformedSurface(x, x, np.zeros((41, 41)), r, 3e-6 * np.maximum(1 - (r / 1e-4) ** 2, 0))",
+            f"render_surface(surface_mesh(surface), {str(tmp_path / 'view.png')!r}, window_size=(200, 150))",
+        ]
+    )
     env = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=120)
     assert done.returncode == 0, done.stderr

@@ -21,8 +21,13 @@ def _case(ratio: float, angle: float = 0.0, K: float = 1e-11, elastic: bool = Fa
     v_y = yield_velocity(case.ball.radius, case.ball.material(), case.plate.material())
     speed = ratio * v_y / math.cos(math.radians(angle))
     plate = {"yield_strength": None} if elastic else {}
-    return case.with_(impact={"speed": speed, "angle": angle}, wear={"K": K}, fem={"mesh_scale": scale},
-                      plate=plate, output={"figures": False, "render": False})  # fmt: skip
+    return case.with_(
+        impact={"speed": speed, "angle": angle},
+        wear={"K": K},
+        fem={"mesh_scale": scale},
+        plate=plate,
+        output={"figures": False, "render": False},
+    )
 
 
 def _hertz_p0(force: float, radius: float, e_star: float) -> float:
@@ -117,8 +122,10 @@ def test_second_impact_pressure_is_the_halfspace_pressure_of_the_dented_surface(
 
     bem, _ = sphere_on_axisymmetric_surface(R, dent, second.max_force, e_star, 2.0 * second.contact_radius, 96)
     flat = _hertz_p0(second.max_force, R, e_star)
-    print(f"impact 2 p_max: FE {second.max_pressure:.4g} Pa, half-space on the dent {bem.max_pressure:.4g} Pa "
-          f"({second.max_pressure / bem.max_pressure - 1:+.2%}), Hertz on a flat {flat:.4g} Pa")  # fmt: skip
+    print(
+        f"impact 2 p_max: FE {second.max_pressure:.4g} Pa, half-space on the dent {bem.max_pressure:.4g} Pa "
+        f"({second.max_pressure / bem.max_pressure - 1:+.2%}), Hertz on a flat {flat:.4g} Pa"
+    )
     assert second.max_pressure == pytest.approx(bem.max_pressure, rel=0.03)  # measured -0.75%
     assert bem.max_pressure < 0.95 * flat  # the conforming dent spreads the load (Hertz flat would be 15% off)
     # at the first impact's max force (equal force, not equal energy): again the half-space pressure of the
@@ -129,9 +136,11 @@ def test_second_impact_pressure_is_the_halfspace_pressure_of_the_dented_surface(
     first = result.records[0]
     at_first = sphere_on_axisymmetric_surface(R, dent, first.max_force, e_star, 2.0 * second.contact_radius, 96)[0]
     at_first = at_first.max_pressure
-    print(f"at impact 1's max force {first.max_force:.4g} N: impact 2 p_max FE {second.max_pressure_at_first_force:.4g}"
-          f" Pa, half-space {at_first:.4g} Pa; impact 1 p_max {first.max_pressure:.4g} Pa "
-          f"({second.max_pressure_at_first_force / first.max_pressure - 1:+.1%})")  # fmt: skip
+    print(
+        f"at impact 1's max force {first.max_force:.4g} N: impact 2 p_max FE {second.max_pressure_at_first_force:.4g}"
+        f" Pa, half-space {at_first:.4g} Pa; impact 1 p_max {first.max_pressure:.4g} Pa "
+        f"({second.max_pressure_at_first_force / first.max_pressure - 1:+.1%})"
+    )
     assert second.max_pressure_at_first_force == pytest.approx(at_first, rel=0.03)
     assert second.max_pressure_at_first_force == pytest.approx(first.max_pressure, rel=0.03)
 

@@ -28,14 +28,16 @@ def test_max_peak_pressure_of_a_damped_hertz_impact_is_the_hertz_p0_at_the_large
     28.5 GPa (e 0.9) and 212 GPa (e 0.5) for a 3 GPa contact. Reference: Hertz (Johnson 1985, Eq. 4.23), p₀ =
     (2E*/π)(δ/R)^½ at the largest overlap δ_max, which for e = 1 is also the p₀ of the largest force."""
     radius = 2.5e-3
-    res = simulate_impact(radius=radius, ball=ALUMINA, plate=GLASS, speed=3.9, angle=30.0, friction=0.092,
-                          restitution=restitution)  # fmt: skip
+    res = simulate_impact(
+        radius=radius, ball=ALUMINA, plate=GLASS, speed=3.9, angle=30.0, friction=0.092, restitution=restitution
+    )
     e_star = effective_modulus(ALUMINA, GLASS)
     p0 = 2.0 * e_star / math.pi * math.sqrt(res.max_overlap / radius)
     assert res.max_peak_pressure == pytest.approx(p0, rel=1e-9)
     if restitution == 1.0:
-        assert res.max_peak_pressure == pytest.approx(float(hertz_peak_pressure(res.max_force, radius, e_star)),
-                                                      rel=1e-6)  # fmt: skip
+        assert res.max_peak_pressure == pytest.approx(
+            float(hertz_peak_pressure(res.max_force, radius, e_star)), rel=1e-6
+        )
     assert res.max_peak_pressure < 3.3e9
 
 
@@ -45,8 +47,9 @@ def test_history_ends_at_the_separation_overlap_of_a_plastic_impact():
     F_p = F_y + π p_y R (δ* − δ_y), a_p² = (2F_p + F_y)/(2π p_y), R_p = 4E* a_p³/(3F_p), separation at
     δ_p = δ* − a_p²/R_p; within one time step of the rebound speed."""
     radius = 2.5e-3
-    res = simulate_impact(radius=radius, ball=ALUMINA, plate=STEEL, speed=3.0, angle=0.0, friction=0.0,
-                          normal_model="thornton")  # fmt: skip
+    res = simulate_impact(
+        radius=radius, ball=ALUMINA, plate=STEEL, speed=3.0, angle=0.0, friction=0.0, normal_model="thornton"
+    )
     h = res.history
     assert h.normal_force[-1] == 0.0 and h.contact_radius[-1] == 0.0 and h.peak_pressure[-1] == 0.0
     e_star = effective_modulus(ALUMINA, STEEL)
@@ -115,9 +118,27 @@ def test_normal_impact_plate_fe_has_its_wear_depth(tmp_path):
     """A normal impact's wear is axisymmetric: plate_fe.vtu moves the surface down by it (non-zero field)."""
     out = tmp_path / "out"
     # β = 0: the wear rate K p^α does not need sliding (at normal incidence nothing slides)
-    assert main(["run", "--out", str(out), "--quiet", "--set", "impact.angle=0", "--set", "wear.beta=0",
-                 "--set", "output.figures=false", "--set", "output.render=false",
-                 "--set", "fem.mesh_scale=3"]) == 0  # fmt: skip
+    assert (
+        main(
+            [
+                "run",
+                "--out",
+                str(out),
+                "--quiet",
+                "--set",
+                "impact.angle=0",
+                "--set",
+                "wear.beta=0",
+                "--set",
+                "output.figures=false",
+                "--set",
+                "output.render=false",
+                "--set",
+                "fem.mesh_scale=3",
+            ]
+        )
+        == 0
+    )
     mesh = meshio.read(out / "plate_fe.vtu")
     assert mesh.point_data["wear_depth"].max() > 0.0 and mesh.point_data["max_pressure"].max() > 0.0
 
@@ -127,7 +148,22 @@ def test_notes_printed_are_the_notes_of_the_summary(tmp_path, capsys):
     out = tmp_path / "out"
     case = default_case("run")
     assert case.ball.E < math.inf  # an elastic ball on the FE plate: the run notes how the FE represents it
-    assert main(["run", "--out", str(out), "--quiet", "--set", "output.figures=false", "--set", "output.render=false",
-                 "--set", "fem.mesh_scale=3"]) == 0  # fmt: skip
+    assert (
+        main(
+            [
+                "run",
+                "--out",
+                str(out),
+                "--quiet",
+                "--set",
+                "output.figures=false",
+                "--set",
+                "output.render=false",
+                "--set",
+                "fem.mesh_scale=3",
+            ]
+        )
+        == 0
+    )
     printed = [line.split("note: ", 1)[1] for line in capsys.readouterr().err.splitlines() if "note: " in line]
     assert printed and json.loads((out / "summary.json").read_text())["notes"] == printed

@@ -50,16 +50,20 @@ def _refused(call, match: str) -> str:
 
 
 def test_library_refuses_a_time_step_of_too_many_steps_before_running():
-    msg = _refused(lambda: simulate_impact(2.5e-3, ALUMINA, GLASS, 3.9, 30.0, 0.1, time_step=1e-15, history=False),
-                   r"^time_step=1e-15 s gives ~1\.\de10 steps over the Hertz contact time")  # fmt: skip
+    msg = _refused(
+        lambda: simulate_impact(2.5e-3, ALUMINA, GLASS, 3.9, 30.0, 0.1, time_step=1e-15, history=False),
+        r"^time_step=1e-15 s gives ~1\.\de10 steps over the Hertz contact time",
+    )
     assert "at most 2e7" in msg and "give time_step >= " in msg
 
 
 def test_history_bound_is_tighter_and_scales_with_history_every():
     tc = _contact_time(3.9)
     dt = tc / (3 * MAX_HISTORY_STEPS)  # 6e6 steps: fine without histories, too many kept steps with them
-    _refused(lambda: simulate_impact(2.5e-3, ALUMINA, GLASS, 3.9, 0.0, 0.1, time_step=dt),
-             r"^time_step=.* at most 2e6 with time histories")  # fmt: skip
+    _refused(
+        lambda: simulate_impact(2.5e-3, ALUMINA, GLASS, 3.9, 0.0, 0.1, time_step=dt),
+        r"^time_step=.* at most 2e6 with time histories",
+    )
     assert check_time_step(dt, tc) == dt
     assert check_time_step(dt, tc, histories=True, history_every=4) == dt
     with pytest.raises(ValueError, match=r"^time_step=.*at most 2e7"):
@@ -70,8 +74,10 @@ def test_bound_uses_the_longest_contact_of_a_batch():
     # the slowest impact of the batch has the longest contact: the bound is checked on it
     tc_slow = _contact_time(0.01)
     dt = 0.5 * tc_slow / MAX_STEPS * 1.5  # fine for 3.9 m/s, 1.33x too many steps at 0.01 m/s
-    _refused(lambda: simulate_impacts(2.5e-3, ALUMINA, GLASS, [3.9, 0.01], 0.0, 0.1, time_step=dt),
-             r"^time_step=.*steps over the Hertz contact time")  # fmt: skip
+    _refused(
+        lambda: simulate_impacts(2.5e-3, ALUMINA, GLASS, [3.9, 0.01], 0.0, 0.1, time_step=dt),
+        r"^time_step=.*steps over the Hertz contact time",
+    )
 
 
 def test_time_steps_the_toolkit_uses_pass():
@@ -121,8 +127,10 @@ def test_schema_grid_range_and_print_default():
     keys = Case().erosion.keys()
     assert keys["grid"].high == 2048
     assert default_case("erode").with_(erosion={"grid": 2048}).erosion.grid == 2048
-    _refused(lambda: default_case("erode").with_(erosion={"grid": 8192}),
-             r"^erosion\.grid=8192 is out of range: .* in \[16, 2048\]")  # fmt: skip
+    _refused(
+        lambda: default_case("erode").with_(erosion={"grid": 8192}),
+        r"^erosion\.grid=8192 is out of range: .* in \[16, 2048\]",
+    )
 
 
 def test_patch_memory_refused_naming_grid_and_frames():
@@ -132,8 +140,10 @@ def test_patch_memory_refused_naming_grid_and_frames():
     frames = int((limit / (8.0 * 2048**2) - 6.0) // 2)  # ((1 + 1) frames + 6) 2048² 8 B <= limit
     assert f"at most {limit / 1e9:.3g} GB on this machine" in msg and f"erosion.frames <= {frames}" in msg
     # several stream angles keep every run's frames: 4 angles x 10 frames on 2048² is 1.9 GB, 8 angles too much
-    _refused(lambda: erode_angles(default_case("erode").with_(erosion={"grid": 2048}), [10.0 * k for k in range(8)]),
-             r"^erosion\.grid=2048 with erosion\.frames=10 and 8 stream angles")  # fmt: skip
+    _refused(
+        lambda: erode_angles(default_case("erode").with_(erosion={"grid": 2048}), [10.0 * k for k in range(8)]),
+        r"^erosion\.grid=2048 with erosion\.frames=10 and 8 stream angles",
+    )
     assert patch_memory(2048, 10, 4) < 2e9 < patch_memory(2048, 10, 8)
     check_patch_memory(512, 10)  # the default: 55 MB
 
@@ -147,16 +157,19 @@ def test_response_table_size_refused_before_any_impact():
         raise AssertionError("no impact may run")
 
     vn, angles = table_axes(20.0, 45.0, angle_margin=45.0, angle_step=0.5, speeds=30)
-    _refused(lambda: build_response_table(never, vn, angles, particle_radius=1e-4, particle_mass=1e-8,
-                                          plate_density=7850.0), r"^normal_speeds, angles: 30 x 171")  # fmt: skip
+    _refused(
+        lambda: build_response_table(never, vn, angles, particle_radius=1e-4, particle_mass=1e-8, plate_density=7850.0),
+        r"^normal_speeds, angles: 30 x 171",
+    )
 
 
 def test_patch_memory_estimate_bounds_the_measured_peak():
     """The estimate is conservative: tracemalloc's peak of a small erosion (256², 10 frames) is below it."""
     sand = Material(E=94e9, nu=0.17, density=2650.0)
     steel = Material(E=200e9, nu=0.3, density=7850.0, yield_strength=350e6)
-    response = ImpactResponse(100e-6, sand, steel, 0.3, WearLaw(K=1e-11, alpha=1.0, beta=0.3), pressure="hertz",
-                              points_across=40)  # fmt: skip
+    response = ImpactResponse(
+        100e-6, sand, steel, 0.3, WearLaw(K=1e-11, alpha=1.0, beta=0.3), pressure="hertz", points_across=40
+    )
     vn, angles = table_axes(20.0, 45.0, angle_margin=5.0, angle_step=5.0, speeds=2)
     table = build_response_table(response, vn, angles, points_per_length=6)
     stream = Stream(20.0, 45.0, 0.5, concentration=0.464)

@@ -9,6 +9,7 @@ import json
 import meshio
 import numpy as np
 import pytest
+from solid_cases import REDUCED_3D
 
 import fem.core.increments
 import fem.solid.solver
@@ -20,7 +21,7 @@ from wear.case import JOBS
 from wear.chain.solid_run import SOLID_PLASTIC_REGIME
 from wear.surface import DeformedSurface
 
-REDUCED = {"model": "3d", "mesh_scale": 2.0, "solid_load_steps": 5, "solid_unload_steps": 3, "solid_iterations": 2}
+REDUCED = REDUCED_3D
 
 
 @pytest.fixture(scope="module")
@@ -173,8 +174,9 @@ def test_3d_run_summary_describes_the_3d_plate(frictionless, tmp_path):
     assert y["fe_first_yield_plate"] == "3d"
     case = frictionless.case
     plate = case.plate.material()
-    f_c = first_yield(case.ball.radius, effective_modulus(case.ball.material(), plate), plate.yield_strength,
-                      plate.nu).force  # fmt: skip
+    f_c = first_yield(
+        case.ball.radius, effective_modulus(case.ball.material(), plate), plate.yield_strength, plate.nu
+    ).force
     assert y["F_c_exact"] == pytest.approx(f_c, rel=1e-12)
     forces = solid.solid.normal_force
     k = int(np.flatnonzero(solid.solid.max_equivalent_plastic_strain > 0.0)[0])

@@ -9,17 +9,20 @@ across the contact radius (``mesh_scale`` 2.6), 5 + 3 increments.
 
 import numpy as np
 import pytest
+from solid_cases import REDUCED_3D
 
 from wear import run
 from wear.case import JOBS
 
-REDUCED = {"model": "3d", "mesh_scale": 2.6, "solid_load_steps": 5, "solid_unload_steps": 3, "solid_iterations": 2}
+#: 3 elements across the contact radius.
+REDUCED = {**REDUCED_3D, "mesh_scale": 2.6}
 
 
 @pytest.fixture(scope="module")
 def normal():
-    case = JOBS["run"].default_case().with_(impact={"angle": 0.0, "friction": 0.3}, fem=REDUCED,
-                                            output={"render": False})  # fmt: skip
+    case = (
+        JOBS["run"].default_case().with_(impact={"angle": 0.0, "friction": 0.3}, fem=REDUCED, output={"render": False})
+    )
     return run(case)
 
 

@@ -154,8 +154,9 @@ def test_impact_stage_returns_exactly_what_simulate_impact_returns(tmp_path):
     with open(tmp_path / "out" / "results.csv", newline="") as f:
         rows = {row["case_id"]: row for row in csv.DictReader(f)}
     for sc in spec.cases:
-        direct = simulate_impact(**Case.from_dict(sc.case, default_case("impact")).impact_arguments(),
-                                 history=False).to_dict()  # fmt: skip
+        direct = simulate_impact(
+            **Case.from_dict(sc.case, default_case("impact")).impact_arguments(), history=False
+        ).to_dict()
         expected = {k: direct[k] for k in OUTPUT_UNITS}
         assert records[sc.case_id]["results"] == expected  # bit-identical floats through JSON
         assert records[sc.case_id]["case"] == sc.case
@@ -300,7 +301,10 @@ def test_erode_and_repeat_are_sweep_stages(tmp_path):
     from wear import erode_case
     from wear.app.sweep.stages import stage_case
 
-    erosion = load_sweep(_sweep_file(tmp_path, """
+    erosion = load_sweep(
+        _sweep_file(
+            tmp_path,
+            """
         [sweep]
         stage = "erode"
         [base]
@@ -310,14 +314,19 @@ def test_erode_and_repeat_are_sweep_stages(tmp_path):
         erosion.angle_step = 10.0
         [grid]
         "impact.angle" = [15.0, 45.0]
-        """))  # fmt: skip
+        """,
+        )
+    )
     out = run_sweep(erosion, tmp_path / "erode", workers=1, quiet=True)
     assert (out.computed, out.failed) == (2, 0)
     records = _records(tmp_path / "erode")
     for sc in erosion.cases:
         direct = erode_case(stage_case(sc.case, "erode")).summary()["results"]
         assert records[sc.case_id]["results"]["results.mass_loss_kg"] == direct["mass_loss_kg"] > 0
-    many = load_sweep(_sweep_file(tmp_path, """
+    many = load_sweep(
+        _sweep_file(
+            tmp_path,
+            """
         [sweep]
         stage = "repeat"
         [base]
@@ -325,7 +334,9 @@ def test_erode_and_repeat_are_sweep_stages(tmp_path):
         plate.yield_strength = inf
         [grid]
         "repeat.impacts" = [2]
-        """))  # fmt: skip
+        """,
+        )
+    )
     out = run_sweep(many, tmp_path / "repeat", workers=1, quiet=True)
     assert (out.computed, out.failed) == (1, 0), out.failures
     result = _records(tmp_path / "repeat")[many.cases[0].case_id]["results"]

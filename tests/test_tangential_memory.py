@@ -84,8 +84,17 @@ def test_soft_plastic_plate_keeps_the_contact_on_the_springs():
     springs is sized by the plastic contact's energy bound too, so the impact runs (no error) and still obeys
     Coulomb's law in gross sliding (rigid-body theory, e_t = 1 − μ(1 + e)/tan θ, within 0.5%)."""
     steel = Material(E=210e9, nu=0.3, density=7800.0)
-    r = simulate_impact(0.0025, steel, Material.rigid(), 5.0, 60.0, 0.1, normal_model="thornton",
-                        limiting_pressure=1e7, tangential_model="mindlin_deresiewicz")  # fmt: skip
+    r = simulate_impact(
+        0.0025,
+        steel,
+        Material.rigid(),
+        5.0,
+        60.0,
+        0.1,
+        normal_model="thornton",
+        limiting_pressure=1e7,
+        tangential_model="mindlin_deresiewicz",
+    )
     theory_et = 1.0 - 0.1 * (1.0 + r.normal_restitution) / math.tan(math.radians(60.0))
     hertz = theory.hertz_impact(r.mass, 0.0025, 210e9 / (1.0 - 0.3**2), 5.0 * math.cos(math.radians(60.0)))
     assert r.max_contact_radius > 3.0 * hertz.max_contact_radius  # beyond a row sized on Hertz alone

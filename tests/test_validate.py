@@ -47,10 +47,15 @@ def test_quick_validation_passes_and_spans_the_toolkit(quick_report):
 
 
 def test_failing_check_exits_1(tmp_path, monkeypatch, capsys):
-    monkeypatch.setitem(validate.GROUPS, "deliberately_failing", validate.Group(
-        "deliberately_failing", "contact",
-        lambda quick: [relative("contact", "pi", "test", math.pi, "definition", 3.0, 1e-3)],
-    ))  # fmt: skip
+    monkeypatch.setitem(
+        validate.GROUPS,
+        "deliberately_failing",
+        validate.Group(
+            "deliberately_failing",
+            "contact",
+            lambda quick: [relative("contact", "pi", "test", math.pi, "definition", 3.0, 1e-3)],
+        ),
+    )
     report = tmp_path / "v.md"
     assert cli.main(["validate", "--quick", "--quiet", "--only", "deliberately", "--report", str(report)]) == 1
     rows = _rows(report.read_text(encoding="utf-8"))
