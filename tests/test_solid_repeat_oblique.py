@@ -1,7 +1,9 @@
 """Repeated oblique impacts with friction at one site on the 3-D plate (``fem.model = "3d"``,
 :mod:`wear.chain.solid_repeat`): what the second and third impacts do to a dented plate, and the repeat's outputs.
-The reduced 3-D plate of ``tests/solid_cases.py`` (one coupling cycle an impact is not enough here: the second
-impact's cycle along the first impact's path, pressed into the dent, dissipated 1.4 times the first's plastic work)."""
+The reduced 3-D plate of ``tests/solid_cases.py`` at 3 elements across the contact radius (``mesh_scale`` 2.6: per
+impact the dent 3.74, 4.67, 5.07 µm and the plastic work 0.332, 0.163, 0.087 mJ, against 3.80, 4.67, 5.07 µm and
+0.328, 0.163, 0.088 mJ with 4 elements). One coupling cycle an impact is not enough here: the second impact's cycle
+along the first impact's path, pressed into the dent, dissipated 1.4 times the first's plastic work."""
 
 import csv
 import math
@@ -20,7 +22,7 @@ pytestmark = pytest.mark.filterwarnings("ignore:elastic ball", "ignore:contact r
 
 @pytest.fixture(scope="module")
 def oblique_3d():
-    result = repeat(repeat_case(30.0, 0.3, 3))
+    result = repeat(repeat_case(30.0, 0.3, 3, mesh_scale=2.6))
     print(repeat_table(result))
     return result
 
