@@ -8,11 +8,11 @@ Generated at build time, into ``docs/_generated/`` (not committed):
 
 - ``commands.md``: the ``--help`` of every ``impactwear`` command, from the argparse parser;
 - ``keys.md``: every case key, from the case schema;
-- ``api/``: the API reference stubs (autosummary, recursive over ``contact``, ``fem``, ``wear``);
+- ``api/``: the module reference stubs (autosummary, recursive over ``contact``, ``fem``, ``wear``);
 - ``examples/``: a copy of ``examples/`` plus the gallery header, which sphinx-gallery executes in quick mode
   (``IMPACTWEAR_QUICK=1``) into ``docs/auto_examples/``.
 
-Switches (environment): ``IMPACTWEAR_DOCS_API=0`` leaves the API reference out; ``IMPACTWEAR_DOCS_GALLERY=0``
+Switches (environment): ``IMPACTWEAR_DOCS_API=0`` leaves the module reference out; ``IMPACTWEAR_DOCS_GALLERY=0``
 shows the gallery without running the examples.
 """
 
@@ -67,6 +67,7 @@ extensions = [
     "sphinx.ext.napoleon",
     "sphinx_gallery.gen_gallery",
     "build_checks",  # docs/_ext: no page loads maths from the network; no API summary cut at "Eq."
+    "public_api",  # docs/_ext: a public name (wear.run) links to its entry in the module reference
 ]
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
@@ -211,21 +212,21 @@ sphinx_gallery_conf = {
 
 
 # ---------------------------------------------------------------------------------------------------------------
-# IMPACTWEAR_DOCS_API=0: the API page stays (links to it hold) but its autosummary block is replaced by a note, so
-# no docstring is read.
+# IMPACTWEAR_DOCS_API=0: the module reference page stays (links to it hold) but its autosummary block is replaced by a
+# note, so no docstring is read.
 
 _API_BLOCK = re.compile(r"^% api-reference: start.*?^% api-reference: end[^\n]*$", re.DOTALL | re.MULTILINE)
 _API_OFF_NOTE = """```{note}
-The API reference was left out of this build (`IMPACTWEAR_DOCS_API=0`). Build without the variable to include
-it.
+The module reference was left out of this build (`IMPACTWEAR_DOCS_API=0`). Build without the variable to
+include it.
 ```"""
 
 
 def _api_switch(app, docname: str, source: list[str]) -> None:
-    if docname == "api" and not API:
+    if docname == "api-reference" and not API:
         text, n = _API_BLOCK.subn(_API_OFF_NOTE, source[0])
         if n != 1:
-            raise RuntimeError("docs/api.md: the '% api-reference: start/end' markers are missing")
+            raise RuntimeError("docs/api-reference.md: the '% api-reference: start/end' markers are missing")
         source[0] = text
 
 

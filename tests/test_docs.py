@@ -1,11 +1,17 @@
 """The hand-written docs agree with the code and the reports they describe (the docs build checks the rest: maths
-offline, whole API summaries, no runaway emphasis; docs/_ext/build_checks.py)."""
+offline, whole API summaries, no runaway emphasis; docs/_ext/build_checks.py); the public-API page lists every
+exported name."""
 
 from __future__ import annotations
 
 import argparse
+import importlib
+import pkgutil
 import re
+import sys
 from pathlib import Path
+
+import pytest
 
 from wear.app.cli import build_parser
 
@@ -28,3 +34,47 @@ def test_checks_page_states_the_reports_count_and_time():
     assert checks == passed
     text = " ".join((DOCS / "checks.md").read_text(encoding="utf-8").split())
     assert f"({checks} checks, all passing; {seconds} s" in text
+
+
+#: The packages whose ``__all__`` the public-API page lists, name by name.
+PUBLIC_PACKAGES = ("contact", "fem", "wear", "wear.case", "wear.chain", "wear.erosion")
+#: A row of the public-API page: the public path, then its one-line description.
+PUBLIC_ROW = re.compile(r"^\| \{py:obj\}`([\w.]+)` \| (.+?) \|$", flags=re.MULTILINE)
+
+
+def test_public_api_page_describes_every_exported_name():
+    """Every name of each package's ``__all__`` is on docs/api.md with a description, under a path that imports it
+    (the same object re-exported elsewhere counts once: ``wear.case.Case`` is ``wear.Case``); every path on the page
+    still imports, so the page can go stale in neither direction."""
+    rows = PUBLIC_ROW.findall((DOCS / "api.md").read_text(encoding="utf-8"))
+    paths = [path for path, _ in rows]
+    assert len(paths) == len(set(paths)), "a name is listed twice"
+    described = {}
+    for path, description in rows:
+        assert len(description.split()) >= 3, f"{path}: no description"
+        described[id(pkgutil.resolve_name(path))] = path  # raises if the page names something that is gone
+    missing = []
+    for package in PUBLIC_PACKAGES:
+        module = importlib.import_module(package)
+        for name in module.__all__:
+            if id(getattr(module, name)) not in described:
+                missing.append(f"{package}.{name}")
+    assert not missing, f"not on docs/api.md: {missing}"
+
+
+def test_runaway_italics_are_caught():
+    """The docs build's italics checks (docs/_ext/build_checks.py) flag the runaway emphasis a stray ``*`` opens, in
+    the Markdown source and in the built HTML, and leave a title in italics alone."""
+    pytest.importorskip("sphinx")
+    sys.path.insert(0, str(DOCS / "_ext"))
+    try:
+        build_checks = importlib.import_module("build_checks")
+    finally:
+        sys.path.remove(str(DOCS / "_ext"))
+    # a stray "*" inside a word opens an emphasis that the next "*" closes, a sentence later
+    runaway = "The spring k = 8G*a·ξ with Coulomb truncation (equations 3, 8 and 9) slides at F_t = μ*F_n."
+    assert build_checks._emphasis_problems(runaway)
+    assert not build_checks._emphasis_problems("After *Granular Matter* (1999), k = 8G\\*a·ξ.")
+    long_em = "<p>k = 8G<em>a·ξ with Coulomb truncation (equations 3, 8 and 9), as DEM codes do, slides at F = μ</em>F"
+    assert build_checks._long_italics(long_em)
+    assert not build_checks._long_italics("<p><em>A Computational Wear Model of the Oblique Impact of a Ball</em></p>")

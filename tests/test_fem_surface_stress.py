@@ -81,7 +81,7 @@ def test_first_yield_at_the_surface_matches_hamilton():
     μp along +x, μ = 0.5, applied to the elastic plate — against his closed-form stresses
     (tests/data/hamilton_surface_mu05.csv, tests/data/hamilton_first_yield.csv; ν = 0.3). Hamilton's tractions
     leave out the normal–tangential coupling of a rigid ball on a compressible plate, which the contact solution
-    has (docs/fem.md): prescribing them compares the plate's stresses with his for the same load.
+    has (docs/fem-record.md): prescribing them compares the plate's stresses with his for the same load.
 
     * First yield: the largest surface von Mises stress gives p0/Y within 3% of Hamilton's 1.045, in the trailing
       half within two edge elements of the trailing edge (Hamilton: at it, x = −a).

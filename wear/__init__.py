@@ -17,10 +17,11 @@ Wear of one impact (errata Eq. 15, w a depth)::
 
 The whole chain, repeated impacts and erosion of a case::
 
-    from wear import Case, default_case, run, repeat, erode_case
+    from wear import Case, calibrate, default_case, erode_case, read_data, repeat, run
     result = run(Case())                                    # impactwear run's default case
     many = repeat(Case().with_(repeat={"impacts": 10}))
     stream = erode_case(default_case("erode"))
+    fitted = calibrate(Case(), read_data("DATA.csv"))      # the wear law's constants fitted to measurements
 """
 
 from __future__ import annotations
@@ -44,6 +45,10 @@ _EXPORTS = {
     "repeat": "wear.chain",
     "restitution_sweep": "wear.chain",
     "run": "wear.chain",
+    "CalibrationResult": "wear.chain.calibrate",
+    "calibrate": "wear.chain.calibrate",
+    "CalibrationData": "wear.chain.calibration_data",
+    "read_data": "wear.chain.calibration_data",
     "ErosionRun": "wear.erosion",
     "erode_angles": "wear.erosion",
     "erode_case": "wear.erosion",

@@ -66,7 +66,9 @@ __all__ = [
     "sliding_speed",
 ]
 
+#: The pressure sources of :func:`pressure_history`.
 PRESSURE_SOURCES = ("fe", "hertz", "paper", "thornton")
+#: The sliding-speed models of :func:`sliding_speed`.
 SPEED_MODELS = ("sliding", "kinematic")
 DEFAULT_POINTS = 257
 

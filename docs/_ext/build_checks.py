@@ -8,8 +8,9 @@
   ``errata Eq.``. A summary of the API tables that ends in such an abbreviation is reported (write "equation 6" in
   a docstring's first sentence).
 - **No runaway italics**: in the Markdown pages, an emphasis opened inside a word (``8G*a`` reads ``*`` as an
-  opening delimiter, which italicises everything up to the next ``*``), or one longer than a sentence, is reported
-  (write ``8G\\*a``).
+  opening delimiter, which italicises everything up to the next ``*``), or one longer than a title, is reported
+  (write ``8G\\*a``); and in the built pages, whatever their source (Markdown, reST, docstrings), an italic span
+  (``<em>``) longer than a title.
 """
 
 from __future__ import annotations
@@ -60,7 +61,9 @@ def _check_api_summaries(app, pages: list[Path]) -> None:
 
 
 #: The longest emphasis (characters) a page means: a title in italics; longer ones ran on past a stray delimiter.
-_LONGEST_EMPHASIS = 100
+_LONGEST_EMPHASIS = 80
+#: An italic span of a built page (``<em>`` without attributes: signatures' parameters are ``<em class=...>``).
+_EM_SPAN = re.compile(r"<em>(.*?)</em>", re.DOTALL)
 
 
 def _emphasis_problems(text: str) -> list[str]:
@@ -91,6 +94,19 @@ def _check_emphasis(app) -> None:
             logger.warning(f"{page.relative_to(srcdir)}, {problem}")
 
 
+def _long_italics(text: str) -> list[str]:
+    """The italic spans of an HTML ``text`` longer than :data:`_LONGEST_EMPHASIS` characters (tags left out)."""
+    spans = (html.unescape(re.sub(r"<[^>]+>", "", span)) for span in _EM_SPAN.findall(text))
+    return [" ".join(span.split()) for span in spans if len(" ".join(span.split())) > _LONGEST_EMPHASIS]
+
+
+def _check_italics(app, pages: list[Path]) -> None:
+    outdir = Path(app.outdir)
+    for page in pages:
+        for span in _long_italics(page.read_text(encoding="utf-8")):
+            logger.warning(f"{page.relative_to(outdir)}: italics of {len(span)} characters: {span[:40]!r}…")
+
+
 def check_build(app, exception: Exception | None) -> None:
     """Run the checks on a finished HTML build."""
     if exception is not None or app.builder.format != "html":
@@ -99,6 +115,7 @@ def check_build(app, exception: Exception | None) -> None:
     _check_offline_math(app, pages)
     _check_api_summaries(app, pages)
     _check_emphasis(app)
+    _check_italics(app, pages)
 
 
 def setup(app) -> dict:

@@ -13,15 +13,15 @@ the field on the surface itself:
 2. at a surface vertex the out-of-plane components are those the surface carries, σ_zz = −p, σ_xz = τ_x,
    σ_yz = τ_y (the contact tractions on the plate, zero outside the contact); the in-plane components are step 1's.
 
-Adjusting the in-plane stresses to step 2's σ_zz at fixed in-plane strain (by ν Δσ_zz / (1 − ν)) was measured and
-left out: against Johnson's Hertz surface stresses it moved σ_r and σ_θ away from the closed form by up to 0.007 p0,
-where the vertex pressure is itself an approximation. Stresses in Mandel notation (σ_xx, σ_yy, σ_zz, √2 σ_yz,
-√2 σ_xz, √2 σ_xy), Pa, as in :mod:`fem.solid.forms`. Accuracy (``tests/test_fem_surface_stress.py``, ``docs/fem.md``),
-with 16 elements across a in a band at the contact edge (:func:`fem.solid.mesh.generate_block`): Johnson's Hertz
-surface stresses within 0.013 p0 but at the edge vertex; Hamilton's under a sliding contact, μ = 0.5, within 2%
-along the trailing half but within an element of the edge, where his √-cusp (0.957 p0 at the edge, under 0.93 p0
-beyond 0.02a of it) is smeared over the element: the edge vertex 20% low, its neighbour 5% high, and the largest
-value 1% from Hamilton's, an element inside the edge.
+Adjusting the in-plane stresses to step 2's σ_zz at fixed in-plane strain (by ν Δσ_zz / (1 − ν)) was measured and left
+out: against Johnson's Hertz surface stresses it moved σ_r and σ_θ away from the closed form by up to 0.007 p0, where
+the vertex pressure is itself an approximation. Stresses in Mandel notation (σ_xx, σ_yy, σ_zz, √2 σ_yz, √2 σ_xz, √2
+σ_xy), Pa, as in :mod:`fem.solid.forms`. Accuracy (``tests/test_fem_surface_stress.py``, ``docs/fem-record.md``), with
+16 elements across a in a band at the contact edge (:func:`fem.solid.mesh.generate_block`): Johnson's Hertz surface
+stresses within 0.013 p0 but at the edge vertex; Hamilton's under a sliding contact, μ = 0.5, within 2% along the
+trailing half but within an element of the edge, where his √-cusp (0.957 p0 at the edge, under 0.93 p0 beyond 0.02a of
+it) is smeared over the element: the edge vertex 20% low, its neighbour 5% high, and the largest value 1% from
+Hamilton's, an element inside the edge.
 """
 
 from __future__ import annotations

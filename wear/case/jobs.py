@@ -120,6 +120,7 @@ _RUN_TABLES = ("ball", "plate", "impact", "wear", "fem", "output")
 
 _STAGES = "wear.app.sweep.stages"
 
+#: The jobs by name (each an ``impactwear`` command): the tables it reads, its default case, its plate models.
 JOBS: dict[str, Job] = {
     job.name: job
     for job in (

@@ -42,6 +42,8 @@ __all__ = [
     "SCHEMES",
 ]
 
+#: The impact–plate couplings: the impact on the FE plate's own force law, the FE plate along the closed-form
+#: impact, or no FE plate.
 COUPLINGS = ("two-way", "one-way", "none")
 #: The FE plate models: the axisymmetric (r, z) frictionless plate, or the 3-D half plate with Coulomb friction.
 FEM_MODELS = ("axisymmetric", "3d")
