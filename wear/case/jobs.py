@@ -197,6 +197,7 @@ JOBS: dict[str, Job] = {
                     ("ball", "plate", "impact", "wear", "fem", "repeat"),
                     "repeated impacts at one site (wear.repeat)",
                     f"{_STAGES}:repeat_stage",
+                    f"{_STAGES}:REPEAT_UNITS",
                 ),
             ),
         ),
