@@ -234,6 +234,7 @@ JOBS: dict[str, Job] = {
                     ("ball", "plate", "impact", "wear", "fem", "calibration"),
                     "a calibration of the wear law to measured wear (wear.chain.calibrate)",
                     f"{_STAGES}:calibrate_stage",
+                    f"{_STAGES}:CALIBRATE_UNITS",
                 ),
             ),
             fem_models=("axisymmetric",),
