@@ -28,7 +28,10 @@ from wear.case import JOBS, TABLES, Case, dump_case
 from wear.chain.solid_run import SolidRun
 
 #: The unit suffixes a name may end in (the summaries' convention: m/s is ``_m_s``, kg/kg ``_kg_per_kg``).
-SUFFIXES = ("m", "m2", "m3", "s", "m_s", "rad_s", "per_s", "N", "Pa", "J", "J_m3", "kg", "kg_per_kg", "kg_m2", "deg")
+SUFFIXES = (
+    *("m", "m2", "m3", "s", "m_s", "rad_s", "per_s", "N", "Pa", "J", "J_m3"),
+    *("kg", "kg_per_kg", "kg_m2", "kg_m3", "kg_m2_s", "deg", "SI"),
+)
 
 #: Quantity → its one name; and names that must not appear (the same quantity under another name, or no unit).
 CANONICAL = {

@@ -20,7 +20,6 @@ __all__ = [
     "MESH_FIELDS",
     "UNITLESS",
     "UNIT_SUFFIXES",
-    "has_unit",
     "named_mesh",
     "unit_of",
     "unit_suffix",
@@ -138,12 +137,6 @@ def unit_of(name: str) -> str:
     """
     m = _SUFFIX.search(name)
     return "" if m is None else _UNITS[m.group(1)]
-
-
-def has_unit(name: str) -> bool:
-    """Whether a field name ends in a unit suffix of :data:`UNIT_SUFFIXES` or names a quantity of :data:`UNITLESS`
-    (for a dotted name, its last part)."""
-    return _SUFFIX.search(name) is not None or name.rpartition(".")[2] in UNITLESS
 
 
 def named_mesh(mesh: meshio.Mesh) -> meshio.Mesh:
