@@ -65,10 +65,10 @@ def main() -> None:
         if angle == 45.0:
             write_csv(
                 out / "erosion_stream.csv",
-                ["time_s", "impacts", "mass_loss_kg", "erosion_rate"],
+                ["time_s", "impacts", "mass_loss_kg", "erosion_rate_kg_per_kg"],
                 zip(result.time, result.impacts, result.mass_loss_kg, result.erosion_rate, strict=True),
             )
-    write_csv(out / "erosion_angles.csv", ["angle_deg", "erosion_rate", "mass_loss_kg"], rows)
+    write_csv(out / "erosion_angles.csv", ["angle_deg", "erosion_rate_kg_per_kg", "mass_loss_kg"], rows)
 
 
 if __name__ == "__main__":

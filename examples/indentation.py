@@ -18,6 +18,7 @@ import fem
 from contact.materials import Material, effective_modulus
 from contact.theory import PAPER_YIELD_COEFFICIENT, first_yield
 from wear.app.figures.indent import write_figures
+from wear.app.outputs.writer import write_mesh
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--out", default="indentation-example", help="output folder")
@@ -51,9 +52,9 @@ np.savetxt(
     out / "force_overlap.csv",
     np.column_stack([res.overlap, res.force, res.contact_radius]),
     delimiter=",",
-    header="overlap_m,force_N,contact_radius_m",
+    header="overlap_m,normal_force_N,contact_radius_m",
     comments="",
 )
-res.write(out / "plate.vtu")
+write_mesh(out / "plate.vtu", res.to_meshio())  # field names with units, as impactwear indent writes them
 write_figures(res, out)
 print(f"outputs in {out}")

@@ -66,7 +66,7 @@ def main() -> None:
         [
             "angle_deg",
             "tangential_restitution",
-            "spin_rad_per_s",
+            "spin_rad_s",
             "rebound_angle_deg",
             "contact_point_rebound_angle_deg",
             "contact_time_s",
@@ -98,13 +98,13 @@ def main() -> None:
     write_csv(
         out / "history_30deg.csv",
         [
-            "t_s",
+            "time_s",
             "overlap_m",
             "normal_force_N",
             "tangential_force_N",
             "contact_radius_m",
             "peak_pressure_Pa",
-            "slip_velocity_m_per_s",
+            "slip_velocity_m_s",
             "sliding",
             "contact_x_m",
         ],

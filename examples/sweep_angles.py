@@ -33,8 +33,8 @@ def main() -> int:
     print(f"{'angle (deg)':>12} {'rebound (deg)':>14} {'contact pt (deg)':>17} {'spin (rad/s)':>13}")
     for r in rows:
         print(
-            f"{float(r['impact.angle']):12.1f} {float(r['rebound_angle']):14.3f} "
-            f"{float(r['contact_point_rebound_angle']):17.3f} {float(r['spin']):13.2f}"
+            f"{float(r['impact.angle_deg']):12.1f} {float(r['rebound_angle_deg']):14.3f} "
+            f"{float(r['contact_point_rebound_angle_deg']):17.3f} {float(r['spin_rad_s']):13.2f}"
         )
     return 0
 

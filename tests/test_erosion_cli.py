@@ -46,8 +46,8 @@ def test_erode_writes_series_surface_and_table(tmp_path, capsys):
         "particle_mass_kg",
         "mass_loss_kg",
         "mass_loss_per_area_kg_m2",
-        "erosion_rate",
-        "interval_erosion_rate",
+        "erosion_rate_kg_per_kg",
+        "interval_erosion_rate_kg_per_kg",
         "max_depth_m",
         "rms_slope",
     ]
@@ -60,10 +60,10 @@ def test_erode_writes_series_surface_and_table(tmp_path, capsys):
     assert "normal speeds" in summary["table"]["resolution"]
     table = _rows(out / "response_table.csv")
     assert len(table) == 2 * 5 and float(table[-1]["volume_m3"]) > 0
-    # the final surface: a 128 x 128 structured quad grid with point data depth (m), z = -depth
+    # the final surface: a 128 x 128 structured quad grid with point data total_depth_m, z = -depth
     mesh = meshio.read(out / "surface.vtu")
     assert mesh.points.shape == (128 * 128, 3) and mesh.cells[0].type == "quad"
-    depth = mesh.point_data["depth"]
+    depth = mesh.point_data["total_depth_m"]
     np.testing.assert_allclose(mesh.points[:, 2], -depth)
     h = float(summary["patch"]["spacing_m"])
     assert depth.sum() * h * h * 2500.0 == pytest.approx(mass[-1], rel=1e-9)
@@ -74,7 +74,7 @@ def test_erode_writes_series_surface_and_table(tmp_path, capsys):
     assert times == sorted(times) and times[-1] == pytest.approx(600.0)
     for s in sets:
         assert (out / s.get("file")).is_file()
-    np.testing.assert_allclose(meshio.read(out / sets[-1].get("file")).point_data["depth"], depth)
+    np.testing.assert_allclose(meshio.read(out / sets[-1].get("file")).point_data["total_depth_m"], depth)
     for name in ("erosion.png", "surface.png"):
         assert (out / name).stat().st_size > 1000
     assert [p.name for p in out.glob(".*")] == [".impactwear.json"], "temporary files left behind"
@@ -84,11 +84,11 @@ def test_erode_angles_writes_erosion_vs_angle(tmp_path):
     out = tmp_path / "angles"
     assert main(["erode", "--out", str(out), "--quiet", "--angles", "0,45", *SMALL]) == 0
     rows = _rows(out / "erosion_vs_angle.csv")
-    assert list(rows[0]) == ["angle_deg", "erosion_rate", "mass_loss_kg"]
+    assert list(rows[0]) == ["angle_deg", "erosion_rate_kg_per_kg", "mass_loss_kg"]
     assert [float(r["angle_deg"]) for r in rows] == [0.0, 45.0]
     # Eq. 15 without Bitter's term: nothing at normal incidence (no sliding), wear at 45°
-    assert float(rows[0]["erosion_rate"]) == 0.0
-    assert float(rows[1]["erosion_rate"]) > 0.0
+    assert float(rows[0]["erosion_rate_kg_per_kg"]) == 0.0
+    assert float(rows[1]["erosion_rate_kg_per_kg"]) > 0.0
     # one patch for every angle
     sizes = {json.loads((out / f"angle_{a}" / "summary.json").read_text())["patch"]["size_m"] for a in ("0", "45")}
     assert len(sizes) == 1

@@ -23,13 +23,13 @@ def _check_folder(out, summary):
     for key in ("impact", "yield", "regime", "wear", "dent", "coupling", "case", "versions"):
         assert key in on_disk
     surf = meshio.read(out / "surface.vtu")
-    volume = integrate_point_data(surf, "wear_depth")
+    volume = integrate_point_data(surf, "wear_depth_m")
     # the wear grid's own volume (helper's trapezoid/cell sum) and the bilinear mesh integral agree within 1%
     assert volume == pytest.approx(on_disk["wear"]["volume_m3"], rel=0.01)
     np.testing.assert_allclose(
-        surf.points[:, 2], -(surf.point_data["dent_depth"] + surf.point_data["wear_depth"]), rtol=0, atol=1e-18
+        surf.points[:, 2], -(surf.point_data["dent_depth_m"] + surf.point_data["wear_depth_m"]), rtol=0, atol=1e-18
     )
-    assert surf.point_data["wear_depth"].max() == pytest.approx(on_disk["wear"]["max_depth_m"], rel=1e-9)
+    assert surf.point_data["wear_depth_m"].max() == pytest.approx(on_disk["wear"]["max_depth_m"], rel=1e-9)
     plate = meshio.read(out / "plate.vtu")
     assert "hexahedron" in plate.cells_dict
     for name in on_disk["files"]:
@@ -132,7 +132,7 @@ def test_one_way_fe_pressure_normal_impact(tmp_path):
     assert result.wear.volume_m3 == pytest.approx(expected, rel=0.03)
     write_run(result, tmp_path / "out")
     fe_mesh = meshio.read(tmp_path / "out" / "plate_fe.vtu")
-    assert fe_mesh.point_data["wear_depth"].max() == pytest.approx(result.wear.max_depth_m, rel=0.02)
+    assert fe_mesh.point_data["wear_depth_m"].max() == pytest.approx(result.wear.max_depth_m, rel=0.02)
 
 
 @pytest.mark.filterwarnings("ignore:elastic ball")
@@ -168,7 +168,7 @@ def test_two_way_run_with_dent_writes_coherent_folder(tmp_path):
     summary = write_run(result, tmp_path / "out")
     on_disk, surf = _check_folder(tmp_path / "out", summary)
     assert on_disk["dent"]["max_depth_m"] > 0.05 * on_disk["impact"]["max_overlap"]
-    assert surf.point_data["dent_depth"].max() > 0
+    assert surf.point_data["dent_depth_m"].max() > 0
     assert on_disk["coupling"]["converged"] and on_disk["coupling"]["final_change"] < 0.005
     assert on_disk["regime"] in ("surface-plastic", "fully-plastic")
     meshio.read(tmp_path / "out" / "plate_fe.vtu")

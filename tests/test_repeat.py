@@ -273,8 +273,8 @@ def test_cli_writes_outputs(tmp_path, capsys):
     assert (out / "repeat.png").is_file() and (out / "repeat.pvd").is_file()
     frames = sorted((out / "frames").glob("*.vtu"))
     mesh = meshio.read(frames[-1])
-    assert {"u", "wear_depth", "surface"} <= set(mesh.point_data)
-    assert {"equivalent_plastic_strain", "von_mises"} <= set(mesh.cell_data)
+    assert {"displacement_m", "wear_depth_m", "on_surface"} <= set(mesh.point_data)
+    assert {"equivalent_plastic_strain", "von_mises_stress_Pa"} <= set(mesh.cell_data)
 
 
 def test_wear_profile_filter_follows_the_gaussian_transfer_function():

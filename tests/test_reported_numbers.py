@@ -86,7 +86,7 @@ def test_reported_peak_pressure_is_the_fe_plates(default_run):
     imp = summary["impact"]
     assert imp["max_peak_pressure_source"] == "FE plate"
     mesh = meshio.read(default_run / "plate_fe.vtu")
-    assert imp["max_peak_pressure"] == pytest.approx(float(mesh.point_data["max_pressure"].max()), rel=0.01)
+    assert imp["max_peak_pressure"] == pytest.approx(float(mesh.point_data["max_pressure_Pa"].max()), rel=0.01)
     mean = imp["max_force"] / (math.pi * imp["max_contact_radius"] ** 2)
     assert 1.0 <= imp["max_peak_pressure"] / mean <= 1.5
 
@@ -104,7 +104,7 @@ def test_plate_fe_fields_and_pressure_npz_mean_what_they_say(default_run):
     """plate_fe.vtu: every point field is non-zero somewhere (the old ``pressure`` after the rebound and the oblique
     impact's ``wear_depth`` were all zero); pressure.npz: p(r, t) with r_m[i, k] = extent_m[i]·√(1 − s_k²)."""
     mesh = meshio.read(default_run / "plate_fe.vtu")
-    assert "pressure" not in mesh.point_data and "wear_depth" not in mesh.point_data  # 30°: not axisymmetric
+    assert "pressure_Pa" not in mesh.point_data and "wear_depth_m" not in mesh.point_data  # 30°: not axisymmetric
     for name, values in mesh.point_data.items():
         assert np.any(np.asarray(values) != 0.0), name
     z = np.load(default_run / "pressure.npz")
@@ -140,7 +140,7 @@ def test_normal_impact_plate_fe_has_its_wear_depth(tmp_path):
         == 0
     )
     mesh = meshio.read(out / "plate_fe.vtu")
-    assert mesh.point_data["wear_depth"].max() > 0.0 and mesh.point_data["max_pressure"].max() > 0.0
+    assert mesh.point_data["wear_depth_m"].max() > 0.0 and mesh.point_data["max_pressure_Pa"].max() > 0.0
 
 
 def test_notes_printed_are_the_notes_of_the_summary(tmp_path, capsys):

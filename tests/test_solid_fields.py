@@ -109,13 +109,13 @@ def test_traction_integrals_are_the_plate_forces(written):
 
 def test_mirrored_surface_is_symmetric(written):
     """Reference: the symmetry of the whole plate about its plane of incidence y = 0, of which the 3-D plate models
-    a half: wear_depth and dent_depth in surface.vtu at (x, y) and (x, −y) equal to round-off (10⁻¹² of their
+    a half: wear_depth_m and dent_depth_m in surface.vtu at (x, y) and (x, −y) equal to round-off (10⁻¹² of their
     largest value), and neither field zero."""
     _, _, mesh = written
     xy = mesh.points[:, :2]
     key = {(round(x, 15), round(y, 15)): i for i, (x, y) in enumerate(xy)}
     mirror = np.array([key[(round(x, 15), round(-y, 15) + 0.0)] for x, y in xy])
-    for name in ("wear_depth", "dent_depth"):
+    for name in ("wear_depth_m", "dent_depth_m"):
         values = np.asarray(mesh.point_data[name])
         largest = float(np.max(np.abs(values)))
         assert largest > 0.0

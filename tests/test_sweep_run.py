@@ -134,6 +134,7 @@ def reference(tmp_path_factory):
 def test_impact_stage_returns_exactly_what_simulate_impact_returns(tmp_path):
     from contact import simulate_impact
     from contact.results import OUTPUT_UNITS
+    from wear.app.outputs.fields import with_units
 
     sweep = _sweep_file(
         tmp_path,
@@ -160,8 +161,8 @@ def test_impact_stage_returns_exactly_what_simulate_impact_returns(tmp_path):
         expected = {k: direct[k] for k in OUTPUT_UNITS}
         assert records[sc.case_id]["results"] == expected  # bit-identical floats through JSON
         assert records[sc.case_id]["case"] == sc.case
-        for key, value in expected.items():  # and through the CSV (repr round-trips floats exactly)
-            text = rows[sc.case_id][key]
+        for key, value in expected.items():  # and through the CSV (repr round-trips floats exactly), unit in the name
+            text = rows[sc.case_id][with_units(key, OUTPUT_UNITS[key])]
             assert (None if text == "" else type(value)(text)) == value, key
     assert records[spec.cases[0].case_id]["results"]["tangential_restitution"] is None  # angle 0: NaN → empty
     assert (tmp_path / "out" / "sweep_2d.png").stat().st_size > 10_000
@@ -210,7 +211,7 @@ def test_failed_case_is_recorded_others_go_on_exit_status_1(tmp_path, capsys):
     with open(out / "results.csv", newline="") as f:
         rows = list(csv.DictReader(f))
     assert [r["status"] for r in rows] == ["ok", "failed", "ok"]
-    assert rows[1]["error"].startswith("ValueError: yield_strength=None") and rows[1]["max_force"] == ""
+    assert rows[1]["error"].startswith("ValueError: yield_strength=None") and rows[1]["max_force_N"] == ""
     # a rerun retries the failed case only (it fails again, deterministically)
     again = run_sweep(spec, out, workers=1, quiet=True)
     assert (again.skipped, again.computed, again.failed) == (2, 0, 1)

@@ -1,16 +1,18 @@
 """The output folder of ``impactwear erode`` (:mod:`wear.erosion.run`), built aside and moved in whole
 (:func:`wear.app.outputs.folder.output_folder`; SI units; angles in degrees from the plate normal):
 
-- ``erosion.csv``: time_s, impacts, particle_mass_kg, mass_loss_kg, mass_loss_per_area_kg_m2, erosion_rate
-  (kg/kg, cumulative), interval_erosion_rate (kg/kg since the previous row), max_depth_m, rms_slope;
+- ``erosion.csv``: time_s, impacts, particle_mass_kg, mass_loss_kg, mass_loss_per_area_kg_m2,
+  erosion_rate_kg_per_kg (cumulative), interval_erosion_rate_kg_per_kg (since the previous row), max_depth_m,
+  rms_slope;
   ``erosion.png`` (mass loss and rates against time);
-- ``surface.vtu`` (final surface: a structured quad grid, z = −depth, point data ``depth``, ``wear`` in m),
+- ``surface.vtu`` (final surface: a structured quad grid, z = −depth, point data ``total_depth_m`` (wear and
+  dents) and ``wear_depth_m``),
   ``frames/surface_NNNN.vtu`` and ``erosion.pvd`` (the series, time in s; open in ParaView); ``surface.png``;
 - ``response_table.csv`` (the footprint table: normal speed, local angle, volumes, contact radius) and
   ``summary.json`` (case, number of impacts, patch, table resolution, results, timings).
 
 Over several stream angles: one such folder per angle (``angle_<deg>/``, without the series) and
-``erosion_vs_angle.csv`` (angle_deg, erosion_rate, mass_loss_kg) with ``erosion_vs_angle.png``.
+``erosion_vs_angle.csv`` (angle_deg, erosion_rate_kg_per_kg, mass_loss_kg) with ``erosion_vs_angle.png``.
 """
 
 from __future__ import annotations
@@ -35,8 +37,8 @@ EROSION_COLUMNS = [
     "particle_mass_kg",
     "mass_loss_kg",
     "mass_loss_per_area_kg_m2",
-    "erosion_rate",
-    "interval_erosion_rate",
+    "erosion_rate_kg_per_kg",
+    "interval_erosion_rate_kg_per_kg",
     "max_depth_m",
     "rms_slope",
 ]
@@ -51,8 +53,8 @@ TABLE_COLUMNS = [
 
 
 def surface_grid_mesh(x: np.ndarray, y: np.ndarray, surface: np.ndarray, wear: np.ndarray | None = None) -> meshio.Mesh:
-    """A height field (m, positive into the plate) as a structured quad grid: z = −depth, point data ``depth`` and
-    (if given) ``wear`` (m)."""
+    """A height field (m, positive into the plate) as a structured quad grid: z = −depth, point data
+    ``total_depth`` and (if given) ``wear_depth`` (m; written as ``total_depth_m``, ``wear_depth_m``)."""
     nx, ny = len(x), len(y)
     xx, yy = np.meshgrid(x, y)
     points = np.column_stack([xx.ravel(), yy.ravel(), -np.asarray(surface).ravel()])
@@ -60,9 +62,9 @@ def surface_grid_mesh(x: np.ndarray, y: np.ndarray, surface: np.ndarray, wear: n
     quads = np.column_stack(
         [node[:-1, :-1].ravel(), node[:-1, 1:].ravel(), node[1:, 1:].ravel(), node[1:, :-1].ravel()]
     )
-    data = {"depth": np.asarray(surface).ravel()}
+    data = {"total_depth": np.asarray(surface).ravel()}
     if wear is not None:
-        data["wear"] = np.asarray(wear).ravel()
+        data["wear_depth"] = np.asarray(wear).ravel()
     return meshio.Mesh(points, [("quad", quads)], point_data=data)
 
 
@@ -122,7 +124,7 @@ def write_erosion_angles(runs: list[ErosionRun], out: str | os.PathLike) -> list
             (tmp / f"angle_{a:g}").mkdir()
             _write_files(run, tmp / f"angle_{a:g}", series=False)
             rows.append((a, run.result.final_erosion_rate, float(run.result.mass_loss_kg[-1])))
-        write_rows(tmp / "erosion_vs_angle.csv", ["angle_deg", "erosion_rate", "mass_loss_kg"], rows)
+        write_rows(tmp / "erosion_vs_angle.csv", ["angle_deg", "erosion_rate_kg_per_kg", "mass_loss_kg"], rows)
         case = runs[0].case
         fig.plot_angles(
             [r[0] for r in rows],

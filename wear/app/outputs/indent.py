@@ -31,9 +31,9 @@ def _write_files(run: IndentRun, out: Path, figures: bool, notes: Sequence[str])
         [
             "step",
             "overlap_m",
-            "force_N",
+            "normal_force_N",
             "contact_radius_m",
-            "max_pressure_Pa",
+            "peak_pressure_Pa",
             "mean_pressure_Pa",
             "max_equivalent_plastic_strain",
             "regime",

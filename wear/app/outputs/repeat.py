@@ -5,9 +5,11 @@
   ``halfspace_check``: the last pressure against the half-space solution, :mod:`wear.chain.check`; null on the 3-D
   plate, whose dented surface is not axisymmetric);
 - ``repeat.pvd`` + ``frames/plate_NNNNNN.vtu``: the FE mesh after each saved computed impact (time = impact
-  number; point data ``u``, ``wear_depth``, ``surface``; cell data ``equivalent_plastic_strain``, ``von_mises``; on
-  the 3-D plate the whole plate, point data ``u`` only, :meth:`fem.solid.plate.SolidPlate.to_meshio`);
-- ``wear_map.npz``: the cumulative 2-D wear map (``x``, ``y``, ``depth``, m); ``repeat.png`` (with
+  number; point data ``displacement_m``, ``wear_depth_m``, ``on_surface``; cell data ``equivalent_plastic_strain``,
+  ``von_mises_stress_Pa``; on the 3-D plate the whole plate, :meth:`fem.solid.plate.SolidPlate.to_meshio`, without
+  ``wear_depth_m`` and ``on_surface``);
+- ``wear_map.npz``: the cumulative 2-D wear map (:func:`wear_map_arrays`: ``x_m``, ``y_m``, ``wear_depth_m``);
+  ``repeat.png`` (with
   ``output.figures``): dent, pile-up, wear, plastic work, restitution, pressure and Δᾱ against the impact number.
 """
 
@@ -15,14 +17,23 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
+
 import fem
 from fem.solid.plate import SolidPlate
 from wear.app.figures.repeat import plot_repeat
 from wear.app.outputs.writer import versions, write_csv, write_mesh, write_npz, write_pvd, write_summary
 from wear.case import JOBS
 from wear.chain.records import RepeatResult
+from wear.integrate import WearMap
 
-__all__ = ["RepeatWriter"]
+__all__ = ["RepeatWriter", "wear_map_arrays"]
+
+
+def wear_map_arrays(wm: WearMap) -> dict[str, np.ndarray]:
+    """The arrays of ``wear_map.npz``: ``x_m`` (nx,), ``y_m`` (ny,) and ``wear_depth_m`` (ny, nx), the worn depth
+    (m, positive into the plate) at (x_m[i], y_m[j]) in ``wear_depth_m[j, i]``."""
+    return {"x_m": wm.x, "y_m": wm.y, "wear_depth_m": wm.depth}
 
 
 class RepeatWriter:
@@ -58,7 +69,7 @@ class RepeatWriter:
         columns = result.columns()
         write_csv(out / "repeat.csv", columns)
         wm = result.wear
-        write_npz(out / "wear_map.npz", {"x": wm.x, "y": wm.y, "depth": wm.depth})
+        write_npz(out / "wear_map.npz", wear_map_arrays(wm))
         summary = {
             "case": case.to_dict(JOBS["repeat"].tables),
             "fem_model": case.fem.model,

@@ -3,7 +3,7 @@
 Files: ``summary.json`` (case, versions, results, stage times, notes), ``history.csv`` (impact histories, units in
 the column names), ``pressure.npz`` (the wear stage's p(s, t) table, and the FE table p(r, t) if any),
 ``surface.vtu``, ``plate.vtu``, ``plate_fe.vtu`` (with an FE plate: the (r, z) section, or the whole 3-D plate with
-``fem.model = "3d"``), the PNG figures and ``surface_3d.png``.
+``fem.model = "3d"``; field names with units, :mod:`wear.app.outputs.fields`), the PNG figures and ``surface_3d.png``.
 """
 
 from __future__ import annotations
@@ -49,13 +49,13 @@ HISTORY_COLUMNS = {
     "tangential_displacement": "tangential_displacement_m",
     "contact_radius": "contact_radius_m",
     "peak_pressure": "peak_pressure_Pa",
-    "slip_velocity": "slip_velocity_m_per_s",
+    "slip_velocity": "slip_velocity_m_s",
     "sliding": "sliding",
     "center_x": "center_x_m",
     "contact_x": "contact_x_m",
-    "omega": "spin_rad_per_s",
-    "normal_velocity": "normal_velocity_m_per_s",
-    "tangential_velocity": "tangential_velocity_m_per_s",
+    "omega": "spin_rad_s",
+    "normal_velocity": "normal_velocity_m_s",
+    "tangential_velocity": "tangential_velocity_m_s",
 }
 
 

@@ -26,6 +26,8 @@ from typing import IO, Any
 import meshio
 import numpy as np
 
+from wear.app.outputs.fields import named_mesh
+
 __all__ = [
     "SCHEMA_VERSION",
     "atomic_write",
@@ -130,10 +132,12 @@ def write_json(path: str | os.PathLike, data: Any, fsync: bool = False) -> Path:
     return write_text(path, json.dumps(to_jsonable(data), indent=2, allow_nan=False) + "\n", fsync=fsync)
 
 
-#: The version of the layout of the summary every command writes (``summary.json``; ``calibration.json`` of
-#: ``impactwear calibrate``), its first field ``schema_version``: raised when a field is renamed or removed or changes
-#: its meaning or units; a new field keeps it.
-SCHEMA_VERSION = 1
+#: The version of the layout of the output folders: the summary every command writes (``summary.json``;
+#: ``calibration.json`` of ``impactwear calibrate``), whose first field ``schema_version`` it is, and the fields of
+#: the other files (mesh data, table columns, arrays: :mod:`wear.app.outputs.fields`). Raised when a field is renamed
+#: or removed or changes its meaning or units; a new field keeps it. 2: the units in every field name of the meshes,
+#: tables and arrays.
+SCHEMA_VERSION = 2
 
 
 def write_summary(path: str | os.PathLike, summary: Mapping[str, Any]) -> dict:
@@ -173,9 +177,11 @@ def write_npz(path: str | os.PathLike, arrays: Mapping[str, Any]) -> Path:
 
 
 def write_mesh(path: str | os.PathLike, mesh: meshio.Mesh) -> Path:
-    """Write a meshio mesh (format from ``path``'s suffix, e.g. ``.vtu``)."""
+    """Write a meshio mesh (format from ``path``'s suffix, e.g. ``.vtu``), its fields under their file names with
+    units (:func:`wear.app.outputs.fields.named_mesh`)."""
     file_format = meshio.extension_to_filetypes[Path(path).suffix][0]
-    return atomic_write(path, lambda name: meshio.write(name, mesh, file_format=file_format), mode="path")
+    named = named_mesh(mesh)
+    return atomic_write(path, lambda name: meshio.write(name, named, file_format=file_format), mode="path")
 
 
 def write_pvd(path: str | os.PathLike, entries: list[tuple[float, str]]) -> Path:

@@ -1,5 +1,9 @@
-"""A sweep's tables: ``results.csv`` (one row per case: inputs, results, error, in expansion order) and the 1-D or
-2-D figure of its grid (SI units from the case schema).
+"""A sweep's tables: ``results.csv`` (one row per case: inputs, results, error, in expansion order; every name with
+its SI unit, :func:`column_names`) and the 1-D or 2-D figure of its grid (SI units from the case schema).
+
+The cases' records (``cases/<case-id>.json``) hold each stage's results under the stage's own names, and the units
+join them only in ``results.csv``: a sweep folder of an earlier version is resumed as it is, its table rewritten
+with the names of this one.
 """
 
 from __future__ import annotations
@@ -10,11 +14,12 @@ from collections.abc import Iterable
 from pathlib import Path
 
 from wear.app.figures.sweep import plot_sweep
+from wear.app.outputs.fields import with_units
 from wear.app.outputs.writer import write_text
 from wear.app.sweep.spec import SweepSpec, flatten
 from wear.case import STAGES, TABLES
 
-__all__ = ["results_table", "write_outputs"]
+__all__ = ["column_names", "results_table", "write_outputs"]
 
 
 def _csv_text(value) -> str:
@@ -56,11 +61,19 @@ def results_table(spec: SweepSpec, records: dict[str, dict]) -> tuple[list[str],
     return header, rows, list(named.values())
 
 
+def column_names(spec: SweepSpec, header: list[str]) -> list[str]:
+    """The names of ``results.csv``'s columns ``header`` (of :func:`results_table`) with their SI units
+    (:func:`wear.app.outputs.fields.with_units`): an input's from the case schema, a result's from its stage."""
+    results = STAGES[spec.stage].result_units()
+    units = _input_units(header)
+    return [with_units(k, units.get(k) or results.get(k.removeprefix("result."), "")) for k in header]
+
+
 def write_outputs(spec: SweepSpec, out: Path, records: dict[str, dict]) -> None:
     header, rows, results = results_table(spec, records)
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
-    writer.writerow(header)
+    writer.writerow(column_names(spec, header))
     writer.writerows([[_csv_text(row.get(k)) for k in header] for row in rows])
     write_text(out / "results.csv", buf.getvalue(), fsync=True)
     if spec.axes is not None:

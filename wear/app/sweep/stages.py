@@ -25,17 +25,21 @@ import numpy as np
 from contact import simulate_impact
 from contact.results import OUTPUT_UNITS
 from fem import worst_regime
-from wear.case import STAGES, Case, check_job_case, default_case
+from wear.app.outputs.fields import unit_of
+from wear.case import STAGES, TABLES, Case, check_job_case, default_case
 from wear.chain.axisymmetric_run import one_way
 from wear.chain.calibrate import calibrate
 from wear.chain.calibration_data import read_data
+from wear.chain.records import CSV_COLUMNS
 from wear.chain.repeat import repeat
 from wear.chain.single import run
 from wear.erosion.run import erode_case
 
 __all__ = [
+    "CALIBRATE_UNITS",
     "ERODE_UNITS",
     "INDENT_UNITS",
+    "REPEAT_UNITS",
     "RUN_UNITS",
     "STAGES",
     "calibrate_stage",
@@ -182,6 +186,24 @@ RUN_UNITS = {
     "yield.V_y": "m/s",
     "dent.max_depth_m": "m",
     "dent.centre_x_m": "m",
+}
+
+#: The calibrate stage's results that have a unit (SI): the wear law's constants and their intervals, in the units of
+#: the case schema (a constant whose unit depends on the law's exponents, as K, is in "SI": docs/keys.md).
+CALIBRATE_UNITS = {
+    f"{name}{end}": key.units
+    for name, key in TABLES["wear"].keys().items()
+    if key.units
+    for end in ("", "_low", "_high")
+}
+
+#: The repeat stage's results that have a unit (SI): those of its first and last computed impact, in the units of
+#: their repeat.csv columns (the other results carry theirs in the name).
+REPEAT_UNITS = {
+    f"{block}.{field}": unit_of(column)
+    for block in ("first_impact", "last_computed_impact")
+    for field, column in CSV_COLUMNS.items()
+    if unit_of(column)
 }
 
 #: The erode stage's results that have a unit (SI).
