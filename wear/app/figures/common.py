@@ -38,8 +38,8 @@ INSIDE = (
     "lower center",
     "center",
 )
-#: The most headroom :func:`place_legend` adds above the data (the y axis spans at most this many times the
-#: data's span) before it puts the legend outside the axes instead.
+#: The most room :func:`place_legend` adds above (or below) the data for a legend: the y axis then spans at most
+#: this many times what it spanned. A legend that needs more goes beside the axes instead.
 MAX_HEADROOM = 1.5
 
 
@@ -129,10 +129,13 @@ def _stretch(group: Sequence[Axes], factor: float, upwards: bool) -> None:
 
 
 def _legend_of(group: Sequence[Axes]) -> Legend | None:
+    """The legend drawn on one of the axes of ``group`` (the topmost first), if any."""
     return next((ax.get_legend() for ax in reversed(group) if ax.get_legend() is not None), None)
 
 
-def place_legend(axes: Axes | Sequence[Axes], pad: float = 3.0, outside: bool = True, **legend_kw: Any) -> Legend:
+def place_legend(
+    axes: Axes | Sequence[Axes], pad: float = 3.0, outside: bool = True, **legend_kw: Any
+) -> Legend | None:
     """A legend of ``axes`` (one axes, or an axes and its twins, which share its area) that covers none of their
     data: drawn points, and the lines between them (an ``axhline`` across the panel counts).
 
@@ -143,7 +146,8 @@ def place_legend(axes: Axes | Sequence[Axes], pad: float = 3.0, outside: bool = 
     below and the lower locations; failing that, the legend goes outside, to the right of the axes and of their
     tick labels (``outside``; else where it covers the fewest). Call it once the figure's layout is set and the
     limits drawn; :func:`place_legends` lays the figure out again around the legends.
-    ``legend_kw``: other :meth:`matplotlib.axes.Axes.legend` options (``fontsize``, ``ncol``, …).
+    ``legend_kw``: other :meth:`matplotlib.axes.Axes.legend` options (``fontsize``, ``ncol``, …). Nothing
+    labelled: no legend (None).
     """
     group = _group(axes)
     host = group[-1]
@@ -154,6 +158,8 @@ def place_legend(axes: Axes | Sequence[Axes], pad: float = 3.0, outside: bool = 
         labels += lab
         if ax.get_legend() is not None:
             ax.get_legend().remove()
+    if not handles:
+        return None
     renderer = host.figure.canvas.get_renderer()
     frame = host.get_window_extent(renderer)
 
@@ -210,7 +216,7 @@ def place_legends(
     renderer = fig.canvas.get_renderer()
     for _ in range(2):
         layout(fig)
-        moved = [g for g in groups if _covered(_legend_of(_group(g)), _group(g), renderer, 0.0)]
+        moved = [g for g in groups if (legend := _legend_of(_group(g))) and _covered(legend, _group(g), renderer, 0.0)]
         if not moved:
             return
         for group in moved:
@@ -218,4 +224,5 @@ def place_legends(
 
 
 def _group(axes: Axes | Sequence[Axes]) -> list[Axes]:
+    """One axes, or an axes and its twins, as a list."""
     return [axes] if isinstance(axes, Axes) else list(axes)
