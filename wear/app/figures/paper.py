@@ -276,6 +276,7 @@ def plot_restitution(ratio, e_fe, ratio_curve, e_thornton, path, source: str, no
     ax.legend(fontsize=8)
     ax2.semilogx(ratio, (np.asarray(e_fe) / thornton_restitution(ratio) - 1) * 100, "o-", color="C0")
     ax2.axhline(0, color="k", lw=0.8)
+    plain_log_ticks(ax2.xaxis, ratio)  # a few ratios within a decade: 1.5 and 5, not 2×10⁰
     ax2.set_xlabel("$V/V_y$")
     ax2.set_ylabel("$e_{FE}/e_{Thornton} - 1$ (%)")
     ax2.grid(alpha=0.3, which="both")

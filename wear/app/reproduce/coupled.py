@@ -213,5 +213,5 @@ def default_case_wear(quick: bool) -> dict:
         f"default run case: {c.ball.name} on {c.plate.name}, {c.impact.speed:g} m/s, μ {c.impact.friction:g}\n"
         f"pressure: FE ({c.fem.coupling} coupling), K {w.K:g}"
     )
-    skipped = "skipped in quick mode (4 coupled FE runs):\nrun `impactwear reproduce` without --quick" if quick else ""
+    skipped = "skipped in quick mode (4 coupled FE runs);\nrun `impactwear reproduce` without --quick" if quick else ""
     return dict(label=label, angles=angles, mass=mass, failed=failed, source=source, skipped=skipped)

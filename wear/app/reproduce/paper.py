@@ -232,7 +232,7 @@ def fig09(out: Path, quick: bool) -> FigureReport:
         f"; failed: {'; '.join(default['failed'])}" if default["failed"] else ""
     )
     if default["skipped"]:
-        fe_note = "no FE run: " + default["skipped"].split("\n")[0]
+        fe_note = "no FE run: " + default["skipped"].replace("\n", " ")
     law = f"K = {WEAR_LAW['K']:g} m^0.7 s^-0.7 Pa^-1"
     plots.plot_wear_mass(
         series,
