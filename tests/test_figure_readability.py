@@ -414,16 +414,37 @@ def test_calibration_speed_panel_is_labelled_in_plain_numbers(captured, tmp_path
 
 
 def test_pressure_regimes_legends_cover_no_data(captured, tmp_path):
-    """Loading profiles rising to 1.5 p_mean at the centre with their Hertz curves, unloading profiles filling the
-    panel up to p*: no legend box holds a drawn point or line."""
-    r = np.linspace(0.0, 1.2, 60)
+    """As the FE gives them: loading profiles near p_mean out to r ≈ a under Hertz curves peaking at 1.5-4.5 p_mean
+    near the axis, and unloading profiles that zigzag up to 1.3 p* (coarse elements) under Eq. 19's flat p* with
+    its drop at a* (a near-vertical line): no legend box holds a drawn point or line (the unloading legend sat on
+    the drop and the zigzag)."""
+    r = np.linspace(0.0, 1.3, 53)
 
-    def profile(label, peak, a=1.0):
-        p = peak * np.sqrt(np.clip(1.0 - (r / a) ** 2, 0.0, None))
-        return dict(label=label, r=r, p=p, ref_r=r, ref_p=0.97 * p, scale_r=1.0, scale_p=1.0)
+    def cap(a):
+        return np.sqrt(np.clip(1.0 - (r / a) ** 2, 0.0, None))
 
-    loading = [profile(f"w = {w:g}", 1.5 - 0.1 * k) for k, w in enumerate((0.5, 1, 5, 20, 50))]
-    unloading = [profile(f"unloaded to {f:g} F*", 1.3 - 0.2 * k, 1.0 - 0.1 * k) for k, f in enumerate((0.8, 0.5, 0.2))]
+    loading = [
+        dict(label=f"w = {w:g}", r=r, p=np.where(r < 1.05, 1.0 + 0.1 * k, 0.0), ref_r=r, ref_p=1.5 / a**2 * cap(a))
+        for k, (w, a) in enumerate(((0.5, 1.0), (1, 0.93), (3, 0.9), (6, 0.76), (20, 0.58), (100, 0.58)))
+    ]
+    for s in loading:
+        s.update(scale_r=1.0, scale_p=1.0)
+    unloading = []
+    for k, (a, level) in enumerate(((1.0, 1.0), (0.78, 0.55), (0.6, 0.35))):
+        zigzag = level * (1.0 + 0.15 * np.abs(np.sin(23.0 * r)) * (r > 0.5))
+        # Eq. 19: flat at p* for the start of unloading (a* itself), a cap below it
+        flat = level * (np.where(r < a, 1.0, 0.0) if k == 0 else cap(a))
+        unloading.append(
+            dict(
+                label=f"a/a* = {a:g}",
+                r=r,
+                p=np.where(r < a, zigzag, 0.0),
+                ref_r=r,
+                ref_p=flat,
+                scale_r=1.0,
+                scale_p=1.0,
+            )
+        )
     paper_figures.plot_pressure_regimes(loading, unloading, tmp_path / "fig.png", "synthetic")
     assert _under_legends(captured["fig.png"]) == []
 
