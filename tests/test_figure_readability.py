@@ -14,8 +14,11 @@ import pytest
 from matplotlib.contour import ContourSet
 from matplotlib.ticker import MaxNLocator
 
+import wear.app.figures.calibration as calibration_figures
 import wear.app.figures.erosion as erosion_figures
+import wear.app.figures.paper as paper_figures
 import wear.app.figures.repeat as repeat_figures
+import wear.app.figures.run as run_figures
 import wear.app.figures.sweep as sweep_figures
 from wear.app.figures.field import barycentric, child_of, project_to_nodes, split_in_four
 from wear.app.figures.indent import plastic_zone_figure
@@ -31,7 +34,7 @@ def captured(monkeypatch):
         figures[str(path).rsplit("/", 1)[-1]] = fig
         return path
 
-    for module in (erosion_figures, repeat_figures, sweep_figures):
+    for module in (erosion_figures, repeat_figures, sweep_figures, run_figures, calibration_figures, paper_figures):
         monkeypatch.setattr(module, "save_figure", keep)
     return figures
 
@@ -257,3 +260,240 @@ def test_repeat_axis_counts_whole_impacts_and_says_no_shakedown(captured, tmp_pa
     assert "no shakedown" in title and "None" not in title
     assert "shakedown at impact 3" in repeat_figures.shakedown_note(3, 7.7e-6)
     assert repeat_figures.shakedown_note(None) == ""
+
+
+# ------------------------------------------------------------------ legends clear of the data
+
+
+def _under_legends(fig) -> list[str]:
+    """The labels of what a legend of ``fig`` covers: a drawn point or line vertex inside a legend's box, or a
+    point of a drawn line between its vertices (sampled every ~1/200 of each segment: an ``axhline`` has only its
+    two ends as vertices). Every axes drawn over the same area (a twin) counts; what lies outside the axes is
+    clipped and does not."""
+    fig.canvas.draw()
+    covered, found = [], 0
+    for host in fig.axes:
+        legend = host.get_legend()
+        if legend is None:
+            continue
+        found += 1
+        box, frame = legend.get_window_extent(), host.get_window_extent()
+        for ax in fig.axes:
+            if not np.allclose(ax.get_window_extent().bounds, frame.bounds):
+                continue
+            drawn = [
+                (line.get_label(), line.get_transform().transform(line.get_xydata()), line.get_linestyle())
+                for line in ax.get_lines()
+                if len(line.get_xydata())
+            ]
+            drawn += [
+                (c.get_label(), c.get_offset_transform().transform(c.get_offsets()), "None")
+                for c in ax.collections
+                if hasattr(c, "get_offsets") and len(c.get_offsets())
+            ]
+            for label, xy, style in drawn:
+                if style not in ("None", "none", "", " ") and len(xy) > 1:
+                    t = np.linspace(0.0, 1.0, 200)[:, None, None]
+                    xy = np.concatenate([xy, (xy[:-1] + t * (xy[1:] - xy[:-1])).reshape(-1, 2)])
+                xy = xy[np.isfinite(xy).all(axis=1)]
+                xy = xy[
+                    (xy[:, 0] >= frame.x0) & (xy[:, 0] <= frame.x1) & (xy[:, 1] >= frame.y0) & (xy[:, 1] <= frame.y1)
+                ]
+                inside = (xy[:, 0] > box.x0) & (xy[:, 0] < box.x1) & (xy[:, 1] > box.y0) & (xy[:, 1] < box.y1)
+                if inside.any():
+                    covered.append(label)
+    assert found, "no legend drawn"
+    return covered
+
+
+def _flat_topped(r, a, p0):
+    """A plastic contact's pressure: flat at ``p0`` to 0.8 a, then falling to 0 at ``a`` (an FE-like profile
+    that fills the top of the axes, where a legend used to go)."""
+    return np.where(
+        r < 0.8 * a, p0, np.where(r < a, p0 * np.sqrt(np.clip(1.0 - ((r - 0.8 * a) / (0.2 * a)) ** 2, 0, 1)), 0.0)
+    )
+
+
+def _run_result(three_d: bool):
+    """A synthetic run result for the run figures: a plastic impact with flat-topped pressures along it and, on
+    the 3-D plate, the axisymmetric dent it started from."""
+    t = np.linspace(0.0, 10e-6, 41)
+    a = 200e-6 * np.sin(np.pi * t / t[-1]) ** 0.5
+    p0 = 2.0e9 * (0.6 + 0.4 * np.sin(np.pi * t / t[-1]))
+    pressure = SimpleNamespace(
+        time=t,
+        extent=np.where(a > 0, a * 1.05, 0.0),
+        source="fe",
+        force=lambda: 0.9 * np.pi * a**2 * p0,
+        at=lambda i, r: _flat_topped(r, a[i], p0[i]),
+    )
+    x = np.linspace(-400e-6, 400e-6, 81)
+    y = np.linspace(-300e-6, 300e-6, 61)
+    gx, gy = np.meshgrid(x, y, indexing="ij")
+    rho = np.hypot(gx - 20e-6, gy)
+    dent = 4e-6 * np.clip(1.0 - (rho / 200e-6) ** 2, 0.0, None)
+    r_fe = np.linspace(0.0, 400e-6, 50)
+    surface = SimpleNamespace(
+        x=x, y=y, dent_centre=(20e-6, 0.0), dent_on_grid=lambda: dent, wear_depth=2e-9 * dent / 4e-6 * 4.0
+    )
+    return SimpleNamespace(
+        pressure=pressure,
+        impact=SimpleNamespace(history=SimpleNamespace(t=t, contact_radius=a)),
+        case=SimpleNamespace(plate=SimpleNamespace(yield_strength=4e8)),
+        regime="plastic",
+        surface=surface,
+        plate=SimpleNamespace(
+            start_dent=lambda: (r_fe, 3.8e-6 * np.clip(1.0 - (r_fe / 200e-6) ** 2, 0.0, None)) if three_d else None
+        ),
+    )
+
+
+@pytest.mark.parametrize("three_d", [False, True])
+def test_run_pressure_profiles_and_cross_sections_legends_cover_no_data(captured, tmp_path, three_d):
+    """pressure_profiles.png: flat-topped FE profiles and their Hertz curves fill the top of the axes, where the
+    legend sat over them; cross_sections.png (the 3-D plate, with the axisymmetric start dent): the legend sat on
+    the dent's flanks. Now neither legend holds a drawn point or line."""
+    result = _run_result(three_d)
+    run_figures.pressure_profiles(result, tmp_path / "pressure_profiles.png")
+    run_figures.cross_sections(result, tmp_path / "cross_sections.png")
+    assert _under_legends(captured["pressure_profiles.png"]) == []
+    assert _under_legends(captured["cross_sections.png"]) == []
+
+
+def test_repeat_tolerance_line_runs_under_no_legend(captured, tmp_path):
+    """The shakedown tolerance crosses the Δᾱ panel (Δᾱ falls from above it to below it) and the shakedown
+    impact is a vertical line across every panel: no legend box holds either, nor any series."""
+    n = np.arange(1, 9)
+    columns = {
+        "impact_last": n,
+        "computed": np.ones(8),
+        "dent_depth_m": 1e-6 * np.sqrt(n),
+        "pile_up_height_m": 2e-7 * np.sqrt(n),
+        "surface_depth_m": 1.1e-6 * np.sqrt(n),
+        "total_wear_max_depth_m": 1e-7 * n,
+        "total_wear_volume_m3": 3e-15 * n,
+        "normal_restitution": 0.8 + 0.01 * n,
+        "tangential_restitution": 0.5 + 0.02 * n,
+        "plastic_work_per_impact_J": 1e-4 / n,
+        "max_pressure_Pa": 2e9 + 1e7 * n,
+        "plastic_strain_increment": 1e-3 / n**3,
+    }
+    repeat_figures.plot_repeat(columns, tmp_path / "repeat.png", "8 impacts", shakedown_impact=5, tolerance=2e-5)
+    fig = captured["repeat.png"]
+    assert _under_legends(fig) == []
+    labels = [t.get_text() for ax in fig.axes if ax.get_legend() for t in ax.get_legend().get_texts()]
+    assert "shakedown tolerance" in labels and "plastic work of impact" in labels
+
+
+def _calibration_result():
+    speeds = np.repeat([20.0, 30.0, 40.0, 50.0, 60.0], 5)
+    angles = np.tile([10.0, 30.0, 45.0, 60.0, 75.0], 5)
+    predicted = 2e-9 * speeds**2.6 * np.cos(np.radians(angles)) ** 0.3
+    measured = predicted * np.exp(0.3 * np.sin(7.0 * np.arange(25)))
+    return SimpleNamespace(
+        data=SimpleNamespace(angle=angles, speed=speeds, measured=measured, quantity="erosion_kg_per_kg"),
+        predicted=predicted,
+        fit=SimpleNamespace(names=("dnv_K",), values=(2e-9,), rms_log_error=0.2),
+        case=SimpleNamespace(wear=SimpleNamespace(law="dnv")),
+    )
+
+
+def test_calibration_speed_panel_is_labelled_in_plain_numbers(captured, tmp_path):
+    """The right panel (against the speed, 20–60 m/s on a log axis) has its y label, and its speed ticks read
+    20, 30, 40, 50, 60 (not 2×10¹ … 6×10¹); neither legend covers a point or a line."""
+    calibration_figures.plot_calibration(_calibration_result(), tmp_path / "calibration.png")
+    fig = captured["calibration.png"]
+    fig.canvas.draw()
+    left, right = fig.axes[:2]
+    assert right.get_ylabel() == left.get_ylabel() == "erosion ratio (kg/kg)"
+    lo, hi = right.get_xlim()
+    shown = [t for t in right.xaxis.get_majorticklabels() if lo <= t.get_position()[0] <= hi and t.get_text()]
+    assert [t.get_text() for t in shown] == ["20", "30", "40", "50", "60"]
+    assert all(t.get_text() == "" for t in right.xaxis.get_minorticklabels())
+    assert _under_legends(fig) == []
+
+
+def test_pressure_regimes_legends_cover_no_data(captured, tmp_path):
+    """As the FE gives them: loading profiles near p_mean out to r ≈ a under Hertz curves peaking at 1.5-4.5 p_mean
+    near the axis, and unloading profiles that zigzag up to 1.3 p* (coarse elements) under Eq. 19's flat p* with
+    its drop at a* (a near-vertical line): no legend box holds a drawn point or line (the unloading legend sat on
+    the drop and the zigzag)."""
+    r = np.linspace(0.0, 1.3, 53)
+
+    def cap(a):
+        return np.sqrt(np.clip(1.0 - (r / a) ** 2, 0.0, None))
+
+    loading = [
+        dict(label=f"w = {w:g}", r=r, p=np.where(r < 1.05, 1.0 + 0.1 * k, 0.0), ref_r=r, ref_p=1.5 / a**2 * cap(a))
+        for k, (w, a) in enumerate(((0.5, 1.0), (1, 0.93), (3, 0.9), (6, 0.76), (20, 0.58), (100, 0.58)))
+    ]
+    for s in loading:
+        s.update(scale_r=1.0, scale_p=1.0)
+    unloading = []
+    for k, (a, level) in enumerate(((1.0, 1.0), (0.78, 0.55), (0.6, 0.35))):
+        zigzag = level * (1.0 + 0.15 * np.abs(np.sin(23.0 * r)) * (r > 0.5))
+        # Eq. 19: flat at p* for the start of unloading (a* itself), a cap below it
+        flat = level * (np.where(r < a, 1.0, 0.0) if k == 0 else cap(a))
+        unloading.append(
+            dict(
+                label=f"a/a* = {a:g}",
+                r=r,
+                p=np.where(r < a, zigzag, 0.0),
+                ref_r=r,
+                ref_p=flat,
+                scale_r=1.0,
+                scale_p=1.0,
+            )
+        )
+    paper_figures.plot_pressure_regimes(loading, unloading, tmp_path / "fig.png", "synthetic")
+    assert _under_legends(captured["fig.png"]) == []
+
+
+# ------------------------------------------------------------------ reproduce --quick: no blank map
+
+
+@pytest.mark.parametrize("yields", [(1.6e9,), (5e8, 1.6e9)])
+def test_regime_map_draws_every_cell_even_in_one_row(captured, tmp_path, yields):
+    """Quick mode's map had one row of cells (one yield strength) and two of its three panels came out blank:
+    every cell is now drawn with an area on the page, its speed and yield strength inside it, the ticks at the
+    cells read as plain numbers, and each restitution note lies inside its panel."""
+    speeds = np.array([0.3, 3.0])
+    shape = (len(yields), 2)
+    regime = np.tile([0.0, 2.0], (shape[0], 1))
+    e_fe = np.tile([0.99, 0.9], (shape[0], 1))
+    paper_figures.plot_regime_map(
+        speeds, np.array(yields), regime, np.full(shape, 1.3), e_fe, e_fe / 1.02, tmp_path / "map.png", "synthetic"
+    )
+    fig = captured["map.png"]
+    fig.canvas.draw()
+    maps = [ax for ax in fig.axes if ax.collections and ax.get_xlabel()]
+    assert len(maps) == 3
+    for ax in maps:
+        mesh = ax.collections[0]
+        assert np.ma.count(mesh.get_array()) == 2 * len(yields)
+        frame = ax.get_window_extent()
+        cells = [p.get_extents(mesh.get_transform()) for p in mesh.get_paths()]
+        assert all(c.width * c.height > 0.05 * frame.width * frame.height for c in cells)
+        for v in speeds:
+            for y in yields:
+                inside = [c for c in cells if c.contains(*ax.transData.transform((v, y / 1e6)))]
+                assert len(inside) == 1
+        lo, hi = ax.get_xlim()
+        assert [t.get_text() for t in ax.xaxis.get_majorticklabels() if lo <= t.get_position()[0] <= hi] == ["0.3", "3"]
+        lo, hi = ax.get_ylim()
+        shown = [t.get_text() for t in ax.yaxis.get_majorticklabels() if lo <= t.get_position()[1] <= hi]
+        assert shown == [f"{y / 1e6:g}" for y in yields]
+    for text in maps[2].texts:
+        assert maps[2].get_window_extent().contains(*text.get_window_extent().get_points().mean(axis=0))
+
+
+def test_quick_reproduction_sizes_draw_trends():
+    """What quick mode computes: a two-by-two regime map, two restitution ratios, and Fig. 9's FE panel skipped
+    (no FE run) with the reason, not one point."""
+    from wear.app.reproduce.coupled import QUICK_RESTITUTION_RATIOS, default_case_wear, regime_grid
+
+    speeds, yields = regime_grid(True)
+    assert len(set(speeds)) >= 2 and len(set(yields)) >= 2
+    assert len(set(QUICK_RESTITUTION_RATIOS)) >= 2
+    skipped = default_case_wear(True)
+    assert skipped["angles"].size == 0 and "skipped in quick mode" in skipped["skipped"]

@@ -12,7 +12,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+import wear.app.figures.paper as paper_figures
 from wear.app import cli
+from wear.app.figures.common import save_figure
 from wear.app.reproduce.run import FIGURES
 from wear.app.validation.references import kharaz_data, kharaz_rms
 
@@ -37,14 +39,23 @@ DOCS = Path(__file__).resolve().parents[1] / "docs"
 
 @pytest.fixture(scope="module")
 def quick_run(tmp_path_factory):
+    """(exit status, output folder, the figures drawn keyed by file name) of a quick reproduction."""
     out = tmp_path_factory.mktemp("reproduce")
     only = [arg for name in QUICK_FIGURES for arg in ("--only", name)]
-    status = cli.main(["reproduce", "--out", str(out), "--quick", "--quiet", *only])
-    return status, out
+    figures = {}
+
+    def keep(fig, path, *args, **kwargs):
+        figures[Path(path).name] = fig
+        return save_figure(fig, path, *args, **kwargs)
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(paper_figures, "save_figure", keep)
+        status = cli.main(["reproduce", "--out", str(out), "--quick", "--quiet", *only])
+    return status, out, figures
 
 
 def test_every_figure_written(quick_run):
-    status, out = quick_run
+    status, out, _ = quick_run
     md = (out / "reproduce.md").read_text(encoding="utf-8")
     assert status == 0, md[: md.find("## ")]  # the list of figures not produced, with the reasons
     assert "not produced" not in md
@@ -82,7 +93,7 @@ def test_failed_figure_is_reported_and_exits_1(tmp_path, monkeypatch):
 
 
 def test_reproduce_md_states_kharaz_rms(quick_run):
-    _, out = quick_run
+    _, out, _ = quick_run
     md = (out / "reproduce.md").read_text(encoding="utf-8")
     rms = kharaz_rms()
     assert f"centre rebound angle: {rms['centre_rebound_angle_deg']:.2f}°" in md
@@ -106,3 +117,20 @@ def test_unknown_figure_is_one_line_exit_2(tmp_path, capsys):
     assert cli.main(["reproduce", "--out", str(tmp_path), "--only", "fig99"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "only='fig99'" in err[0]
+
+
+def test_quick_panels_show_a_trend_or_say_they_are_skipped(quick_run):
+    """Quick mode draws fewer points, never a panel of one point (Fig. 9's FE panel and the restitution against
+    Thornton had one): every panel holds a line or a set of markers with at least two points, or says in its text
+    that it was skipped."""
+    _, _, figures = quick_run
+    assert {f"{name}.png" for name in QUICK_FIGURES} <= set(figures)
+    for name, fig in figures.items():
+        for ax in fig.axes:
+            # data lines only: an axhline (a reference at 0, two vertices) is in axes coordinates along x
+            data = [line for line in ax.get_lines() if line.get_transform() is ax.transData]
+            counts = [np.count_nonzero(np.isfinite(line.get_xydata()).all(axis=1)) for line in data]
+            said = " ".join(t.get_text() for t in ax.texts)
+            assert max(counts, default=0) >= 2 or "skipped" in said, (name, ax.get_title(), counts, said)
+    fig09 = figures["fig09_wear_mass_vs_angle.png"]
+    assert "skipped in quick mode" in " ".join(t.get_text() for t in fig09.axes[0].texts)

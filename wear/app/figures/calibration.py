@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
-from wear.app.figures.common import save_figure, subplots
+from wear.app.figures.common import place_legends, plain_log_ticks, save_figure, subplots
 from wear.chain.calibrate import CalibrationResult
 
 __all__ = ["plot_calibration"]
@@ -32,7 +32,6 @@ def _panel(ax, x, group, measured, predicted, xlabel: str, label: str) -> None:
         ax.plot(x[only], predicted[only], "x", color=colour, ms=6)
     ax.set_xlabel(xlabel)
     ax.set_yscale("log")
-    ax.legend(fontsize=7, ncol=2)
 
 
 def plot_calibration(result: CalibrationResult, path: str | os.PathLike) -> Path:
@@ -43,7 +42,9 @@ def plot_calibration(result: CalibrationResult, path: str | os.PathLike) -> Path
     _panel(a1, d.angle, d.speed, d.measured, predicted, "impact angle from the normal (deg)", "m/s:")
     _panel(a2, d.speed, d.angle, d.measured, predicted, "impact speed (m/s)", "deg:")
     a2.set_xscale("log")
+    plain_log_ticks(a2.xaxis, d.speed)
     a1.set_ylabel(_LABELS[d.quantity])
+    a2.set_ylabel(_LABELS[d.quantity])
     f = result.fit
     text = ", ".join(f"{n} = {v:.4g}" for n, v in zip(f.names, f.values, strict=True))
     fig.suptitle(
@@ -51,5 +52,5 @@ def plot_calibration(result: CalibrationResult, path: str | os.PathLike) -> Path
         "markers: measured; lines: predicted; x: rows without a measurement",
         fontsize=9,
     )
-    fig.tight_layout()
+    place_legends(fig, (a1, a2), fontsize=7, ncol=2)
     return save_figure(fig, path)

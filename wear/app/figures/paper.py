@@ -16,7 +16,7 @@ from matplotlib.colors import BoundaryNorm, ListedColormap
 
 from contact.theory import thornton_restitution
 from fem import REGIMES
-from wear.app.figures.common import save_figure, subplots
+from wear.app.figures.common import place_legends, plain_log_ticks, save_figure, subplots
 
 __all__ = [
     "save_sourced",
@@ -40,6 +40,11 @@ def save_sourced(fig, path: str | os.PathLike, source: str) -> Path:
     """Write ``fig`` to ``path`` (PNG, atomically) with ``source`` printed at its bottom; close it."""
     fig.text(0.01, 0.005, "Source: " + source, fontsize=7, color="0.3", ha="left", va="bottom", wrap=True)
     return save_figure(fig, path, dpi=DPI)
+
+
+def _above_the_source(fig) -> None:
+    """``tight_layout`` over all but the bottom 12 % of ``fig``, where :func:`save_sourced` writes the source."""
+    fig.tight_layout(rect=(0.0, 0.12, 1.0, 1.0))
 
 
 def plot_peak_force(angles, speeds, model_force, hertz_force, path, source: str) -> Path:
@@ -100,14 +105,19 @@ def plot_spin(angles, spin, data_angles, data_spin, et, data_et_angles, data_et,
 
 def plot_wear_mass(series: Sequence[dict], path, source: str) -> Path:
     """Worn mass (kg) against impact angle (deg), one panel per series (each dict: ``label``, ``angles``,
-    ``mass``), the angle of maximum wear marked."""
+    ``mass``, optionally ``skipped``: why it was not computed, said in its panel), the angle of maximum wear
+    marked."""
     n = len(series)
     fig, axes = subplots(1, n, figsize=(4.6 * n, 4.2), squeeze=False)
     for k, (ax, s) in enumerate(zip(axes[0], series, strict=True)):
         angles, mass = np.asarray(s["angles"]), np.asarray(s["mass"])
         c = COLORS[k % len(COLORS)]
         ax.plot(angles, mass, "o-", ms=3.5, color=c)
-        if np.any(np.isfinite(mass)):
+        if s.get("skipped"):
+            ax.text(0.5, 0.5, s["skipped"], transform=ax.transAxes, ha="center", va="center", fontsize=8, wrap=True)
+            ax.set_xlim(0.0, 90.0)
+            ax.set_yticks([])
+        elif np.any(np.isfinite(mass)):
             i = int(np.nanargmax(mass))
             ax.plot(angles[i], mass[i], "*", ms=13, color="k", label=f"max at {angles[i]:g}°")
             ax.axvline(angles[i], color="k", lw=0.6, ls=":")
@@ -172,7 +182,7 @@ def plot_pressure_regimes(loading: Sequence[dict], unloading: Sequence[dict], pa
 
     Each dict: ``label``, ``r`` (m), ``p`` (Pa), ``ref_r`` (m), ``ref_p`` (Pa); axes normalised by ``scale_r``
     (m) and ``scale_p`` (Pa) given in each dict."""
-    fig, (ax1, ax2) = subplots(1, 2, figsize=(10, 4.4))
+    fig, (ax1, ax2) = subplots(1, 2, figsize=(11, 4.4))
     for k, s in enumerate(loading):
         c = COLORS[k % len(COLORS)]
         ax1.plot(s["r"] / s["scale_r"], s["p"] / s["scale_p"], "-", color=c, label=s["label"])
@@ -193,38 +203,64 @@ def plot_pressure_regimes(loading: Sequence[dict], unloading: Sequence[dict], pa
         a.set_xlim(0, 1.3)
         a.set_ylim(bottom=0)
         a.grid(alpha=0.3)
-        a.legend(fontsize=7)
-    fig.subplots_adjust(bottom=0.18, wspace=0.25)
+    # the profiles fill both panels up to their peaks: the legends go beside them, above the source line
+    place_legends(fig, (ax1, ax2), layout=_above_the_source, fontsize=7)
     return save_sourced(fig, path, source)
+
+
+def _log_edges(values) -> np.ndarray:
+    """Edges of cells centred (geometrically) on ``values`` (sorted, > 0): midway in log between neighbours, the
+    outer ones as far out as the inner ones; a single value gets the cell from half to twice it."""
+    v = np.log(np.asarray(values, float))
+    if v.size == 1:
+        return np.exp(v[0] + np.log(2.0) * np.array([-1.0, 1.0]))
+    mid = 0.5 * (v[1:] + v[:-1])
+    return np.exp(np.concatenate([[2.0 * v[0] - mid[0]], mid, [2.0 * v[-1] - mid[-1]]]))
 
 
 def plot_regime_map(speeds, yields, regime, ratio, e_fe, e_thornton, path, source: str) -> Path:
     """Maps over impact speed (m/s, x) and plate yield strength (Pa, y): regime (index into :data:`REGIMES`),
-    p_max/p_mean, and the coupled-FE normal restitution against Thornton 1997. Arrays have shape (yields, speeds)."""
+    p_max/p_mean, and the coupled-FE normal restitution against Thornton 1997. Arrays have shape (yields, speeds);
+    each cell is drawn round its speed and yield strength (any number of rows and columns, one included)."""
     fig, axes = subplots(1, 3, figsize=(13, 4.3))
-    sx, sy = np.asarray(speeds), np.asarray(yields) / 1e6
+    sx, sy = np.asarray(speeds, float), np.asarray(yields, float) / 1e6
+    ex, ey = _log_edges(sx), _log_edges(sy)
     cmap = ListedColormap(["#4c72b0", "#55a868", "#dd8452", "#c44e52"])
-    im = axes[0].pcolormesh(sx, sy, regime, cmap=cmap, norm=BoundaryNorm(np.arange(-0.5, 4.5), 4), shading="nearest")
+    im = axes[0].pcolormesh(ex, ey, regime, cmap=cmap, norm=BoundaryNorm(np.arange(-0.5, 4.5), 4), shading="flat")
     cb = fig.colorbar(im, ax=axes[0], ticks=range(4))
     cb.ax.set_yticklabels(REGIMES, fontsize=7)
     axes[0].set_title("regime at maximum overlap", fontsize=10)
-    im = axes[1].pcolormesh(sx, sy, ratio, shading="nearest", cmap="viridis")
+    im = axes[1].pcolormesh(ex, ey, ratio, shading="flat", cmap="viridis")
     fig.colorbar(im, ax=axes[1])
     axes[1].set_title("$p_{max}/p_{mean}$ at maximum overlap (Hertz: 1.5)", fontsize=10)
     diff = np.asarray(e_fe) / np.asarray(e_thornton) - 1.0
     lim = max(float(np.nanmax(np.abs(diff))), 1e-3) if np.any(np.isfinite(diff)) else 1e-3
-    im = axes[2].pcolormesh(sx, sy, diff * 100, shading="nearest", cmap="RdBu_r", vmin=-lim * 100, vmax=lim * 100)
+    im = axes[2].pcolormesh(ex, ey, diff * 100, shading="flat", cmap="RdBu_r", vmin=-lim * 100, vmax=lim * 100)
     fig.colorbar(im, ax=axes[2], label="%")
     axes[2].set_title("$e_{FE}/e_{Thornton} - 1$", fontsize=10)
     for i in range(len(sy)):
         for j in range(len(sx)):
-            axes[2].text(sx[j], sy[i], f"{e_fe[i][j]:.2f}", ha="center", va="center", fontsize=6)
+            text = f"e = {e_fe[i][j]:.2f}" if np.isfinite(e_fe[i][j]) else "failed"
+            axes[2].text(
+                sx[j],
+                sy[i],
+                text,
+                ha="center",
+                va="center",
+                fontsize=7,
+                clip_on=True,
+                bbox=dict(facecolor="white", alpha=0.8, linewidth=0, pad=1.5),
+            )
     for a in axes:
         a.set_xscale("log")
         a.set_yscale("log")
+        a.set_xlim(ex[0], ex[-1])
+        a.set_ylim(ey[0], ey[-1])
+        plain_log_ticks(a.xaxis, sx)
+        plain_log_ticks(a.yaxis, sy)
         a.set_xlabel("impact speed (m/s)")
         a.set_ylabel("plate yield strength (MPa)")
-    fig.subplots_adjust(bottom=0.18, wspace=0.35, left=0.06, right=0.97)
+    fig.subplots_adjust(bottom=0.18, wspace=0.5, left=0.06, right=0.97)
     return save_sourced(fig, path, source)
 
 
@@ -240,6 +276,7 @@ def plot_restitution(ratio, e_fe, ratio_curve, e_thornton, path, source: str, no
     ax.legend(fontsize=8)
     ax2.semilogx(ratio, (np.asarray(e_fe) / thornton_restitution(ratio) - 1) * 100, "o-", color="C0")
     ax2.axhline(0, color="k", lw=0.8)
+    plain_log_ticks(ax2.xaxis, ratio)  # a few ratios within a decade: 1.5 and 5, not 2×10⁰
     ax2.set_xlabel("$V/V_y$")
     ax2.set_ylabel("$e_{FE}/e_{Thornton} - 1$ (%)")
     ax2.grid(alpha=0.3, which="both")

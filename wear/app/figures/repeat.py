@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.ticker import MaxNLocator
 
-from wear.app.figures.common import save_figure, subplots
+from wear.app.figures.common import place_legends, save_figure, subplots
 
 __all__ = ["plot_repeat", "shakedown_note"]
 
@@ -47,23 +47,20 @@ def plot_repeat(
         ax.plot(n[computed], y[computed], "o", ms=3, color=line.get_color())
 
     series(ax_d, "dent_depth_m", 1e6, "dent (plastic, FE)")
-    series(ax_d, "pile_up_height_m", 1e6, "pile-up (FE, above the original plane)")
+    series(ax_d, "pile_up_height_m", 1e6, "pile-up (FE, above the plane)")
     series(ax_d, "surface_depth_m", 1e6, "dent + wear (FE surface)")
-    series(ax_d, "total_wear_max_depth_m", 1e6, "wear, max of the 2-D map")
+    series(ax_d, "total_wear_max_depth_m", 1e6, "wear (max of the 2-D map)")
     ax_d.set_ylabel("depth (µm)")
-    ax_d.legend(fontsize=8)
     series(ax_v, "total_wear_volume_m3", 1.0, "total worn volume")
     ax_v.set_ylabel("worn volume (m³)")
     ax_w = ax_v.twinx()
     work = np.asarray(columns["plastic_work_per_impact_J"], float)
     ax_w.plot(n[computed], work[computed], "^", ms=3, color="tab:purple", label="plastic work of impact")
     ax_w.set_ylabel("plastic work per impact (J)", color="tab:purple")
-    ax_w.legend(fontsize=8, loc="lower right")
     series(ax_e, "normal_restitution", 1.0, "normal e_n")
     if np.isfinite(np.asarray(columns["tangential_restitution"], float)).any():
         series(ax_e, "tangential_restitution", 1.0, "tangential e_t")
     ax_e.set_ylabel("restitution")
-    ax_e.legend(fontsize=8)
     series(ax_p, "max_pressure_Pa", 1e-9, "max contact pressure (FE)")
     ax_p.set_ylabel("max contact pressure (GPa)")
     ax2 = ax_p.twinx()
@@ -72,7 +69,6 @@ def plot_repeat(
     if tolerance:
         ax2.axhline(tolerance, color="tab:red", lw=0.8, ls="--", label="shakedown tolerance")
     ax2.set_ylabel("plastic strain increment Δᾱ", color="tab:red")
-    ax2.legend(fontsize=8, loc="lower right")
     for ax in axes.ravel():
         if n[-1] > 20:
             ax.set_xscale("log")
@@ -85,5 +81,5 @@ def plot_repeat(
     for ax in (ax_e, ax_p):
         ax.set_xlabel("impact number")
     fig.suptitle(title + shakedown_note(shakedown_impact, tolerance))
-    fig.tight_layout()
+    place_legends(fig, (ax_d, (ax_v, ax_w), ax_e, (ax_p, ax2)), fontsize=8)
     return save_figure(fig, path)

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from contact.theory import hertz_pressure, mesarovic_johnson_pressure, thornton_restitution
-from wear.app.figures.common import save_figure, subplots
+from wear.app.figures.common import place_legends, save_figure, subplots
 
 __all__ = [
     "force_overlap",
@@ -67,7 +67,7 @@ def pressure_profiles(result, path, stages: int = 6) -> Path:
             ]
         )
     )
-    fig, ax = subplots(figsize=(7, 4.5))
+    fig, ax = subplots(figsize=(9, 4.5))
     h = result.impact.history
     # the contact radius of the impact at each pressure sample (the table's extent is the first node beyond it)
     radius = np.interp(ph.time, h.t, h.contact_radius)
@@ -89,8 +89,7 @@ def pressure_profiles(result, path, stages: int = 6) -> Path:
         ax.plot([], [], "k--", lw=1, label="Mesarovic–Johnson, Eq. 19 (unloading from p* = F*/πa*²)")
     ax.set_xlabel("r (µm)")
     ax.set_ylabel("contact pressure (MPa)")
-    ax.legend(fontsize=7)
-    fig.tight_layout()
+    place_legends(fig, [ax], fontsize=7)
     return save_figure(fig, path)
 
 
@@ -125,6 +124,7 @@ def cross_sections(result, path) -> Path:
     j0 = int(np.argmin(np.abs(s.y)))
     i0 = int(np.argmin(np.abs(s.x - s.dent_centre[0])))
     fig, axes = subplots(1, 2, figsize=(10, 4))
+    panels = []
     for ax, coord, d, w, label in (
         (axes[0], s.x, dent[:, j0], wear[:, j0], "x along the impact (µm), y = 0"),
         (axes[1], s.y, dent[i0, :], wear[i0, :], "y across (µm), x = dent centre"),
@@ -137,10 +137,10 @@ def cross_sections(result, path) -> Path:
         ax.set_xlabel(label)
         ax.set_ylabel("surface z (µm)")
         ax2 = ax.twinx()
-        ax2.plot(coord * 1e6, w * 1e9, "C2", lw=1)
+        ax2.plot(coord * 1e6, w * 1e9, "C2", lw=1, label="wear depth (right axis)")
         ax2.set_ylabel("wear depth (nm)", color="C2")
-        ax.legend(fontsize=8, loc="lower right")
-    fig.tight_layout()
+        panels.append((ax, ax2))
+    place_legends(fig, panels, fontsize=8)
     return save_figure(fig, path)
 
 

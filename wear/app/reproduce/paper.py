@@ -231,6 +231,8 @@ def fig09(out: Path, quick: bool) -> FigureReport:
     fe_note = f"{int(np.sum(np.isfinite(default['mass'])))} coupled FE runs" + (
         f"; failed: {'; '.join(default['failed'])}" if default["failed"] else ""
     )
+    if default["skipped"]:
+        fe_note = "no FE run: " + default["skipped"].replace("\n", " ")
     law = f"K = {WEAR_LAW['K']:g} m^0.7 s^-0.7 Pa^-1"
     plots.plot_wear_mass(
         series,
@@ -242,6 +244,8 @@ def fig09(out: Path, quick: bool) -> FigureReport:
     names = ["default run case (FE)", "Kharaz case", "steel on aluminium"]
     rep.numbers = {}
     for name, s, peak in zip(names, series, peaks, strict=True):
+        if s.get("skipped"):
+            continue
         rep.numbers[f"angle of max wear, {name} (deg)"] = peak
         rep.numbers[f"max worn mass, {name} (kg)"] = float(np.nanmax(s["mass"])) if np.isfinite(peak) else math.nan
     rep.paper = (
@@ -250,7 +254,9 @@ def fig09(out: Path, quick: bool) -> FigureReport:
     )
     rep.ours = (
         "Angle of maximum wear: "
-        + ", ".join(f"**{p:g}°** for the {n}" for n, p in zip(names, peaks, strict=True))
+        + ", ".join(
+            f"**{p:g}°** for the {n}" for n, p, s in zip(names, peaks, series, strict=True) if not s.get("skipped")
+        )
         + f". The default run case (wear.run, K and exponents of its [wear] table) is computed with {fe_note}; "
         f"the other panels use {law}. The mass scales linearly with K; the angle of maximum wear does not."
     )
