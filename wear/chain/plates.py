@@ -98,7 +98,8 @@ class PlateRun(Protocol):
         ...
 
     def plastic_section(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, float] | None:
-        """(x m, z m, equivalent plastic strain, largest contact radius m) on the plane of incidence, or None."""
+        """The plane of incidence of a 3-D plate, or None: (points (n, 2) x, z m; triangles (m, 3) tiling it;
+        equivalent plastic strain (m,) on each; largest contact radius m)."""
         ...
 
 

@@ -146,12 +146,15 @@ class SolidRun:
         return np.asarray(fe.surface_r, float)[order], np.asarray(fe.residual_depth, float)[order]
 
     def plastic_section(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, float] | None:
-        """The element centroids (x, z in m) of the elements with a face on the plane of incidence y = 0 and their
-        mean equivalent plastic strain after the impact, and the largest contact radius (m)."""
+        """The plane of incidence y = 0 of the half plate as the triangles the elements' faces on it tile: their
+        vertices (n, 2) (x, z in m, reference configuration), the triangles (m, 3) and their element's mean
+        equivalent plastic strain (m,) after the impact; and the largest contact radius (m)."""
         solid = self.coupled.solid
         mesh = solid.solver.disc.mesh
         on_plane = np.abs(mesh.p[1]) <= 1e-9 * float(np.ptp(mesh.p[0]))
         touching = on_plane[mesh.t].sum(axis=0) >= 3
-        centroid = mesh.p[:, mesh.t[:, touching]].mean(axis=1)
+        elements = mesh.t[:, touching].T
+        faces = elements[on_plane[elements]].reshape(-1, 3)  # the three vertices of each such element on the plane
+        used, local = np.unique(faces, return_inverse=True)
         strain = solid.final.alpha.mean(axis=1)[touching]
-        return centroid[0], centroid[2], strain, float(np.max(solid.contact_radius))
+        return mesh.p[[0, 2]][:, used].T, local.reshape(-1, 3), strain, float(np.max(solid.contact_radius))

@@ -3,14 +3,25 @@
 A scatter of quadrature values shows moiré holes where the mesh coarsens; a field on the FE triangles does not.
 :func:`split_in_four` refines the mesh triangles at their edge midpoints (the P2 nodes of the plate's elements),
 and :func:`project_to_nodes` turns quadrature values into nodal values on that triangulation (lumped L2
-projection), ready for ``tricontourf``. Plain numpy; coordinates in m (any consistent length unit works).
+projection), ready for ``tricontourf``; :func:`cell_field_on_nodes` does the same for one value per triangle (a
+section of the 3-D plate); :func:`refine_grid` resamples a field on a regular grid by a bicubic spline, for a
+map without the cells' blocks. Plain numpy and scipy; coordinates in m (any consistent length unit works).
 """
 
 from __future__ import annotations
 
 import numpy as np
+from scipy.interpolate import RectBivariateSpline
 
-__all__ = ["split_in_four", "barycentric", "child_of", "project_to_nodes", "quadrature_field_on_mesh"]
+__all__ = [
+    "split_in_four",
+    "barycentric",
+    "child_of",
+    "project_to_nodes",
+    "quadrature_field_on_mesh",
+    "cell_field_on_nodes",
+    "refine_grid",
+]
 
 
 def split_in_four(points: np.ndarray, triangles: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -114,3 +125,39 @@ def quadrature_field_on_mesh(
     owner = 4 * parent + child
     nodal = [project_to_nodes(fine_points.shape[0], fine_triangles, owner, local, np.ravel(f)) for f in fields]
     return fine_points, fine_triangles, nodal
+
+
+def cell_field_on_nodes(points: np.ndarray, triangles: np.ndarray, values: np.ndarray) -> np.ndarray:
+    r"""Nodal values (n,) from one value per triangle: the lumped L2 projection of the piecewise constant field,
+    :math:`v_i = \sum_{e \ni i} |T_e| v_e / \sum_{e \ni i} |T_e|` (the area-weighted mean over the triangles
+    round node i; within the range of the values, so a strain stays ≥ 0).
+
+    ``points`` (n, 2), ``triangles`` (m, 3) vertex ids, ``values`` (m,); a node of no triangle gets 0.
+    """
+    points = np.asarray(points, dtype=float)
+    triangles = np.asarray(triangles)
+    d1 = points[triangles[:, 1]] - points[triangles[:, 0]]
+    d2 = points[triangles[:, 2]] - points[triangles[:, 0]]
+    area = 0.5 * np.abs(d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0])
+    weight = np.repeat(area, 3)
+    n = points.shape[0]
+    num = np.bincount(triangles.ravel(), weights=weight * np.repeat(np.asarray(values, dtype=float), 3), minlength=n)
+    den = np.bincount(triangles.ravel(), weights=weight, minlength=n)
+    out = np.zeros(n)
+    np.divide(num, den, out=out, where=den > 0)
+    return out
+
+
+def refine_grid(
+    x: np.ndarray, y: np.ndarray, values: np.ndarray, factor: int = 4
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``values`` (ny, nx) on the regular grid ``x`` (nx,), ``y`` (ny,) resampled on a grid ``factor`` times finer
+    (the old grid lines kept) by the interpolating bicubic spline (linear along an axis of fewer than 4 points),
+    clipped to the values' range (the spline overshoots next to a kink). Returns (fine x, fine y, fine values).
+    """
+    x, y, values = np.asarray(x, dtype=float), np.asarray(y, dtype=float), np.asarray(values, dtype=float)
+    fine_x = np.interp(np.arange((x.size - 1) * factor + 1) / factor, np.arange(x.size), x)
+    fine_y = np.interp(np.arange((y.size - 1) * factor + 1) / factor, np.arange(y.size), y)
+    kx, ky = (3 if n >= 4 else max(n - 1, 1) for n in (x.size, y.size))
+    spline = RectBivariateSpline(y, x, values, kx=ky, ky=kx, s=0)
+    return fine_x, fine_y, np.clip(spline(fine_y, fine_x), values.min(), values.max())

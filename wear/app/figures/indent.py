@@ -9,6 +9,7 @@ import os
 from pathlib import Path
 
 import numpy as np
+from matplotlib.lines import Line2D
 
 from contact.theory import hertz_pressure, mesarovic_johnson_pressure
 from wear.app.figures.common import save_figure, subplots
@@ -29,33 +30,48 @@ def _pick_steps(res, count: int = 4) -> tuple[list[int], list[int]]:
 
 
 def pressure_figure(res):
-    """Pressure p(r) at chosen loading steps (FE vs Hertz equation 16 at the FE's F) and unloading steps (FE vs
-    Mesarovic–Johnson equation 19 from the FE's p*, a* at the maximum)."""
+    """Pressure p(r) at chosen loading steps (FE vs Hertz equation 16 at the FE's F, the FE contact radius dotted)
+    and unloading steps (FE vs Mesarovic–Johnson equation 19 from the FE's p*, a* at the maximum).
+
+    A colour is one step; the line style says what is drawn, and each style has its own legend entry (grey), so
+    every line is named by the legend."""
     loading, unloading = _pick_steps(res)
     fig, axes = subplots(1, 2, figsize=(11, 4.2), sharey=True)
     r = res.surface_r
     e_star, radius = res.effective_modulus, res.radius
     for k in loading:
         a = res.contact_radius[k]
-        (line,) = axes[0].plot(r * 1e6, res.pressure[k] / 1e6, label=f"FE δ={res.overlap[k] * 1e6:.3g} µm")
+        (line,) = axes[0].plot(r * 1e6, res.pressure[k] / 1e6, label=f"FE, δ = {res.overlap[k] * 1e6:.3g} µm")
         a_h = (3.0 * res.force[k] * radius / (4.0 * e_star)) ** (1.0 / 3.0)
         p0 = 3.0 * res.force[k] / (2.0 * math.pi * a_h**2)
         axes[0].plot(r * 1e6, hertz_pressure(r, a_h, p0) / 1e6, "--", color=line.get_color(), lw=1)
-        axes[0].axvline(a * 1e6, color=line.get_color(), lw=0.5, ls=":")
-    axes[0].set_title("loading: FE (solid) vs Hertz Eq. 16 at the same F (dashed)", fontsize=9)
+        axes[0].axvline(a * 1e6, color=line.get_color(), lw=0.8, ls=":")
+    key = {"color": "0.4", "lw": 1}
+    loading_keys = [
+        Line2D([], [], ls="--", label="Hertz Eq. 16 at the same F", **key),
+        Line2D([], [], ls=":", label="FE contact radius a", **key),
+    ]
+    axes[0].set_title(
+        "loading: FE (solid) vs Hertz Eq. 16 at the same F (dashed);\ndotted: the FE contact radius a of each step",
+        fontsize=9,
+    )
     peak = int(np.argmax(res.overlap))
     a_star, p_star = res.contact_radius[peak], res.mean_pressure[peak]
     axes[1].plot(r * 1e6, res.pressure[peak] / 1e6, color="k", label="FE at δ_max")
     for k in unloading:
-        (line,) = axes[1].plot(r * 1e6, res.pressure[k] / 1e6, label=f"FE a/a*={res.contact_radius[k] / a_star:.2f}")
+        (line,) = axes[1].plot(r * 1e6, res.pressure[k] / 1e6, label=f"FE, a/a* = {res.contact_radius[k] / a_star:.2f}")
         ref = mesarovic_johnson_pressure(r, res.contact_radius[k], a_star, p_star)
         axes[1].plot(r * 1e6, ref / 1e6, "--", color=line.get_color(), lw=1)
-    axes[1].set_title("unloading: FE (solid) vs Mesarovic–Johnson Eq. 19 (dashed)", fontsize=9)
+    unloading_keys = [Line2D([], [], ls="--", label="Mesarovic–Johnson Eq. 19 (p*, a* at δ_max)", **key)]
+    axes[1].set_title(
+        "unloading: FE (solid) vs Mesarovic–Johnson Eq. 19 (dashed)\nfrom the FE's p*, a* at δ_max", fontsize=9
+    )
     xmax = 1.4 * max(res.contact_radius.max(), 1e-300) * 1e6
-    for ax in axes:
+    for ax, keys in ((axes[0], loading_keys), (axes[1], unloading_keys)):
         ax.set_xlim(0, xmax)
         ax.set_xlabel("r (µm)")
-        ax.legend(fontsize=7)
+        handles = [line for line in ax.get_lines() if not line.get_label().startswith("_")]
+        ax.legend(handles=handles + keys, fontsize=7)
     axes[0].set_ylabel("contact pressure (MPa)")
     return fig
 
@@ -91,7 +107,6 @@ def plastic_zone_axes(
     boundary as a line and the contact radius ``contact_radius`` (m) dotted; r and z in µm over ``reach`` × a.
 
     Returns the filled contour set (for the colour bar)."""
-    from matplotlib.lines import Line2D
     from matplotlib.ticker import MaxNLocator
     from matplotlib.tri import CubicTriInterpolator, Triangulation, UniformTriRefiner
 
