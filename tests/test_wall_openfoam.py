@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import gzip
 
+import meshio
 import numpy as np
 import pytest
 
@@ -22,6 +23,7 @@ from wear.wall import (
     read_patch_field,
     read_patch_post_processing,
     read_polymesh,
+    read_surface,
 )
 
 
@@ -62,6 +64,14 @@ def test_the_straight_pipe_s_wall_area_and_normals():
     radial = wall.centre * [1.0, 1.0, 0.0]
     radial /= np.linalg.norm(radial, axis=1)[:, None]
     assert np.einsum("ij,ij->i", wall.normal, radial).min() > 0.99
+
+
+def test_the_wall_written_as_vtu_reads_back_with_the_same_faces(bend, tmp_path):
+    wall = bend[0]
+    meshio.write(tmp_path / "bend.vtu", wall.to_meshio())
+    again = read_surface(tmp_path / "bend.vtu")
+    assert len(again) == len(wall) and np.array_equal(again.points, wall.points)
+    assert np.allclose(again.area, wall.area, rtol=1e-14) and np.allclose(again.normal, wall.normal, atol=1e-14)
 
 
 def test_finnie_with_openfoam_s_triangle_normal_reproduces_q_on_every_face(bend):

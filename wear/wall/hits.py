@@ -116,13 +116,13 @@ def _message(
 ) -> str:
     value = getattr(records, column)[i]
     text = "(" + " ".join(f"{v:.6g}" for v in value) + ")"
-    name = wall.patch_names[wall.patch[face]]
+    name = f"face {face} (label {wall.labels[face]}) of patch {wall.patch_names[wall.patch[face]]}"
     if column == "position":
-        where = f"{distance:.3g} m from face {face} of patch {name}"
+        where = f"{distance:.3g} m from {name}"
     else:
         where = (
-            f"{angle:.3f} deg from the normal of face {face} of patch {name}: the wall normals point out of the "
+            f"{angle:.6g} deg from the normal of {name}: the wall normals point out of the "
             "fluid; if every hit does, the wall is oriented the other way (flip it)"
         )
-    more = f" ({count - 1} more such rows)" if count > 1 else ""
+    more = f" ({count - 1} more such records)" if count > 1 else ""
     return f"{records.where(i, column)}: {text} {reason} ({where}){more}"

@@ -61,7 +61,9 @@ def post_files(path: str | Path) -> list[Path]:
             times.append((float(sub.name), sub))
         except ValueError:
             continue
-    files = [f for _, sub in sorted(times) for f in sorted(sub.glob("*.post*")) if f.name.endswith((".post", ".gz"))]
+    files = [
+        f for _, sub in sorted(times) for f in sorted(sub.glob("*.post*")) if f.name.endswith((".post", ".post.gz"))
+    ]
     if not files:
         raise ValueError(f"records={str(p)!r} holds no <time>/<patch>.post files of patchPostProcessing")
     return files

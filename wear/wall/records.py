@@ -139,7 +139,7 @@ class ImpactRecords:
             i = hit[0]
             value = getattr(self, field_name)[i]
             text = f"{value:.6g}" if np.ndim(value) == 0 else "(" + " ".join(f"{v:.6g}" for v in value) + ")"
-            more = f" ({len(hit) - 1} more such rows)" if len(hit) > 1 else ""
+            more = f" ({len(hit) - 1} more such records)" if len(hit) > 1 else ""
             raise ValueError(f"{self.where(i, field_name)}: {text} {what}{more}")
 
     def _check(self) -> None:
