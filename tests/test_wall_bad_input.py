@@ -64,6 +64,14 @@ def test_a_zero_velocity_names_the_velocity_columns(tmp_path):
     _fails(str(err.value), str(path), 2, "u_m_s")
 
 
+def test_a_normal_that_is_not_a_unit_vector_names_its_row(tmp_path):
+    header = [*HEADER, "nx", "ny", "nz"]
+    path = write_csv(tmp_path / "hits.csv", header, [[*_row(), "0", "0", "-1"], [*_row(), "0", "0", "-2"]])
+    with pytest.raises(ValueError, match=r"\(0 0 -2\) is not a unit vector") as err:
+        read_table(path)
+    _fails(str(err.value), str(path), 2, "nx ny nz")
+
+
 def test_a_row_with_a_missing_value_and_an_unknown_column_are_refused(tmp_path):
     path = write_csv(tmp_path / "short.csv", HEADER, [_row(), _row()[:-1]])
     with pytest.raises(ValueError, match=r"short\.csv, row 2: 9 values for the header's 10 columns"):

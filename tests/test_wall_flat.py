@@ -114,3 +114,22 @@ def test_a_wall_split_into_two_files_gives_each_face_the_same_volume(wall, tmp_p
     # the same faces in the same order (the split keeps the file order), each with the same volume
     assert np.allclose(split.centre, wall.centre, rtol=0, atol=1e-15)
     assert two == pytest.approx(one, rel=1e-14)
+
+
+def test_a_table_of_faces_without_positions_and_with_the_source_s_normals(wall, tmp_path):
+    """Faces given (0-based) and no positions: each record sits at its face's centre; a recorded normal equal to
+    the face normal (−z) gives the face normal's answer, one tilted by 10° about y gives Finnie at θ ± 10°."""
+    theta = 30.0
+    t = math.radians(theta)
+    velocity = [repr(SPEED * math.sin(t)), "0", repr(-SPEED * math.cos(t))]
+    header = ["face", "u_m_s", "v_m_s", "w_m_s", "diameter_m", "density_kg_m3", "nx", "ny", "nz"]
+    mass = DENSITY * math.pi * DIAMETER**3 / 6.0
+    for tilt in (0.0, 10.0):
+        s = math.radians(tilt)
+        normal = [repr(-math.sin(s)), "0", repr(-math.cos(s))]  # (0, 0, -1) turned by +tilt about y
+        rows = [[str(f), *velocity, repr(DIAMETER), repr(DENSITY), *normal] for f in range(len(wall))]
+        table = read_table(write_csv(tmp_path / "faces.csv", header, rows), wall)
+        assert np.array_equal(table.position, wall.centre)
+        hits, _, q = _per_face(wall, table)
+        assert np.allclose(hits.angle, theta + tilt, rtol=0, atol=1e-12)
+        assert q == pytest.approx(np.full(len(wall), finnie_1960(mass, SPEED, 90.0 - theta - tilt)), rel=1e-12)

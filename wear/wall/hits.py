@@ -33,7 +33,7 @@ NORMALS = ("recorded", "face")
 @dataclass(frozen=True, eq=False)
 class Hits:
     """The records on the wall: ``face`` (n,) the wall face of each (−1: skipped), ``normal`` (n, 3) the unit
-    normal the angle is measured against, ``angle`` (n,) θ (deg from the normal), ``speed`` (n,) |v| (m/s),
+    normal the angle is measured against, ``angle`` (n,) θ (deg from the normal), ``speed`` (n,) :math:`|v|` (m/s),
     ``distance`` (n,) from the face (m); ``skipped``: the number of records left out, by reason."""
 
     face: np.ndarray

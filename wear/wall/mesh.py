@@ -91,12 +91,12 @@ class Wall:
 
     @cached_property
     def area(self) -> np.ndarray:
-        """Area |S| of each face (m²)."""
+        """Area :math:`|S|` of each face (m²)."""
         return np.linalg.norm(self.vector_area, axis=1)
 
     @cached_property
     def normal(self) -> np.ndarray:
-        """Unit normal S / |S| of each face, pointing into the wall material ((f, 3))."""
+        """Unit normal :math:`S / |S|` of each face, pointing into the wall material ((f, 3))."""
         return self.vector_area / self.area[:, None]
 
     @cached_property

@@ -124,7 +124,7 @@ class ImpactRecords:
 
     @property
     def speed(self) -> np.ndarray:
-        """Incident speed |v| of each record (m/s)."""
+        """Incident speed :math:`|v|` of each record (m/s)."""
         return np.linalg.norm(self.velocity, axis=1)
 
     def where(self, i: int, field_name: str) -> str:
