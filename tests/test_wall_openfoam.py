@@ -118,17 +118,19 @@ def test_the_face_normal_misses_q_by_tens_of_percent_on_single_faces(bend):
 
 
 def test_records_of_a_parallel_run_find_their_face_from_the_position(bend, tmp_path):
-    """currentProc > 0: facei and the tet are the processor's, so the face is found from the hit position; it is
-    the face OpenFOAM recorded (the serial run's facei)."""
-    wall, records, _ = bend
-    source = RECORDS / "0.06" / "bend.post.gz"
-    lines = gzip.decompress(source.read_bytes()).decode().splitlines()
-    moved = [lines[0]] + [line.replace(" 0 (", " 1 (", 1) for line in lines[1:]]
-    path = tmp_path / "bend.post"
-    path.write_text("\n".join(moved) + "\n")
-    parallel = read_patch_post_processing(path, wall)
+    """A record with currentProc > 0 makes the run parallel: facei and the tets are the processors', so every
+    record's face (of every file read) is found from its position; it is the face OpenFOAM recorded (the serial
+    run's facei)."""
+    wall = bend[0]
+    for time, proc in (("0.04", 0), ("0.06", 1)):
+        source = RECORDS / time / "bend.post.gz"
+        lines = gzip.decompress(source.read_bytes()).decode().splitlines()
+        (tmp_path / time).mkdir()
+        moved = [lines[0]] + [line.replace(" 0 (", f" {proc} (", 1) for line in lines[1:]]
+        (tmp_path / time / "bend.post").write_text("\n".join(moved) + "\n")
+    parallel = read_patch_post_processing(tmp_path, wall)
     assert parallel.normal is None and np.all(parallel.face == -1)
     hits = hits_on_wall(parallel, wall)
-    serial = read_patch_post_processing(source, wall)
-    assert np.array_equal(hits.face, serial.face)
+    serial = read_patch_post_processing([RECORDS / "0.04" / "bend.post.gz", RECORDS / "0.06" / "bend.post.gz"], wall)
+    assert len(serial) == len(parallel) and np.array_equal(hits.face, serial.face)
     assert hits.distance.max() < 1e-12

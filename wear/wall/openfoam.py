@@ -16,15 +16,16 @@ On a non-planar face the triangles' normals differ from the face's. The barycent
 the tet (cell centre, :math:`f_b`, :math:`f_{b+t}`, :math:`f_{b+t+1}`; coordinates0 = 0 on the face) give b: it is
 the base point for which :math:`c_1 P(f_b) + c_2 P(f_{b+t}) + c_3 P(f_{b+t+1})` is the recorded position.
 
-Rows are counted from 1 after the header line (row r is line r + 1). Records written by a parallel run
-(``currentProc`` > 0) carry processor-local face labels and tets: their face is found from the position, and
-their normal is the face normal.
+Rows are counted from 1 after the header line (row r is line r + 1). A parallel run's records carry
+processor-local face labels and tets: when any record read has ``currentProc`` > 0, every record's face is found
+from its position, and its normal is the face normal.
 """
 
 from __future__ import annotations
 
 import gzip
 from collections.abc import Sequence
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -73,73 +74,89 @@ def read_patch_post_processing(path: str | Path | Sequence[str | Path], wall: Wa
     """The impact table of OpenFOAM ``patchPostProcessing`` records (a file, a list of files, or the function's
     folder: every write time) on ``wall``, an OpenFOAM wall (:func:`wear.wall.foam.read_polymesh`) whose face labels
     are the mesh's. Each record's face is the wall face of its ``facei``; its normal is OpenFOAM's triangle normal
-    (see the module docstring) when the file has the tet columns."""
+    (see the module docstring) when the files have the tet columns. If any record was written by a processor other
+    than 0, the run was parallel and every record's face is found from its position instead (a parallel run whose
+    hits all fell on processor 0 shows as records off their faces or tets: bad input naming the row)."""
     paths = [path] if isinstance(path, (str, Path)) else list(path)
-    files = [f for p in paths for f in post_files(p)]
-    return concat_records([_read_one(f, wall) for f in files])
+    files = [_PostFile.read(f) for p in paths for f in post_files(p)]
+    serial = not any(np.any(f.column("currentProc", integer=True)) for f in files if "currentProc" in f.header)
+    return concat_records([f.records(wall, serial) for f in files])
 
 
-def _read_one(path: Path, wall: Wall) -> ImpactRecords:
-    name = str(path)
-    try:
-        raw = gzip.decompress(path.read_bytes()) if path.suffix == ".gz" else path.read_bytes()
-        lines = raw.decode("utf-8").splitlines()
-    except (OSError, UnicodeDecodeError, EOFError) as err:
-        raise ValueError(f"{name} is not a patchPostProcessing text file ({err})") from None
-    if not lines or not lines[0].startswith("#"):
-        raise ValueError(f"{name}, row 0: no header line '# Time currentProc ...': give a patchPostProcessing file")
-    header = lines[0][1:].replace("(", " ").replace(")", " ").split()
-    missing = [c for cols in REQUIRED.values() for c in cols if c not in header]
-    if missing:
-        raise ValueError(f"{name}, header: no column {missing[0]} (the header names {' '.join(header)})")
-    body = [(r, line) for r, line in enumerate(lines[1:], start=1) if line.strip()]
-    rows = np.array([r for r, _ in body], dtype=np.int64)
-    cells = []
-    for r, line in body:
-        tokens = line.replace("(", " ").replace(")", " ").split()
-        if len(tokens) != len(header):
-            raise ValueError(
-                f"{where(name, r, header[min(len(tokens), len(header) - 1)])}: the row has "
-                f"{len(tokens)} values for the header's {len(header)} columns"
-            )
-        cells.append(tokens)
-    table = list(zip(*cells, strict=True)) if cells else [() for _ in header]
+@dataclass(frozen=True)
+class _PostFile:
+    """One record file as text: its ``name``, the ``header``'s column names, the ``rows`` (counted from 1 after the
+    header line) and the ``table`` of values (one tuple of text per column)."""
 
-    def column(c: str, integer: bool = False) -> np.ndarray:
-        return numbers(table[header.index(c)], name, rows, c, integer)
+    name: str
+    header: list[str]
+    rows: np.ndarray
+    table: list[tuple[str, ...]]
 
-    def vector(cs: Sequence[str]) -> np.ndarray:
-        return np.column_stack([column(c) for c in cs]) if len(rows) else np.zeros((0, 3))
+    @classmethod
+    def read(cls, path: Path) -> _PostFile:
+        name = str(path)
+        try:
+            raw = gzip.decompress(path.read_bytes()) if path.suffix == ".gz" else path.read_bytes()
+            lines = raw.decode("utf-8").splitlines()
+        except (OSError, UnicodeDecodeError, EOFError) as err:
+            raise ValueError(f"{name} is not a patchPostProcessing text file ({err})") from None
+        if not lines or not lines[0].startswith("#"):
+            raise ValueError(f"{name}, row 0: no header line '# Time currentProc ...': give a patchPostProcessing file")
+        header = lines[0][1:].replace("(", " ").replace(")", " ").split()
+        missing = [c for cols in REQUIRED.values() for c in cols if c not in header]
+        if missing:
+            raise ValueError(f"{name}, header: no column {missing[0]} (the header names {' '.join(header)})")
+        body = [(r, line) for r, line in enumerate(lines[1:], start=1) if line.strip()]
+        cells = []
+        for r, line in body:
+            tokens = line.replace("(", " ").replace(")", " ").split()
+            if len(tokens) != len(header):
+                raise ValueError(
+                    f"{where(name, r, header[min(len(tokens), len(header) - 1)])}: the row has "
+                    f"{len(tokens)} values for the header's {len(header)} columns"
+                )
+            cells.append(tokens)
+        table = list(zip(*cells, strict=True)) if cells else [() for _ in header]
+        return cls(name, header, np.array([r for r, _ in body], dtype=np.int64), table)
 
-    serial = "currentProc" not in header or not np.any(column("currentProc", integer=True))
-    face = np.full(len(rows), -1, np.int64)
-    normal = None
-    if serial:
-        label = column("facei", integer=True)
-        face = wall.index_of_labels(label)
-        off = np.flatnonzero(face < 0)
-        if len(off):
-            raise ValueError(
-                f"{where(name, int(rows[off[0]]), 'facei')}: {label[off[0]]} is not a face of the wall's patches "
-                f"{', '.join(wall.patch_names)}: give the polyMesh of the run that wrote the records"
-            )
-        if all(c in header for c in _TET):
-            coords = np.column_stack([column(c) for c in _TET[:4]])
-            position = vector(REQUIRED["position"])
-            normal = triangle_normals(wall, face, column("tetPti", integer=True), coords, position, name, rows)
-    return ImpactRecords(
-        position=vector(REQUIRED["position"]),
-        velocity=vector(REQUIRED["velocity"]),
-        diameter=column("d"),
-        density=column("rho"),
-        count=column("nParticle"),
-        time=column("Time"),
-        face=face,
-        normal=normal,
-        files=(name,),
-        row=rows,
-        columns={**REQUIRED, "normal": ("coordinates1", "coordinates2", "coordinates3")},
-    )
+    def column(self, c: str, integer: bool = False) -> np.ndarray:
+        return numbers(self.table[self.header.index(c)], self.name, self.rows, c, integer)
+
+    def vector(self, cs: Sequence[str]) -> np.ndarray:
+        return np.column_stack([self.column(c) for c in cs]) if len(self.rows) else np.zeros((0, 3))
+
+    def records(self, wall: Wall, serial: bool) -> ImpactRecords:
+        """The impact table of the file; ``serial``: the face labels and tets are the wall's mesh's."""
+        face = np.full(len(self.rows), -1, np.int64)
+        normal = None
+        if serial:
+            label = self.column("facei", integer=True)
+            face = wall.index_of_labels(label)
+            off = np.flatnonzero(face < 0)
+            if len(off):
+                raise ValueError(
+                    f"{where(self.name, int(self.rows[off[0]]), 'facei')}: {label[off[0]]} is not a face of the "
+                    f"wall's patches {', '.join(wall.patch_names)}: give the polyMesh of the run that wrote the records"
+                )
+            if all(c in self.header for c in _TET):
+                coords = np.column_stack([self.column(c) for c in _TET[:4]])
+                tet_point = self.column("tetPti", integer=True)
+                position = self.vector(REQUIRED["position"])
+                normal = triangle_normals(wall, face, tet_point, coords, position, self.name, self.rows)
+        return ImpactRecords(
+            position=self.vector(REQUIRED["position"]),
+            velocity=self.vector(REQUIRED["velocity"]),
+            diameter=self.column("d"),
+            density=self.column("rho"),
+            count=self.column("nParticle"),
+            time=self.column("Time"),
+            face=face,
+            normal=normal,
+            files=(self.name,),
+            row=self.rows,
+            columns={**REQUIRED, "normal": ("coordinates1", "coordinates2", "coordinates3")},
+        )
 
 
 def triangle_normals(
