@@ -18,7 +18,8 @@ __all__ = ["closest_on_triangles", "distance_to_faces", "nearest_faces", "defaul
 
 
 def _dot(u: np.ndarray, v: np.ndarray) -> np.ndarray:
-    return np.einsum("...i,...i->...", u, v)
+    # three products and two sums: several times faster than einsum on (n, k, 3) arrays
+    return u[..., 0] * v[..., 0] + u[..., 1] * v[..., 1] + u[..., 2] * v[..., 2]
 
 
 def closest_on_triangles(p: np.ndarray, a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
@@ -61,19 +62,27 @@ def distance_to_faces(wall: Wall, points: np.ndarray, faces: np.ndarray) -> np.n
     return best
 
 
-def nearest_faces(wall: Wall, points: np.ndarray, candidates: int = 16) -> tuple[np.ndarray, np.ndarray]:
+def nearest_faces(
+    wall: Wall, points: np.ndarray, candidates: int = 8, chunk: int = 1 << 14
+) -> tuple[np.ndarray, np.ndarray]:
     """The wall face nearest to each point (n, 3) and its distance (m): the nearest of the ``candidates``
-    triangles whose centroids are nearest."""
+    triangles whose centroids are nearest, ``chunk`` points at a time (bounded memory)."""
     tri, face_of = wall.triangles
     corners = wall.points[tri]
+    tree = cKDTree(corners.mean(axis=1))
     k = min(candidates, len(tri))
-    _, near = cKDTree(corners.mean(axis=1)).query(points, k=k)
-    near = near.reshape(len(points), k)
-    q = closest_on_triangles(points[:, None, :], corners[near, 0], corners[near, 1], corners[near, 2])
-    distance = np.linalg.norm(points[:, None, :] - q, axis=2)
-    best = np.argmin(distance, axis=1)
-    rows = np.arange(len(points))
-    return face_of[near[rows, best]], distance[rows, best]
+    face = np.empty(len(points), np.int64)
+    distance = np.empty(len(points))
+    for start in range(0, len(points), chunk):
+        p = points[start : start + chunk]
+        near = tree.query(p, k=k)[1].reshape(len(p), k)
+        q = closest_on_triangles(p[:, None, :], corners[near, 0], corners[near, 1], corners[near, 2])
+        d = np.linalg.norm(p[:, None, :] - q, axis=2)
+        best = np.argmin(d, axis=1)
+        rows = np.arange(len(p))
+        face[start : start + chunk] = face_of[near[rows, best]]
+        distance[start : start + chunk] = d[rows, best]
+    return face, distance
 
 
 def default_tolerance(wall: Wall) -> float:
