@@ -3,8 +3,8 @@ r"""Where a hit lies on the wall: the distance from points to the wall's faces a
 A face is the union of its fan triangles (:attr:`wear.wall.mesh.Wall.triangles`). The distance from a point p
 to a triangle (a, b, c) is :math:`|p - q|` with q the triangle's closest point, found by the Voronoi regions of
 its vertices, edges and interior (Ericson, *Real-Time Collision Detection*, 2005, §5.1.5), vectorised over
-points. The nearest face of a point is the face of its nearest triangle among the ``candidates`` triangles whose
-centroids are nearest to it (a k-d tree, scipy's ``cKDTree``).
+points. The nearest face of a point is the face of its nearest triangle, searched among the triangles whose
+centroids are nearest to it (a k-d tree, scipy's ``cKDTree``) and proven nearest (:func:`nearest_faces`).
 """
 
 from __future__ import annotations
@@ -65,24 +65,37 @@ def distance_to_faces(wall: Wall, points: np.ndarray, faces: np.ndarray) -> np.n
 def nearest_faces(
     wall: Wall, points: np.ndarray, candidates: int = 8, chunk: int = 1 << 14
 ) -> tuple[np.ndarray, np.ndarray]:
-    """The wall face nearest to each point (n, 3) and its distance (m): the nearest of the ``candidates``
-    triangles whose centroids are nearest, ``chunk`` points at a time (bounded memory)."""
+    """The wall face nearest to each point (n, 3) and its distance (m), ``chunk`` points at a time (bounded
+    memory). Exact: a triangle of centroid c and circumradius about c at most R is no nearer to p than
+    |p − c| − R, so when the ``candidates``-th nearest centroid is farther than the best distance + R_max the
+    nearest triangle is among the candidates; otherwise the search is repeated with 4 times more candidates."""
     tri, face_of = wall.triangles
     corners = wall.points[tri]
-    tree = cKDTree(corners.mean(axis=1))
-    k = min(candidates, len(tri))
-    face = np.empty(len(points), np.int64)
-    distance = np.empty(len(points))
+    centroid = corners.mean(axis=1)
+    reach = float(np.linalg.norm(corners - centroid[:, None, :], axis=2).max())
+    tree = cKDTree(centroid)
+    best_tri = np.empty(len(points), np.int64)
+    distance = np.full(len(points), np.inf)
     for start in range(0, len(points), chunk):
-        p = points[start : start + chunk]
-        near = tree.query(p, k=k)[1].reshape(len(p), k)
-        q = closest_on_triangles(p[:, None, :], corners[near, 0], corners[near, 1], corners[near, 2])
-        d = np.linalg.norm(p[:, None, :] - q, axis=2)
-        best = np.argmin(d, axis=1)
-        rows = np.arange(len(p))
-        face[start : start + chunk] = face_of[near[rows, best]]
-        distance[start : start + chunk] = d[rows, best]
-    return face, distance
+        todo = np.arange(start, min(start + chunk, len(points)))
+        k = candidates
+        while len(todo):
+            k = min(k, len(tri))
+            p = points[todo]
+            gap, near = (a.reshape(len(p), k) for a in tree.query(p, k=k))
+            d = np.linalg.norm(p[:, None, :] - _closest(p[:, None, :], corners, near), axis=2)
+            best = np.argmin(d, axis=1)
+            rows = np.arange(len(p))
+            best_tri[todo], distance[todo] = near[rows, best], d[rows, best]
+            # the candidates may miss the nearest triangle while a centroid beyond them is within reach
+            todo = todo[(gap[:, -1] <= d[rows, best] + reach) & (k < len(tri))]
+            k *= 4
+    return face_of[best_tri], distance
+
+
+def _closest(p: np.ndarray, corners: np.ndarray, which: np.ndarray) -> np.ndarray:
+    """The closest points to p of the triangles ``which`` (corners (t, 3, 3))."""
+    return closest_on_triangles(p, corners[which, 0], corners[which, 1], corners[which, 2])
 
 
 def default_tolerance(wall: Wall) -> float:
