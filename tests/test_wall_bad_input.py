@@ -91,17 +91,24 @@ def test_a_velocity_pointing_out_of_the_wall_names_its_row(tmp_path, flat):
         hits_on_wall(records, flat)
     _fails(str(err.value), str(path), 2, "u_m_s v_m_s w_m_s")
     hits = hits_on_wall(records, flat, skip_bad=True)  # counted, left out of every sum
-    assert hits.skipped == {"velocity": 1} and hits.face[1] == -1 and hits.face[0] >= 0
+    assert hits.skipped == {"leaving_wall": 1} and hits.face[1] == -1 and hits.face[0] >= 0
 
 
 def test_a_hit_far_from_every_wall_face_names_its_row(tmp_path, flat):
     # 1 cm above a mesh of 1 cm squares cut in two: the default tolerance is a quarter of sqrt(0.5 cm^2) = 1.77 mm
     path = write_csv(tmp_path / "hits.csv", HEADER, [_row(), _row(), _row(z_m=0.01)])
     with pytest.raises(
-        ValueError, match=r"is farther than tolerance=0\.00176777 m from every wall face \(0\.01 m"
+        ValueError,
+        match=r"lies 0\.01 m from the nearest wall face, face \d+ \(label \d+\) of patch plate, farther than "
+        r"tolerance=0\.00176777 m",
     ) as err:
         hits_on_wall(read_table(path), flat)
     _fails(str(err.value), str(path), 3, "x_m y_m z_m")
+    # on the wall but 3 cm from the face the row gives (face 0: the square at the origin)
+    path = write_csv(tmp_path / "given.csv", HEADER, [_row(x_m=0.035, y_m=0.025, face=0)])
+    with pytest.raises(ValueError, match=r"lies 0\.0\d+ m from its face, face 0 \(label 0\) of patch plate") as err:
+        hits_on_wall(read_table(path), flat)
+    _fails(str(err.value), str(path), 1, "x_m y_m z_m")
 
 
 def test_a_face_beyond_the_wall_names_its_row(tmp_path, flat):

@@ -105,7 +105,7 @@ def test_the_face_normal_misses_q_by_tens_of_percent_on_single_faces(bend):
     with pytest.raises(ValueError, match=r"wallIn\.post\.gz, row \d+, columns U0 U1 U2: .* points out of the wall"):
         _volumes(bend, "face")
     hits, _, q = _volumes(bend, "face", skip_bad=True)
-    assert hits.skipped == {"velocity": 6}
+    assert hits.skipped == {"leaving_wall": 6}
     assert np.all(hits.angle[~hits.kept] < 90.5)  # grazing hits (3 on wallIn, 3 on wallOut)
     hit = q_openfoam > 0
     relative = np.abs(q[hit] / q_openfoam[hit] - 1.0)

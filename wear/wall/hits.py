@@ -34,7 +34,8 @@ NORMALS = ("recorded", "face")
 class Hits:
     """The records on the wall: ``face`` (n,) the wall face of each (−1: skipped), ``normal`` (n, 3) the unit
     normal the angle is measured against, ``angle`` (n,) θ (deg from the normal), ``speed`` (n,) :math:`|v|` (m/s),
-    ``distance`` (n,) from the face (m); ``skipped``: the number of records left out, by reason."""
+    ``distance`` (n,) from the face (m); ``skipped``: the number of records left out, by reason (``"far_from_wall"``,
+    ``"leaving_wall"``)."""
 
     face: np.ndarray
     normal: np.ndarray
@@ -89,16 +90,12 @@ def hits_on_wall(
     far = distance > tolerance
     away = ~far & (cosine < 0.0)
     skipped = {}
-    for bad, column, reason in (
-        (far, "position", f"is farther than tolerance={tolerance:.6g} m from every wall face"),
-        (away, "velocity", "points out of the wall"),
-    ):
+    for bad, reason in ((far, "far_from_wall"), (away, "leaving_wall")):
         hit = np.flatnonzero(bad)
         if len(hit) and not skip_bad:
-            i = hit[0]
-            raise ValueError(_message(records, wall, i, column, reason, face[i], distance[i], angle[i], len(hit)))
+            raise ValueError(_message(records, wall, hit[0], reason, given, face, distance, angle, tolerance, len(hit)))
         if len(hit):
-            skipped[column] = len(hit)
+            skipped[reason] = len(hit)
     face[far | away] = -1
     return Hits(face=face, normal=n, angle=angle, speed=speed, distance=distance, skipped=skipped)
 
@@ -107,22 +104,28 @@ def _message(
     records: ImpactRecords,
     wall: Wall,
     i: int,
-    column: str,
     reason: str,
-    face: int,
-    distance: float,
-    angle: float,
+    given: np.ndarray,
+    face: np.ndarray,
+    distance: np.ndarray,
+    angle: np.ndarray,
+    tolerance: float,
     count: int,
 ) -> str:
-    value = getattr(records, column)[i]
-    text = "(" + " ".join(f"{v:.6g}" for v in value) + ")"
-    name = f"face {face} (label {wall.labels[face]}) of patch {wall.patch_names[wall.patch[face]]}"
-    if column == "position":
-        where = f"{distance:.3g} m from {name}"
-    else:
-        where = (
-            f"{angle:.6g} deg from the normal of {name}: the wall normals point out of the "
-            "fluid; if every hit does, the wall is oriented the other way (flip it)"
-        )
+    """One line on record ``i``, too far from the wall or leaving it (``reason``)."""
+    f = face[i]
+    name = f"face {f} (label {wall.labels[f]}) of patch {wall.patch_names[wall.patch[f]]}"
     more = f" ({count - 1} more such records)" if count > 1 else ""
-    return f"{records.where(i, column)}: {text} {reason} ({where}){more}"
+    if reason == "far_from_wall":
+        text = " ".join(f"{v:.6g}" for v in records.position[i])
+        which = "its face" if given[i] else "the nearest wall face"
+        return (
+            f"{records.where(i, 'position')}: ({text}) lies {distance[i]:.3g} m from {which}, {name}, farther than "
+            f"tolerance={tolerance:.6g} m{more}"
+        )
+    text = " ".join(f"{v:.6g}" for v in records.velocity[i])
+    return (
+        f"{records.where(i, 'velocity')}: ({text}) points out of the wall ({angle[i]:.6g} deg from the normal of "
+        f"{name}; the wall normals point out of the fluid: if every hit does, the wall is oriented the other way, "
+        f"flip it){more}"
+    )

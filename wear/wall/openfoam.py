@@ -130,6 +130,7 @@ class _PostFile:
         """The impact table of the file; ``serial``: the face labels and tets are the wall's mesh's."""
         face = np.full(len(self.rows), -1, np.int64)
         normal = None
+        position = self.vector(REQUIRED["position"])
         if serial:
             label = self.column("facei", integer=True)
             face = wall.index_of_labels(label)
@@ -142,10 +143,9 @@ class _PostFile:
             if all(c in self.header for c in _TET):
                 coords = np.column_stack([self.column(c) for c in _TET[:4]])
                 tet_point = self.column("tetPti", integer=True)
-                position = self.vector(REQUIRED["position"])
                 normal = triangle_normals(wall, face, tet_point, coords, position, self.name, self.rows)
         return ImpactRecords(
-            position=self.vector(REQUIRED["position"]),
+            position=position,
             velocity=self.vector(REQUIRED["velocity"]),
             diameter=self.column("d"),
             density=self.column("rho"),
