@@ -8,8 +8,8 @@ import gzip
 import meshio
 import numpy as np
 import pytest
+from wall_cases import OUTPUTS, RECORDS, flat_mesh, write_csv
 
-from tests.wall_cases import OUTPUTS, RECORDS, flat_mesh, write_csv
 from wear.wall import hits_on_wall, read_patch_post_processing, read_polymesh, read_surface, read_table
 
 HEADER = ["x_m", "y_m", "z_m", "u_m_s", "v_m_s", "w_m_s", "diameter_m", "density_kg_m3", "particles", "face"]

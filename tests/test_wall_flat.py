@@ -14,8 +14,8 @@ import math
 import meshio
 import numpy as np
 import pytest
+from wall_cases import flat_mesh, write_csv
 
-from tests.wall_cases import flat_mesh, write_csv
 from wear.wall import (
     ImpactRecords,
     concat_walls,

@@ -14,8 +14,8 @@ import gzip
 import meshio
 import numpy as np
 import pytest
+from wall_cases import OUTPUTS, RECORDS, erosion_constants
 
-from tests.wall_cases import OUTPUTS, RECORDS, erosion_constants
 from wear.wall import (
     face_sum,
     finnie_volumes,
