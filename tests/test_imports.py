@@ -4,7 +4,8 @@ Rooms, lowest first (a module may import from its own room and the rooms below i
 the FE core (``fem.core``: knows no plate) ← the plates (``fem.axisymmetric``, ``fem.solid``: neither imports the
 other) ← the plates' face and couplings (``fem``) ← the wear law (``wear.law``, ``wear.laws``, ``wear.pressure``,
 ``wear.pressure_profiles``, ``wear.integrate``, ``wear.accumulate``, ``wear.solid_wear``, ``wear.surface``) ← the case
-(``wear.case``) ← erosion (``wear.erosion``) ← the chains (``wear.chain``) ← the command line (``wear.app``).
+(``wear.case``) ← erosion (``wear.erosion``) ← a component's wall (``wear.wall``: impact records, the wall, per-face
+sums; never the chains nor the command line) ← the chains (``wear.chain``) ← the command line (``wear.app``).
 ``meshes`` is data: only its ``__main__`` (which regenerates the mesh) imports ``fem``. No import cycle between the
 project's modules (imports for type checking included), and at most 10 function-level imports of them, each with a
 comment saying why.
@@ -42,6 +43,7 @@ ROOMS = (
     ),
     ("wear.case",),
     ("wear.erosion",),
+    ("wear.wall",),
     ("wear.chain",),
     ("wear.app",),
 )

@@ -1,0 +1,41 @@
+"""Shared inputs of the wall tests: the committed OpenFOAM run and a flat wall of triangles (meshio)."""
+
+from __future__ import annotations
+
+import csv
+import re
+from pathlib import Path
+
+import meshio
+import numpy as np
+
+BEND = Path(__file__).resolve().parents[1] / "examples" / "openfoam_bend"
+OUTPUTS = BEND / "outputs"
+RECORDS = OUTPUTS / "patchPostProcessing1"
+
+
+def erosion_constants() -> dict[str, float]:
+    """p (Pa), psi, K of the run's particleErosion1 entry, read from its case dictionary."""
+    text = (BEND / "particles" / "constant" / "kinematicCloudProperties").read_text()
+    block = text[text.index("particleErosion1") :]
+    return {k: float(re.search(rf"\b{k}\s+([^;\s]+);", block)[1]) for k in ("p", "psi", "K")}
+
+
+def flat_mesh(nx: int = 4, ny: int = 3, width: float = 0.04, height: float = 0.03) -> meshio.Mesh:
+    """A width × height (m) rectangle in the plane z = 0 cut into 2 nx ny triangles, oriented so that their
+    right-hand normal is −z: the fluid is above (z > 0), the wall material below."""
+    x, y = np.meshgrid(np.linspace(0, width, nx + 1), np.linspace(0, height, ny + 1), indexing="ij")
+    points = np.column_stack([x.ravel(), y.ravel(), np.zeros(x.size)])
+    node = np.arange(points.shape[0]).reshape(nx + 1, ny + 1)
+    a, b, c, d = node[:-1, :-1].ravel(), node[1:, :-1].ravel(), node[1:, 1:].ravel(), node[:-1, 1:].ravel()
+    # (a, d, c) and (a, c, b) run clockwise seen from +z: normal -z
+    triangles = np.concatenate([np.column_stack([a, d, c]), np.column_stack([a, c, b])])
+    return meshio.Mesh(points, [("triangle", triangles)])
+
+
+def write_csv(path: Path, header: list[str], rows: list[list]) -> Path:
+    with path.open("w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(header)
+        writer.writerows(rows)
+    return path

@@ -1,0 +1,131 @@
+r"""The impact table on the wall: each record's face, the unit normal its angle is measured against, its angle
+and speed.
+
+The impact angle from the wall normal (deg, the project's convention; the erosion literature's angle from the
+surface is α = 90° − θ) of a record of velocity v at a hit with unit normal :math:`\hat n` (pointing into the
+wall, :mod:`wear.wall.mesh`) is
+
+.. math:: \theta = \arccos\left(\hat n \cdot \frac{v}{|v|}\right) \in [0°, 90°],
+
+the normal being the one the source code used where the records carry it (``normal="recorded"``: OpenFOAM's tet
+triangle) or the face's (``normal="face"``). A record whose velocity points out of the wall
+(:math:`\hat n \cdot v < 0`, θ > 90°) or that lies farther than ``tolerance`` from its face is bad input: a
+``ValueError`` naming its file, row and column, or with ``skip_bad`` counted in :attr:`Hits.skipped` and left out
+of every sum (its face is −1).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from wear.wall.locate import default_tolerance, distance_to_faces, nearest_faces
+from wear.wall.mesh import Wall
+from wear.wall.records import ImpactRecords
+
+__all__ = ["Hits", "hits_on_wall", "NORMALS"]
+
+#: Which normal an impact angle is measured against.
+NORMALS = ("recorded", "face")
+
+
+@dataclass(frozen=True, eq=False)
+class Hits:
+    """The records on the wall: ``face`` (n,) the wall face of each (−1: skipped), ``normal`` (n, 3) the unit
+    normal the angle is measured against, ``angle`` (n,) θ (deg from the normal), ``speed`` (n,) :math:`|v|` (m/s),
+    ``distance`` (n,) from the face (m); ``skipped``: the number of records left out, by reason (``"far_from_wall"``,
+    ``"leaving_wall"``)."""
+
+    face: np.ndarray
+    normal: np.ndarray
+    angle: np.ndarray
+    speed: np.ndarray
+    distance: np.ndarray
+    skipped: dict[str, int]
+
+    @property
+    def kept(self) -> np.ndarray:
+        """The records on a face (n,) bool."""
+        return self.face >= 0
+
+
+def hits_on_wall(
+    records: ImpactRecords,
+    wall: Wall,
+    normal: str | None = None,
+    tolerance: float | None = None,
+    skip_bad: bool = False,
+) -> Hits:
+    """Place ``records`` on ``wall``: the face of each (its own, or the nearest to its position when −1), the
+    normal (``"recorded"``, ``"face"``; default: the recorded one where the records carry it, else the face's),
+    the angle and the speed. ``tolerance`` (m): the largest distance of a hit from its face
+    (:func:`wear.wall.locate.default_tolerance` by default). See the module docstring for the bad records."""
+    if normal is None:
+        normal = "recorded" if records.normal is not None else "face"
+    if normal not in NORMALS:
+        raise ValueError(f"normal={normal!r} is not one of {', '.join(NORMALS)}")
+    if normal == "recorded" and records.normal is None:
+        raise ValueError(f"normal='recorded': the records of {records.files[0]} carry no normal; use normal='face'")
+    tolerance = default_tolerance(wall) if tolerance is None else tolerance
+    if not tolerance > 0.0:
+        raise ValueError(f"tolerance={tolerance!r} is out of range: the distance of a hit from its face is > 0 m")
+    if len(records.face) and records.face.max() >= len(wall):
+        i = int(np.argmax(records.face))
+        raise ValueError(
+            f"{records.where(i, 'face')}: {records.face[i]} is out of range: the wall has {len(wall)} faces "
+            f"(0 ... {len(wall) - 1}, or -1: found from the position)"
+        )
+    face = records.face.copy()
+    distance = np.zeros(len(face))
+    given = face >= 0
+    if given.any():
+        distance[given] = distance_to_faces(wall, records.position[given], face[given])
+    if (~given).any():
+        face[~given], distance[~given] = nearest_faces(wall, records.position[~given])
+    n = records.normal if normal == "recorded" else wall.normal[face]
+    speed = records.speed
+    cosine = np.clip(np.einsum("ij,ij->i", n, records.velocity) / speed, -1.0, 1.0)
+    angle = np.degrees(np.arccos(cosine))
+    far = distance > tolerance
+    away = ~far & (cosine < 0.0)
+    skipped = {}
+    for bad, reason in ((far, "far_from_wall"), (away, "leaving_wall")):
+        hit = np.flatnonzero(bad)
+        if len(hit) and not skip_bad:
+            raise ValueError(_message(records, wall, hit[0], reason, given, face, distance, angle, tolerance, len(hit)))
+        if len(hit):
+            skipped[reason] = len(hit)
+    face[far | away] = -1
+    return Hits(face=face, normal=n, angle=angle, speed=speed, distance=distance, skipped=skipped)
+
+
+def _message(
+    records: ImpactRecords,
+    wall: Wall,
+    i: int,
+    reason: str,
+    given: np.ndarray,
+    face: np.ndarray,
+    distance: np.ndarray,
+    angle: np.ndarray,
+    tolerance: float,
+    count: int,
+) -> str:
+    """One line on record ``i``, too far from the wall or leaving it (``reason``)."""
+    f = face[i]
+    name = f"face {f} (label {wall.labels[f]}) of patch {wall.patch_names[wall.patch[f]]}"
+    more = f" ({count - 1} more such records)" if count > 1 else ""
+    if reason == "far_from_wall":
+        text = " ".join(f"{v:.6g}" for v in records.position[i])
+        which = "its face" if given[i] else "the nearest wall face"
+        return (
+            f"{records.where(i, 'position')}: ({text}) lies {distance[i]:.3g} m from {which}, {name}, farther than "
+            f"tolerance={tolerance:.6g} m{more}"
+        )
+    text = " ".join(f"{v:.6g}" for v in records.velocity[i])
+    return (
+        f"{records.where(i, 'velocity')}: ({text}) points out of the wall ({angle[i]:.6g} deg from the normal of "
+        f"{name}; the wall normals point out of the fluid: if every hit does, the wall is oriented the other way, "
+        f"flip it){more}"
+    )
