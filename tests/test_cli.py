@@ -11,14 +11,14 @@ from wear.app import cli
 def _fake(monkeypatch, exc):
     module = types.SimpleNamespace(main=lambda args: (_ for _ in ()).throw(exc))
     parser = cli.build_parser()
-    real_parse = parser.parse_args
+    real_parse = parser.parse_known_args
 
     def parse(argv):
-        args = real_parse(argv)
+        args, unknown = real_parse(argv)
         args._module = module
-        return args
+        return args, unknown
 
-    parser.parse_args = parse
+    parser.parse_known_args = parse
     monkeypatch.setattr(cli, "build_parser", lambda: parser)
 
 

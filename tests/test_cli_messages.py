@@ -4,28 +4,15 @@ be, reported missing), a key given twice, the option or key behind a derived qua
 malformed ``--scheduler``. Each: exit 2, one stderr line, nothing written."""
 
 import math
-import time
 
 import pytest
+from refusal import refused
 
 from contact import effective_modulus
 from wear.app.cli import build_parser, main
 from wear.case import default_case
 from wear.chain.indent import largest_force
 from wear.chain.single import estimate_impact
-
-QUICK = 2.0  # s: each refusal comes before any FE or wear work
-
-
-def _refused(argv, tmp_path, capsys) -> str:
-    out = tmp_path / "out"
-    start = time.perf_counter()
-    assert main([*argv, "--out", str(out)]) == 2
-    assert time.perf_counter() - start < QUICK
-    err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1, err
-    assert not out.exists()
-    return err
 
 
 @pytest.mark.parametrize(
@@ -43,18 +30,18 @@ def _refused(argv, tmp_path, capsys) -> str:
 def test_partial_case_file_names_the_mistyped_key_before_a_missing_table(text, expected, tmp_path, capsys):
     path = tmp_path / "case.toml"
     path.write_text(text, encoding="utf-8")
-    err = _refused(["run", str(path)], tmp_path, capsys)
+    err = refused(["run", str(path)], tmp_path, capsys)
     assert expected in err and "is missing" not in err
 
 
 def test_a_partial_case_file_without_typos_still_names_the_missing_table(tmp_path, capsys):
     path = tmp_path / "case.toml"
     path.write_text("[ball]\nradius = 1e-3\n", encoding="utf-8")
-    assert "[plate] is missing" in _refused(["run", str(path)], tmp_path, capsys)
+    assert "[plate] is missing" in refused(["run", str(path)], tmp_path, capsys)
 
 
 def test_max_force_beyond_the_plate_names_the_option_and_its_largest_value(tmp_path, capsys):
-    err = _refused(["indent", "--max-force", "1e12"], tmp_path, capsys)
+    err = refused(["indent", "--max-force", "1e12"], tmp_path, capsys)
     assert err.startswith("impactwear indent: error: --max-force=1e+12 is out of range: must be in (0, ")
     assert f"{largest_force(default_case('indent')):.5g}] N" in err
     assert "max_overlap" not in err
@@ -69,7 +56,7 @@ def test_largest_force_of_an_elastic_plate_is_hertz_at_an_overlap_of_one_radius(
 
 
 def test_impact_speed_beyond_the_plate_names_the_key_and_a_speed_that_fits(tmp_path, capsys):
-    err = _refused(["run", "--set", "impact.speed=1000"], tmp_path, capsys)
+    err = refused(["run", "--set", "impact.speed=1000"], tmp_path, capsys)
     assert "impact.speed=1000 m/s drives the ball" in err and "max_overlap" not in err
     largest = float(err.rsplit("impact.speed <= ", 1)[1].split()[0])
     case = default_case("run")
@@ -80,19 +67,19 @@ def test_impact_speed_beyond_the_plate_names_the_key_and_a_speed_that_fits(tmp_p
 
 @pytest.mark.parametrize("value", ["-5,30", "-5", "-1e-6,30"])
 def test_erode_angles_starting_with_a_negative_angle_names_the_option_and_range(value, tmp_path, capsys):
-    err = _refused(["erode", "--angles", value], tmp_path, capsys)
+    err = refused(["erode", "--angles", value], tmp_path, capsys)
     assert "--angles: angle=-" in err and "must be in [0, 85] deg" in err
 
 
 def test_sweep_scheduler_that_is_no_address_names_the_option(tmp_path, capsys):
     sweep = tmp_path / "sweep.toml"
     sweep.write_text('[sweep]\nstage = "impact"\n[grid]\n"impact.angle" = [10, 30]\n', encoding="utf-8")
-    err = _refused(["sweep", str(sweep), "--scheduler", "garbage"], tmp_path, capsys)
+    err = refused(["sweep", str(sweep), "--scheduler", "garbage"], tmp_path, capsys)
     assert "--scheduler='garbage' is not a Dask scheduler address" in err
 
 
 def test_reproduce_only_an_unknown_figure_names_the_option_and_writes_nothing(tmp_path, capsys):
-    err = _refused(["reproduce", "--only", "nonexistent"], tmp_path, capsys)
+    err = refused(["reproduce", "--only", "nonexistent"], tmp_path, capsys)
     assert "--only='nonexistent' is not a figure: choose from " in err
 
 

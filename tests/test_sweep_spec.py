@@ -15,6 +15,7 @@ import sys
 import textwrap
 
 import pytest
+from refusal import refused
 
 from wear.app import cli
 from wear.app.sweep.spec import case_id, load_sweep, parse_sweep
@@ -163,15 +164,9 @@ BAD_FILES = {
 @pytest.mark.parametrize("kind", list(BAD_FILES))
 def test_bad_sweep_file_exits_2_with_one_line_naming_the_key(kind, tmp_path, capsys):
     text, key = BAD_FILES[kind]
-    out = tmp_path / "out"
-    status = cli.main(["sweep", str(_write(tmp_path, text)), "--out", str(out), "--quiet"])
-    captured = capsys.readouterr()
-    lines = captured.err.strip().splitlines()
-    assert status == 2
-    assert len(lines) == 1, captured.err
-    assert lines[0].startswith("impactwear sweep: error: ")
-    assert key in lines[0], lines[0]
-    assert not out.exists()  # validated before anything runs or is written
+    line = refused(["sweep", str(_write(tmp_path, text)), "--quiet"], tmp_path, capsys)
+    assert line.startswith("impactwear sweep: error: ")
+    assert key in line, line  # validated before anything runs or is written
 
 
 def test_missing_file_exits_2(tmp_path, capsys):

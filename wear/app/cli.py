@@ -14,6 +14,7 @@ import os
 import re
 import sys
 from importlib.metadata import PackageNotFoundError, version
+from typing import NoReturn
 
 from fem import ConvergenceError
 from wear.app.commands import reproduce, sweep, validate
@@ -29,8 +30,16 @@ def commands() -> dict[str, tuple[str, object]]:
     return {**jobs, **{name: (module.HELP, module) for name, module in TOOLS.items()}}
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse's parser with its errors in one line (the option, its value and what is wrong, then where the help
+    is), as every other bad input is reported, instead of the usage block and a second line."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="impactwear",
         description="Impact, plate and wear of a ball hitting a flat plate (SI units; angles in degrees "
         "from the plate normal).",
@@ -69,7 +78,12 @@ def join_negative_values(argv: list[str]) -> list[str]:
 
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
-    args = parser.parse_args(join_negative_values(sys.argv[1:] if argv is None else list(argv)))
+    args, unknown = parser.parse_known_args(join_negative_values(sys.argv[1:] if argv is None else list(argv)))
+    if unknown:  # named in the command's own error line, not in the top-level parser's
+        command = getattr(args, "command", None)
+        prog = parser.prog if command is None else f"{parser.prog} {command}"
+        print(f"{prog}: error: unrecognized arguments: {' '.join(unknown)} (see {prog} --help)", file=sys.stderr)
+        return 2
     if getattr(args, "_module", None) is None:
         parser.print_help()
         return 2

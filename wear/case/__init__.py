@@ -37,6 +37,8 @@ from wear.case.toml import (
     load_case,
     override_tables,
     parse_case,
+    read_toml,
+    read_toml_text,
     toml_value,
 )
 from wear.laws import LAWS
@@ -71,5 +73,7 @@ __all__ = [
     "load_case",
     "override_tables",
     "parse_case",
+    "read_toml",
+    "read_toml_text",
     "toml_value",
 ]

@@ -25,19 +25,23 @@ if sys.version_info >= (3, 11):
 else:  # Python 3.10
     import tomli as tomllib
 
-__all__ = ["parse_case", "load_case", "dump_case", "apply_override", "override_tables", "key_reference", "toml_value"]
+__all__ = [
+    "parse_case",
+    "load_case",
+    "dump_case",
+    "apply_override",
+    "override_tables",
+    "key_reference",
+    "read_toml",
+    "read_toml_text",
+    "toml_value",
+]
 
 
 def parse_case(text: str, job: str = "run", source: str = "case", name: str = "case") -> Case:
     """The case in the TOML ``text`` laid over ``job``'s default case (``name``=``source`` names the text in
     errors)."""
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        twice = _given_twice(text)
-        if twice:
-            raise ValueError(f"{name}={source!r}: {twice}; give each once") from None
-        raise ValueError(f"{name}={source!r} is not valid TOML: {exc}") from None
+    data = read_toml(text, source, name)
     # every key is checked before a missing table is named: a mistyped table or key would otherwise be reported
     # as the table it was meant to be
     base = default_case(job)
@@ -47,6 +51,18 @@ def parse_case(text: str, job: str = "run", source: str = "case", name: str = "c
             need = ", ".join(f"[{t}]" for t in JOBS[job].required)
             raise ValueError(f"[{table}] is missing from {name}={source!r}: a {job} case needs {need}")
     return base.with_tables(tables)
+
+
+def read_toml(text: str, source: str, name: str) -> dict[str, Any]:
+    """The TOML ``text`` as a dict; ValueError naming ``name``=``source`` and, for a key or table given twice, that
+    key (tomllib names only the line)."""
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        twice = _given_twice(text)
+        if twice:
+            raise ValueError(f"{name}={source!r}: {twice}; give each once") from None
+        raise ValueError(f"{name}={source!r} is not valid TOML: {exc}") from None
 
 
 def _given_twice(text: str) -> str:
@@ -76,14 +92,27 @@ def load_case(path: str | os.PathLike | None, job: str = "run", name: str = "cas
     """The case in the TOML file ``path`` (None: ``job``'s default case); ``name`` names the file in errors."""
     if path is None:
         return default_case(job)
+    return parse_case(read_toml_text(path, name), job, str(Path(path)), name)
+
+
+def read_toml_text(path: str | os.PathLike, name: str) -> str:
+    """The text of the TOML file ``path``; ValueError naming ``name``=``path`` when there is no such file, it is a
+    folder, or it is not UTF-8 text."""
     p = Path(path)
+    shown = f"{name}={str(p)!r}"
+    if not p.exists():
+        raise ValueError(f"{shown}: no such file")
     if not p.is_file():
-        raise ValueError(f"{name}={str(p)!r} is not a file")
+        raise ValueError(f"{shown} is not a file")
     try:
         text = p.read_text(encoding="utf-8")
     except UnicodeDecodeError:
-        raise ValueError(f"{name}={str(p)!r} is not a UTF-8 text (TOML) file") from None
-    return parse_case(text, job, str(p), name)
+        text = "\x00"
+    except OSError as exc:
+        raise ValueError(f"{shown} cannot be read: {exc.strerror}") from None
+    if "\x00" in text:  # no text file holds a NUL
+        raise ValueError(f"{shown} is not a UTF-8 text (TOML) file")
+    return text
 
 
 def toml_value(value: Any) -> str:

@@ -63,7 +63,7 @@ def _number(text: str, column: str, row: int) -> float:
 
 def read_data(path: str | os.PathLike) -> CalibrationData:
     """Read and check a data file (CSV with a header row; see the module docstring). Errors are one line naming
-    the column and the row (rows counted from 1 after the header)."""
+    the file, the column and the row (rows counted from 1 after the header)."""
     p = Path(path)
     if not p.is_file():
         raise ValueError(f"data={str(p)!r} is not a file")
@@ -112,33 +112,36 @@ def read_data(path: str | os.PathLike) -> CalibrationData:
         raise ValueError(f"data={str(p)!r} has no rows: give one row per measurement")
     angle, speed, value = [], [], []
     extra: dict[str, list[float]] = {k: [] for k in keys}
-    for i, row in enumerate(body, start=1):
-        if len(row) != len(header):
-            raise ValueError(f"row {i} of data={str(p)!r} has {len(row)} values for {len(header)} columns")
-        cells = dict(zip(header, (c.strip() for c in row), strict=True))
-        a = _number(cells["angle_deg"], "angle_deg", i)
-        if not 0.0 <= a < 90.0:
-            raise ValueError(
-                f"angle_deg={a:g} in row {i} is out of range: the angle from the normal must be in [0, 90) deg"
-            )
-        v = _number(cells["speed_m_s"], "speed_m_s", i)
-        if not 0.0 < v <= 1000.0:
-            raise ValueError(f"speed_m_s={v:g} in row {i} is out of range: must be in (0, 1000] m/s")
-        text = cells[measured[0]]
-        if text == "":
-            m = math.nan
-        else:
-            m = _number(text, measured[0], i)
-            if m <= 0.0:
+    try:  # a bad cell is named by its column and row, and the file
+        for i, row in enumerate(body, start=1):
+            if len(row) != len(header):
+                raise ValueError(f"row {i} has {len(row)} values for {len(header)} columns")
+            cells = dict(zip(header, (c.strip() for c in row), strict=True))
+            a = _number(cells["angle_deg"], "angle_deg", i)
+            if not 0.0 <= a < 90.0:
                 raise ValueError(
-                    f"{measured[0]}={m:g} in row {i} is out of range: must be > 0 (its log is fitted); "
-                    "leave it empty to predict the row"
+                    f"angle_deg={a:g} in row {i} is out of range: the angle from the normal must be in [0, 90) deg"
                 )
-        angle.append(a)
-        speed.append(v)
-        value.append(m)
-        for k in keys:
-            extra[k].append(_number(cells[k], k, i))
+            v = _number(cells["speed_m_s"], "speed_m_s", i)
+            if not 0.0 < v <= 1000.0:
+                raise ValueError(f"speed_m_s={v:g} in row {i} is out of range: must be in (0, 1000] m/s")
+            text = cells[measured[0]]
+            if text == "":
+                m = math.nan
+            else:
+                m = _number(text, measured[0], i)
+                if m <= 0.0:
+                    raise ValueError(
+                        f"{measured[0]}={m:g} in row {i} is out of range: must be > 0 (its log is fitted); "
+                        "leave it empty to predict the row"
+                    )
+            angle.append(a)
+            speed.append(v)
+            value.append(m)
+            for k in keys:
+                extra[k].append(_number(cells[k], k, i))
+    except ValueError as exc:
+        raise ValueError(f"data={str(p)!r}: {exc}") from None
     data = CalibrationData(
         np.array(angle),
         np.array(speed),

@@ -71,7 +71,7 @@ def _row_case(case: Case, data: CalibrationData, i: int) -> Case:
     try:
         return case.with_(**tables)
     except ValueError as exc:
-        raise ValueError(f"row {i + 1}: {exc}") from None
+        raise ValueError(f"row {i + 1} of data={data.source!r}: {exc}") from None
 
 
 @dataclass(frozen=True, eq=False)

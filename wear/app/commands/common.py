@@ -21,6 +21,7 @@ __all__ = [
     "add_out_option",
     "case_from_args",
     "case_json",
+    "path_option",
     "collect_notes",
     "print_default",
     "print_json",
@@ -57,11 +58,19 @@ def add_case_options(parser: argparse.ArgumentParser, job: str, *, flag: bool = 
     )
 
 
+def path_option(text: str) -> str:
+    """An ``--out`` or ``--report`` path, not empty (an unset shell variable would make it the current folder)."""
+    if not text.strip():
+        raise argparse.ArgumentTypeError(f"{text!r} is empty: give a path")
+    return text
+
+
 def add_out_option(parser: argparse.ArgumentParser, default: str) -> None:
     """``--out DIR``: a command's output folder (:mod:`wear.app.outputs.folder`)."""
     parser.add_argument(
         "--out",
         default=default,
+        type=path_option,
         metavar="DIR",
         help=f"output folder (default: {default}): a new or empty folder, or an earlier output folder "
         "of this command, whose files are replaced while every other file in it is left alone; a "

@@ -15,6 +15,7 @@ import math
 from pathlib import Path
 
 from contact.checks import check_number
+from fem import load_mesh
 from wear.app.commands.common import (
     add_case_options,
     add_out_option,
@@ -29,6 +30,8 @@ from wear.app.outputs.indent import write_indent
 from wear.chain.indent import indent_case, largest_force
 
 DEFAULT_OUT = "impactwear-indent"
+#: Largest hardening modulus (Pa): the case schema's largest Young's modulus.
+MAX_HARDENING = 1e13
 
 # option -> case key (checked by the case schema, so errors name the key)
 _OPTIONS = {
@@ -80,9 +83,16 @@ def main(args: argparse.Namespace) -> int:
         check_number("--max-overlap", args.max_overlap, low=0.0, low_open=True, high=case.ball.radius, units="m")
     if args.max_force is not None:
         check_number("--max-force", args.max_force, low=0.0, low_open=True, high=largest_force(case), units="N")
+    check_number("--hardening", args.hardening, low=0.0, high=MAX_HARDENING, units="Pa")
+    mesh = None
+    if args.mesh is not None:
+        try:  # read before any work: its errors name mesh=PATH, the option is --mesh
+            mesh = load_mesh(args.mesh)
+        except ValueError as exc:
+            raise ValueError(f"--{exc}") from None
     with collect_notes() as notes:
         run = indent_case(
-            case, max_overlap=args.max_overlap, max_force=args.max_force, hardening=args.hardening, mesh=args.mesh
+            case, max_overlap=args.max_overlap, max_force=args.max_force, hardening=args.hardening, mesh=mesh
         )
         out = Path(args.out)
         summary = write_indent(run, out, figures=not args.no_figures, notes=notes)

@@ -37,6 +37,8 @@ def _integer(name: str, text: str) -> int:
         ) from None
     if not value.is_integer():
         raise ValueError(f"--{name}={text} is not an integer: the number of impacts must be an integer in [1, 1e9]")
+    if not 1 <= value <= 1e9:
+        raise ValueError(f"--{name}={text} is out of range: the number of impacts must be an integer in [1, 1e9]")
     return int(value)
 
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import sys
 
+from wear.app.commands.common import path_option
 from wear.app.outputs.folder import check_writable_folder
 from wear.app.reproduce.run import FIGURES, reproduce
 
@@ -17,7 +18,9 @@ HELP = "recompute the paper's figures (PNG) from this toolkit and write reproduc
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--out", default="reproduce", metavar="DIR", help="output folder (default: ./reproduce)")
+    parser.add_argument(
+        "--out", default="reproduce", type=path_option, metavar="DIR", help="output folder (default: ./reproduce)"
+    )
     parser.add_argument("--quick", action="store_true", help="reduced sizes (fewer angles, coarse FE): for tests")
     parser.add_argument("--only", action="append", metavar="NAME", help="run only this figure (repeatable)")
     parser.add_argument("--quiet", action="store_true", help="no progress lines")

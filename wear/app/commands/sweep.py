@@ -14,6 +14,8 @@ import argparse
 import re
 import sys
 
+from wear.app.commands.common import path_option
+from wear.app.outputs.folder import check_output_folder
 from wear.app.sweep.execution import SweepAborted
 from wear.app.sweep.runner import failed_lines, run_sweep, summary_line
 from wear.app.sweep.spec import load_sweep
@@ -36,7 +38,13 @@ def _positive_int(text: str) -> int:
 
 def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("sweep", metavar="SWEEP.toml", help="sweep file: [sweep] stage, [base], [grid] or [[cases]]")
-    parser.add_argument("--out", required=True, metavar="DIR", help="output folder (reused: finished cases are kept)")
+    parser.add_argument(
+        "--out",
+        required=True,
+        type=path_option,
+        metavar="DIR",
+        help="output folder (reused: finished cases are kept)",
+    )
     how = parser.add_mutually_exclusive_group()
     how.add_argument("--workers", type=_positive_int, metavar="N", help="local worker processes (default: CPU count)")
     how.add_argument(
@@ -53,6 +61,7 @@ def main(args: argparse.Namespace) -> int:
             "e.g. tcp://host:8786"
         )
     spec = load_sweep(args.sweep)
+    check_output_folder(args.out, "sweep")  # a file, or a folder of user files or of another command: before any work
     try:
         outcome = run_sweep(
             spec, args.out, workers=args.workers, dask_local=args.dask_local, scheduler=args.scheduler, quiet=args.quiet

@@ -12,6 +12,7 @@ import shlex
 import sys
 from pathlib import Path
 
+from wear.app.commands.common import path_option
 from wear.app.outputs.folder import check_writable_folder
 from wear.app.validation.checks import GROUPS
 from wear.app.validation.runner import render_report, run_validation, write_report
@@ -25,9 +26,18 @@ DEFAULT_OUT = "impactwear-validate"
 
 def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
-        "--out", default=DEFAULT_OUT, metavar="DIR", help=f"folder of validation.md (default: {DEFAULT_OUT})"
+        "--out",
+        default=DEFAULT_OUT,
+        type=path_option,
+        metavar="DIR",
+        help=f"folder of validation.md (default: {DEFAULT_OUT})",
     )
-    parser.add_argument("--report", metavar="PATH", help="write the report to this file instead of DIR/validation.md")
+    parser.add_argument(
+        "--report",
+        type=path_option,
+        metavar="PATH",
+        help="write the report to this file instead of DIR/validation.md",
+    )
     parser.add_argument("--quick", action="store_true", help="reduced sizes (the test suite's mode)")
     parser.add_argument("--only", action="append", metavar="TEXT", help="run the groups whose name contains TEXT")
     parser.add_argument("--list", action="store_true", help="list the check groups and exit")
@@ -44,6 +54,9 @@ def main(args: argparse.Namespace) -> int:
         if not args.quiet:
             print(f"validate: {name} ...", file=sys.stderr, flush=True)
 
+    for text in args.only or ():  # each names some group ("" would name every one)
+        if not text or not any(text in name for name in GROUPS):
+            raise ValueError(f"--only={text!r} matches no check group: groups are {', '.join(GROUPS)}")
     path = Path(args.report) if args.report else Path(args.out) / "validation.md"
     if path.is_dir():
         raise ValueError(f"--report={args.report!r} is a folder: give the report's file name (e.g. validation.md)")

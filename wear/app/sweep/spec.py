@@ -36,19 +36,13 @@ import hashlib
 import itertools
 import json
 import math
-import sys
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from wear.app.sweep.stages import stage_case
-from wear.case import STAGES
-
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover - Python 3.10
-    import tomli as tomllib
+from wear.case import STAGES, read_toml, read_toml_text
 
 __all__ = ["SweepSpec", "SweepCase", "load_sweep", "parse_sweep", "case_id", "flatten", "MAX_CASES"]
 
@@ -285,15 +279,5 @@ def parse_sweep(data: Mapping, *, source: str = "") -> SweepSpec:
 
 def load_sweep(path: str | Path) -> SweepSpec:
     """Read and validate a sweep file (see the module doc). Raises ``ValueError`` naming the key at fault."""
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise ValueError(f"sweep={str(path)!r}: no such file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise ValueError(f"sweep={str(path)!r} cannot be read: {exc}") from None
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise ValueError(f"sweep={str(path)!r} is not valid TOML: {exc}") from None
-    return parse_sweep(data, source=text)
+    text = read_toml_text(path, "sweep")
+    return parse_sweep(read_toml(text, str(path), "sweep"), source=text)
