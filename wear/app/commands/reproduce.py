@@ -11,7 +11,7 @@ import argparse
 import sys
 
 from wear.app.outputs.folder import check_writable_folder
-from wear.app.reproduce.run import FIGURES, reproduce
+from wear.app.reproduce.run import FIGURES, check_outputs, reproduce
 
 HELP = "recompute the paper's figures (PNG) from this toolkit and write reproduce.md"
 
@@ -28,6 +28,7 @@ def main(args: argparse.Namespace) -> int:
     if unknown:
         raise ValueError(f"--only={unknown[0]!r} is not a figure: choose from {', '.join(FIGURES)}")
     check_writable_folder(args.out)
+    check_outputs(args.out, args.only or list(FIGURES))
 
     def progress(name: str) -> None:
         if not args.quiet:

@@ -22,7 +22,10 @@ from wear.app.outputs.writer import versions, write_csv, write_mesh, write_npz, 
 from wear.case import JOBS
 from wear.chain.records import RepeatResult
 
-__all__ = ["RepeatWriter"]
+__all__ = ["ENTRIES", "RepeatWriter"]
+
+#: What ``impactwear repeat`` may write in its folder (checked against the folder before any work).
+ENTRIES = ("frames", "repeat.pvd", "repeat.csv", "wear_map.npz", "summary.json", "repeat.png")
 
 
 class RepeatWriter:
