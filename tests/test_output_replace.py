@@ -180,14 +180,17 @@ def test_a_failed_swap_leaves_the_earlier_output(tmp_path, monkeypatch):
     monkeypatch.setattr(folder, "exchange", refuse)
     with pytest.raises(ValueError) as err, output_folder(out, "run", NAMES) as tmp:
         _write_output(tmp, "new")
-    assert str(err.value).startswith(f"--out={str(out)!r} cannot be written: Read-only file system")
-    assert "earlier output is as it was" in str(err.value)
+    assert (
+        str(err.value)
+        == f"--out={str(out)!r} cannot be written (Read-only file system): the earlier output is as it was"
+    )
     assert _snapshot(out) == old and sorted(p.name for p in tmp_path.iterdir()) == ["out"]
 
 
 def test_an_earlier_output_that_cannot_be_swapped_is_refused_before_any_work(tmp_path, monkeypatch):
-    """Where the folder cannot be swapped (here: the file system says so), an earlier output is refused before the
-    block runs, naming --out and why; an empty folder is still filled."""
+    """Where the folder cannot be swapped (here: the file system says so), a complete earlier output is refused
+    before the block runs, naming --out and why; an empty folder, or what a killed filling left (manifest
+    incomplete, no summary), is filled entry by entry, the user's files kept."""
 
     def unsupported(a, b):
         raise OSError(errno.EINVAL, os.strerror(errno.EINVAL), str(a))
@@ -195,13 +198,29 @@ def test_an_earlier_output_that_cannot_be_swapped_is_refused_before_any_work(tmp
     monkeypatch.setattr(exchange, "exchange", unsupported)
     out = tmp_path / "out"
     out.mkdir()
+    assert folder.can_exchange(out.resolve()) == f"Invalid argument in {str(tmp_path)!r}"
     with output_folder(out, "run", NAMES) as tmp:  # empty: filled entry by entry
         _write_output(tmp, "old")
     assert read_manifest(out)["complete"] and (out / "frames" / "f1.vtu").read_text() == "old"
-    with pytest.raises(ValueError, match="cannot be replaced in one step.*Invalid argument"):
+    with pytest.raises(ValueError, match="cannot be replaced in one step .Invalid argument"):
         with output_folder(out, "run", NAMES):
             raise AssertionError("the refusal comes before the work")
-    assert folder.can_exchange(out.resolve()) is not None
+    assert (out / "summary.json").read_text() == json.dumps({"tag": "old"})
+    # a filling killed before the summary: the manifest says incomplete; the next run fills the folder again
+    (out / "summary.json").unlink()
+    (out / MANIFEST).write_text(json.dumps({**read_manifest(out), "complete": False}))
+    (out / "notes.txt").write_text("mine\n")
+    with output_folder(out, "run", NAMES) as tmp:
+        _write_output(tmp, "new")
+    assert _snapshot(out) == {
+        MANIFEST: (out / MANIFEST).read_text(),
+        "frames": "dir",
+        "frames/f1.vtu": "new",
+        "history.csv": "time_s\nnew\n",
+        "notes.txt": "mine\n",
+        "summary.json": json.dumps({"tag": "new"}),
+    }
+    assert read_manifest(out)["complete"] and sorted(p.name for p in tmp_path.iterdir()) == ["out"]
 
 
 # --------------------------------------------------------------- a user's file under an output's name, up front

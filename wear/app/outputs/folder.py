@@ -17,10 +17,10 @@ The new output is built in a hidden temporary folder beside the target, ``.NAME.
   copied), the manifest written there, and the two folders swapped in one step (:func:`~.exchange.exchange`); the
   temporary folder, which then holds the earlier output, is removed. At every instant the folder holds the earlier
   output as it was or the complete new one; a temporary folder a kill leaves behind is never the only copy of
-  anything, and the next run into the folder removes it. An earlier output that cannot be swapped (its parent folder
-  cannot be written, it is a mount point, the file system cannot swap folders) is refused before any work; an empty
-  folder that cannot be swapped is filled entry by entry (the summaries last, the manifest "incomplete" until the
-  last entry is in).
+  anything, and the next run into the folder removes it. A complete earlier output that cannot be swapped (its parent
+  folder cannot be written, it is a mount point, the file system cannot swap folders) is refused before any work; a
+  folder that cannot be swapped and holds none (empty, or what a killed filling left) is filled entry by entry (the
+  summaries last, the manifest "incomplete" until the last entry is in).
 
 Folders and files get the permissions the user's umask gives (as ``mkdir`` and ``open`` would), so colleagues on a
 shared machine read the results as they read the user's other files.
@@ -100,8 +100,8 @@ def check_writable_folder(path: str | os.PathLike, option: str = "--out") -> Pat
     return target
 
 
-def _listed(names: list[str], more: str = "more") -> str:
-    return ", ".join(names[:3]) + (f" and {len(names) - 3} {more}" if len(names) > 3 else "")
+def _listed(names: list[str]) -> str:
+    return ", ".join(names[:3]) + (f" and {len(names) - 3} more" if len(names) > 3 else "")
 
 
 def _written_by(name: str, entries: tuple[str, ...]) -> bool:
@@ -116,7 +116,8 @@ def check_output_folder(
     before any work; ValueError (one line naming ``option`` and the value) when it is a file, lies under a file, cannot
     be written (:func:`check_writable_folder`), is a non-empty folder impactwear did not write, the output folder of
     another command (whose results replacing it would delete), holds a file of the user's under the name of one of
-    ``entries``, or holds an earlier output that cannot be replaced in one step (:func:`~.exchange.can_exchange`)."""
+    ``entries``, or holds a complete earlier output that cannot be replaced in one step
+    (:func:`~.exchange.can_exchange`)."""
     target = check_writable_folder(path, option)
     shown = f"{option}={str(path)!r}"
     if not target.is_dir():
@@ -139,10 +140,10 @@ def check_output_folder(
     clash = [name for name in foreign if _written_by(name, entries)]
     if clash:  # a file the user put there under the name of an output: keep the user's
         raise ValueError(
-            f"{shown} holds {_listed(clash, 'more')}, which impactwear did not write and `impactwear {command}` "
+            f"{shown} holds {_listed(clash)}, which impactwear did not write and `impactwear {command}` "
             "would write: move it, or give a new folder"
         )
-    if manifest["entries"] and command not in RESUMABLE:
+    if manifest["entries"] and manifest.get("complete") and command not in RESUMABLE:
         why = can_exchange(target.resolve())
         if why is not None:
             raise ValueError(
@@ -224,8 +225,7 @@ def output_folder(path: str | os.PathLike, command: str, entries: tuple[str, ...
         if exc.errno not in WRITE_ERRORS or not _inside(exc.filename, target):
             raise
         kept = "the earlier output is as it was" if existing else "nothing was written"
-        where = f" ({exc.filename})" if exc.filename else ""
-        raise ValueError(f"--out={str(path)!r} cannot be written: {exc.strerror or exc}{where}; {kept}") from None
+        raise ValueError(f"--out={str(path)!r} cannot be written ({exc.strerror or exc}): {kept}") from None
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 
@@ -238,9 +238,9 @@ def _inside(filename: str | bytes | None, target: Path) -> bool:
     path = Path(os.fsdecode(filename)).resolve()
     if path.is_relative_to(target):
         return True
-    return path.is_relative_to(target.parent) and path.relative_to(target.parent).parts[0].startswith(
-        f".{target.name}.partial-"
-    )
+    if not path.is_relative_to(target.parent):
+        return False
+    return next(iter(path.relative_to(target.parent).parts), "").startswith(f".{target.name}.partial-")
 
 
 def _link_tree(source: Path, copy: Path) -> None:
@@ -260,31 +260,34 @@ def _link_tree(source: Path, copy: Path) -> None:
             shutil.copy2(source, copy)
 
 
-def _user_entries(folder: Path, manifest: dict | None) -> list[Path]:
-    ours = set(manifest["entries"]) if manifest else set()
-    return [p for p in folder.iterdir() if p.name != MANIFEST and p.name not in ours and not is_temporary(p.name)]
-
-
 def _exchange_folder(tmp: Path, target: Path, command: str, new: set[str]) -> None:
     """Replace the output in ``target`` by the entries ``new`` of ``tmp`` (a folder beside it) in one step: the
     user's entries of ``target`` are linked into ``tmp``, the two folders swapped, and the earlier output (now in
     ``tmp``) removed. At every instant ``target`` holds the earlier output as it was or the complete new one; a
     ``tmp`` a kill leaves behind is never the only copy of anything, and the next run removes it."""
-    for entry in _user_entries(target, read_manifest(target)):
-        _link_tree(entry, tmp / entry.name)
+    for name in _foreign(target, read_manifest(target)):
+        _link_tree(target / name, tmp / name)
     write_json(tmp / MANIFEST, _manifest(command, list(new), True))
     shutil.copystat(target, tmp)  # the folder keeps its permissions
     exchange(tmp, target)
     # what the user put in the folder while it was being linked: moved over (the new output's names win)
-    for entry in _user_entries(tmp, read_manifest(tmp)):
-        if not (target / entry.name).exists() and not (target / entry.name).is_symlink():
-            os.replace(entry, target / entry.name)
+    for name in _foreign(tmp, read_manifest(tmp)):
+        if not (target / name).exists() and not (target / name).is_symlink():
+            os.replace(tmp / name, target / name)
 
 
 def _move_entries(tmp: Path, target: Path, command: str, new: set[str]) -> None:
-    """Move the entries ``new`` of ``tmp`` into ``target``, a folder without an earlier output that cannot be swapped
-    (e.g. a mount point): the data first, the summaries last, the manifest incomplete until every entry is in."""
-    write_json(target / MANIFEST, _manifest(command, list(new), False))
+    """Move the entries ``new`` of ``tmp`` into ``target``, a folder that cannot be swapped (e.g. a mount point) and
+    holds no complete earlier output: what an interrupted filling left is removed, the data moved in first, the
+    summaries last, the manifest "incomplete" until every entry is in."""
+    manifest = read_manifest(target)
+    left = set(manifest["entries"]) if manifest else set()
+    write_json(target / MANIFEST, _manifest(command, list(left | new), False))
+    for name in left:
+        if (target / name).is_dir() and not (target / name).is_symlink():
+            shutil.rmtree(target / name)
+        else:
+            (target / name).unlink(missing_ok=True)
     for name in _summaries_last(new):
         os.replace(tmp / name, target / name)
     write_json(target / MANIFEST, _manifest(command, list(new), True))
