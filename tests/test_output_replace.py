@@ -312,6 +312,15 @@ def test_reproduce_and_validate_refuse_a_users_file_they_would_replace(command, 
     assert (out / "validation.md").read_text().startswith(VALIDATION_HEADER)
 
 
+def test_a_folder_under_the_name_of_a_report_is_one_line(tmp_path, capsys, monkeypatch):
+    """A folder where reproduce writes reproduce.md: one line naming --out and the folder, exit 2, before any work."""
+    _no_work(monkeypatch)
+    (tmp_path / "reproduce.md").mkdir()
+    assert main(["reproduce", "--quiet", "--out", str(tmp_path)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and f"--out={str(tmp_path)!r} holds a folder 'reproduce.md'" in err[0], err
+
+
 # ------------------------------------------------------------------------------- a full disk, a quota, read-only
 @pytest.fixture(scope="module")
 def indent_run():

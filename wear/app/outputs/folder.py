@@ -163,6 +163,8 @@ def check_named_file(path: str | os.PathLike, command: str, header: str, shown: 
     """Before any work: a file ``path`` that ``command`` would replace must be absent or its own (it begins with
     ``header``); ValueError (one line, ``shown``: the option and value the user gave) otherwise."""
     path = Path(path)
+    if path.is_dir():
+        raise ValueError(f"{shown} holds a folder {path.name!r}, where `impactwear {command}` writes a file: move it")
     if path.exists() and not is_own_file(path, header):
         raise ValueError(
             f"{shown} holds {path.name!r}, which impactwear did not write and `impactwear {command}` would replace: "
