@@ -167,6 +167,21 @@ def test_a_kill_at_every_step_of_the_replace_keeps_the_earlier_output_or_the_new
     assert seen == {"old", "new"}  # the kills fell on both sides of the swap
 
 
+def test_the_users_files_are_the_same_files_after_a_replace(tmp_path):
+    """The user's files beside an earlier output are carried over as the same files (hard links: same inode, a
+    large data file is not copied), the folder keeps its mode, and a file the user adds during the run is kept."""
+    out = tmp_path / "out"
+    _earlier_output(out)
+    os.chmod(out, 0o750)
+    inodes = {n: (out / n).stat().st_ino for n in ("notes.txt", "data/m.csv")}
+    with output_folder(out, "run", NAMES) as tmp:
+        _write_output(tmp, "new")
+        (out / "late.txt").write_text("written while the run ran\n")
+    assert {n: (out / n).stat().st_ino for n in inodes} == inodes
+    assert (out / "late.txt").read_text() == "written while the run ran\n"
+    assert oct(out.stat().st_mode & 0o777) == oct(0o750) and (out / "link").readlink() == Path("notes.txt")
+
+
 def test_a_failed_swap_leaves_the_earlier_output(tmp_path, monkeypatch):
     """The swap itself failing (an OSError from the file system): the earlier output as it was, nothing beside it,
     and one line naming --out and the cause."""

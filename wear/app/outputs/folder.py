@@ -259,6 +259,8 @@ def _link_tree(source: Path, copy: Path) -> None:
         try:
             os.link(source, copy)
         except OSError:
+            if not source.is_file():  # a pipe or a device is not read through: copying it could block
+                raise
             shutil.copy2(source, copy)
 
 
