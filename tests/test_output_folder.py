@@ -209,29 +209,33 @@ def test_every_bad_out_is_one_line_exit_2(command, tmp_path, capsys):
         assert len(err) == 1 and "--out=" in err[0] and why in err[0], (command, err)
 
 
+#: The names the tests' output folder may hold.
+NAMES = ("summary.json", "history.csv", "stale.txt")
+
+
 def test_output_folder_is_atomic_and_keeps_foreign_files(tmp_path):
     """The output folder itself: an error inside leaves nothing (a new folder) or the previous output untouched; a
-    success moves the new files in, the JSON summary last; a name clash with a user's file is refused."""
+    success replaces the earlier output; a name clash with a user's file is refused before the block runs."""
     target = tmp_path / "out"
-    with pytest.raises(RuntimeError), output_folder(target, "run") as tmp:
+    with pytest.raises(RuntimeError), output_folder(target, "run", NAMES) as tmp:
         write_json(tmp / "summary.json", {"a": 1})
         raise RuntimeError("interrupted")
     assert list(tmp_path.iterdir()) == []
-    with output_folder(target, "run") as tmp:
+    with output_folder(target, "run", NAMES) as tmp:
         write_json(tmp / "summary.json", {"a": np.float64(1.5), "b": np.arange(2), "c": float("inf")})
         (tmp / "stale.txt").write_text("old")
     (target / "mine.txt").write_text("user")
-    with pytest.raises(RuntimeError), output_folder(target, "run") as tmp:
+    with pytest.raises(RuntimeError), output_folder(target, "run", NAMES) as tmp:
         write_csv(tmp / "history.csv", {"time_s": [0.0]})
         raise RuntimeError("interrupted")
     assert sorted(p.name for p in target.iterdir()) == [MANIFEST, "mine.txt", "stale.txt", "summary.json"]
-    with output_folder(target, "run") as tmp:
+    with output_folder(target, "run", NAMES) as tmp:
         write_csv(tmp / "history.csv", {"time_s": [0.0, 1.0], "force_N": [2.0, 3.0]})
     assert sorted(p.name for p in target.iterdir()) == [MANIFEST, "history.csv", "mine.txt"]
     assert (target / "history.csv").read_text().splitlines() == ["time_s,force_N", "0,2", "1,3"]
     assert read_manifest(target) == {**read_manifest(target), "entries": ["history.csv"], "complete": True}
-    with pytest.raises(ValueError, match="mine.txt"), output_folder(target, "run") as tmp:
-        (tmp / "mine.txt").write_text("would replace the user's file")
+    with pytest.raises(ValueError, match="mine.txt"), output_folder(target, "run", (*NAMES, "mine.txt")) as tmp:
+        raise AssertionError("the clash is found before the work")
     assert (target / "mine.txt").read_text() == "user"
     with pytest.raises(ValueError, match="output folder of `impactwear run`"):
         check_output_folder(target, "sweep")

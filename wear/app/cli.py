@@ -4,7 +4,9 @@ Each command is a module of :mod:`wear.app.commands` exposing ``configure(parser
 parse → load the case → call the runner → write. The commands that run a case are the jobs
 (:data:`wear.case.JOBS`, where their help lines and modules are registered); the tools (:data:`TOOLS`: sweep,
 reproduce, validate) run no case of their own and carry their help line as ``HELP``. Bad input (``ValueError``) is
-reported as one line naming the parameter, with exit status 2 and no traceback.
+reported as one line naming the parameter, with exit status 2 and no traceback; so is a write the file system refuses
+(:data:`wear.app.outputs.writer.WRITE_ERRORS`: a full disk, a quota, a read-only or forbidden folder), naming the
+file and the cause.
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ from typing import NoReturn
 
 from fem import ConvergenceError
 from wear.app.commands import reproduce, sweep, validate
+from wear.app.outputs.writer import WRITE_ERRORS
 from wear.case import JOBS
 
 #: The commands that are not jobs: name → module (its ``HELP`` is the help line), after the jobs in ``--help``.
@@ -96,6 +99,13 @@ def main(argv: list[str] | None = None) -> int:
         # A physical solve that did not converge is not a programming error: one line, exit 1.
         print(f"impactwear {args.command}: FE did not converge: {exc}", file=sys.stderr)
         return 1
+    except OSError as exc:
+        if exc.errno not in WRITE_ERRORS:
+            raise
+        # the file system refused a write (a full disk, a quota, a read-only or forbidden folder): not a bug
+        where = f": {exc.filename}" if exc.filename else ""
+        print(f"impactwear {args.command}: error: {exc.strerror or exc}{where}", file=sys.stderr)
+        return 2
     except BrokenPipeError:  # the reader of stdout stopped (e.g. `| head`): not a failure of the command
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0

@@ -12,7 +12,7 @@ from __future__ import annotations
 import argparse
 
 from wear.app.commands.common import add_case_options, add_out_option, case_from_args, print_default, print_json
-from wear.app.outputs.calibration import write_calibration
+from wear.app.outputs.calibration import ENTRIES, write_calibration
 from wear.app.outputs.folder import check_output_folder
 from wear.case import LAWS
 from wear.chain.calibrate import calibrate
@@ -70,7 +70,7 @@ def main(args: argparse.Namespace) -> int:
     if args.data is None:
         raise ValueError("DATA.csv is missing: give the file of measured wear (see impactwear calibrate --help)")
     data = read_data(case.calibration.data)  # bad data: one line naming the column and row, before any output
-    check_output_folder(args.out, "calibrate")
+    check_output_folder(args.out, "calibrate", ENTRIES)
     result = calibrate(case, data, case.calibration.free_constants())
     summary = write_calibration(result, args.out)
     if args.json:

@@ -22,7 +22,7 @@ from wear.app.commands.common import (
     print_notes,
     show_progress,
 )
-from wear.app.outputs.erosion import write_erosion, write_erosion_angles
+from wear.app.outputs.erosion import ENTRIES, write_erosion, write_erosion_angles
 from wear.app.outputs.folder import check_output_folder
 from wear.erosion.run import MAX_STREAM_ANGLE, erode_angles, erode_case
 
@@ -58,7 +58,7 @@ def main(args: argparse.Namespace) -> int:
     if args.print_default:
         return print_default(args, "erode", case)
     angles = None if args.angles is None else parse_angles(args.angles)
-    check_output_folder(args.out, "erode")
+    check_output_folder(args.out, "erode", ENTRIES)
     out = Path(args.out)
     progress = show_progress(args.quiet)
     say = (lambda *a: None) if args.quiet or args.json else print

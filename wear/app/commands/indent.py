@@ -26,7 +26,7 @@ from wear.app.commands.common import (
     print_notes,
 )
 from wear.app.outputs.folder import check_output_folder
-from wear.app.outputs.indent import write_indent
+from wear.app.outputs.indent import ENTRIES, write_indent
 from wear.chain.indent import indent_case, largest_force
 
 DEFAULT_OUT = "impactwear-indent"
@@ -77,7 +77,7 @@ def main(args: argparse.Namespace) -> int:
     case = case_from_args(args, "indent", named)
     if args.print_default:
         return print_default(args, "indent", case)
-    check_output_folder(args.out, "indent")
+    check_output_folder(args.out, "indent", ENTRIES)
     # named as the user gave them (indent_case checks its own arguments again, named as in Python)
     if args.max_overlap is not None:
         check_number("--max-overlap", args.max_overlap, low=0.0, low_open=True, high=case.ball.radius, units="m")

@@ -22,7 +22,7 @@ from wear.app.commands.common import (
     progress_bar,
 )
 from wear.app.outputs.folder import output_folder
-from wear.app.outputs.repeat import RepeatWriter
+from wear.app.outputs.repeat import ENTRIES, RepeatWriter
 from wear.chain.repeat import repeat
 
 DEFAULT_OUT = "impactwear-repeat"
@@ -104,7 +104,7 @@ def main(args: argparse.Namespace) -> int:
         return print_default(args, "repeat", case)
     total = case.repeat.impacts
     bar = progress_bar(total, "impactwear repeat", "impact", args.quiet)
-    with output_folder(args.out, "repeat") as out, bar as update:
+    with output_folder(args.out, "repeat", ENTRIES) as out, bar as update:
         writer = RepeatWriter(out, case.repeat.save_every)
         with collect_notes() as notes:
             result = repeat(case, progress=lambda done, _total: update(done), on_computed=writer.on_computed)

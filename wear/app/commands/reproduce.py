@@ -12,7 +12,7 @@ import sys
 
 from wear.app.commands.common import path_option
 from wear.app.outputs.folder import check_writable_folder
-from wear.app.reproduce.run import FIGURES, reproduce
+from wear.app.reproduce.run import FIGURES, check_outputs, reproduce
 
 HELP = "recompute the paper's figures (PNG) from this toolkit and write reproduce.md"
 
@@ -31,6 +31,7 @@ def main(args: argparse.Namespace) -> int:
     if unknown:
         raise ValueError(f"--only={unknown[0]!r} is not a figure: choose from {', '.join(FIGURES)}")
     check_writable_folder(args.out)
+    check_outputs(args.out, args.only or list(FIGURES))
 
     def progress(name: str) -> None:
         if not args.quiet:

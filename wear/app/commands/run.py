@@ -21,7 +21,7 @@ from wear.app.commands.common import (
     progress_bar,
 )
 from wear.app.outputs.folder import check_output_folder
-from wear.app.outputs.run import write_run
+from wear.app.outputs.run import ENTRIES, write_run
 from wear.chain.single import STAGES, run
 
 DEFAULT_OUT = "impactwear-run"
@@ -79,7 +79,7 @@ def main(args: argparse.Namespace) -> int:
     case = case_from_args(args, "run")  # a malformed case raises ValueError here, before any output
     if args.print_default:
         return print_default(args, "run", case)
-    check_output_folder(args.out, "run")
+    check_output_folder(args.out, "run", ENTRIES)
     with progress_bar(len(BAR_STAGES), "impactwear run", "stage", args.quiet) as bar, collect_notes() as notes:
         started: list[str] = []
 

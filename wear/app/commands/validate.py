@@ -13,9 +13,9 @@ import sys
 from pathlib import Path
 
 from wear.app.commands.common import path_option
-from wear.app.outputs.folder import check_writable_folder
+from wear.app.outputs.folder import check_named_file, check_writable_folder
 from wear.app.validation.checks import GROUPS
-from wear.app.validation.runner import render_report, run_validation, write_report
+from wear.app.validation.runner import HEADER, render_report, run_validation, write_report
 
 HELP = "run every validation check (contact, fem, wear) and write validation.md; exit 1 if any fails"
 
@@ -60,7 +60,9 @@ def main(args: argparse.Namespace) -> int:
     path = Path(args.report) if args.report else Path(args.out) / "validation.md"
     if path.is_dir():
         raise ValueError(f"--report={args.report!r} is a folder: give the report's file name (e.g. validation.md)")
-    check_writable_folder(path.parent, "--report" if args.report else "--out")
+    option = "--report" if args.report else "--out"
+    check_writable_folder(path.parent, option)
+    check_named_file(path, "validate", HEADER, f"{option}={args.report or args.out!r}")
     result = run_validation(quick=args.quick, only=args.only, progress=progress)
     command = "impactwear validate" + (" --quick" if args.quick else "")
     command += "".join(f" --only {shlex.quote(s)}" for s in args.only or ())

@@ -16,7 +16,10 @@ from wear.app.outputs.writer import versions, write_rows, write_summary, write_t
 from wear.case import TABLES, dump_case
 from wear.chain.calibrate import CalibrationResult
 
-__all__ = ["write_calibration", "CASE_TABLES"]
+__all__ = ["write_calibration", "CASE_TABLES", "ENTRIES"]
+
+#: What ``impactwear calibrate`` writes in its folder (checked against the folder before any work).
+ENTRIES = ("calibration.json", "calibration.csv", "calibration.png", "calibrated.toml")
 
 #: The tables of calibrated.toml: every case table but [calibration] (its data file is not part of the result).
 CASE_TABLES = tuple(t for t in TABLES if t != "calibration")
@@ -26,7 +29,7 @@ def write_calibration(result: CalibrationResult, out: str | os.PathLike) -> dict
     """Write the output folder of ``result`` atomically; returns the summary."""
     d = result.data
     summary = {**result.summary(), "case": result.case.to_dict(CASE_TABLES), "versions": versions()}
-    with output_folder(out, "calibrate") as tmp:
+    with output_folder(out, "calibrate", ENTRIES) as tmp:
         summary = write_summary(tmp / "calibration.json", summary)
         fitted = d.fitted & ~np.isin(np.arange(d.angle.size), result.left_out)
         header = [

@@ -29,7 +29,30 @@ from wear.app.outputs.folder import output_folder
 from wear.app.outputs.writer import write_mesh, write_pvd, write_rows, write_summary
 from wear.erosion import ErosionRun
 
-__all__ = ["write_erosion", "write_erosion_angles", "surface_grid_mesh", "EROSION_COLUMNS", "TABLE_COLUMNS"]
+__all__ = [
+    "write_erosion",
+    "write_erosion_angles",
+    "surface_grid_mesh",
+    "ENTRIES",
+    "EROSION_COLUMNS",
+    "TABLE_COLUMNS",
+]
+
+#: What ``impactwear erode`` may write in its folder, with and without ``--angles`` (checked against the folder
+#: before any work).
+ENTRIES = (
+    "erosion.csv",
+    "response_table.csv",
+    "surface.vtu",
+    "frames",
+    "erosion.pvd",
+    "erosion.png",
+    "surface.png",
+    "summary.json",
+    "angle_*",
+    "erosion_vs_angle.csv",
+    "erosion_vs_angle.png",
+)
 
 EROSION_COLUMNS = [
     "time_s",
@@ -71,7 +94,7 @@ def surface_grid_mesh(x: np.ndarray, y: np.ndarray, surface: np.ndarray, wear: n
 def write_erosion(run: ErosionRun, out: str | os.PathLike, notes: Sequence[str] = ()) -> dict:
     """Write one erosion, with its series and figures, as the output folder ``out``; returns the summary (with
     ``notes``: what the run said, e.g. its warnings)."""
-    with output_folder(out, "erode") as tmp:
+    with output_folder(out, "erode", ENTRIES) as tmp:
         return _write_files(run, tmp, series=True, notes=notes)
 
 
@@ -118,7 +141,7 @@ def write_erosion_angles(runs: list[ErosionRun], out: str | os.PathLike) -> list
     """Write one erosion per stream angle into ``out/angle_<deg>/`` and ``erosion_vs_angle.csv`` and ``.png``;
     returns the rows (angle deg, erosion rate kg/kg, mass loss kg)."""
     rows = []
-    with output_folder(out, "erode") as tmp:
+    with output_folder(out, "erode", ENTRIES) as tmp:
         for run in runs:
             a = run.result.stream.angle
             (tmp / f"angle_{a:g}").mkdir()

@@ -13,13 +13,25 @@ from wear.app.outputs.folder import output_folder
 from wear.app.outputs.writer import write_mesh, write_rows, write_summary
 from wear.chain.indent import IndentRun
 
-__all__ = ["write_indent"]
+__all__ = ["ENTRIES", "write_indent"]
+
+#: What ``impactwear indent`` may write in its folder (checked against the folder before any work).
+ENTRIES = (
+    "force_overlap.csv",
+    "pressure.csv",
+    "residual_depth.csv",
+    "plate.vtu",
+    "pressure.png",
+    "force_overlap.png",
+    "plastic_zone.png",
+    "summary.json",
+)
 
 
 def write_indent(run: IndentRun, out: str | os.PathLike, figures: bool = True, notes: Sequence[str] = ()) -> dict:
     """Write the outputs of ``run`` as the output folder ``out``; returns the summary (with ``notes``: what the run
     said, e.g. its warnings)."""
-    with output_folder(out, "indent") as tmp:
+    with output_folder(out, "indent", ENTRIES) as tmp:
         return _write_files(run, tmp, figures, notes)
 
 

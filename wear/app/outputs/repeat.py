@@ -27,7 +27,10 @@ from wear.case import JOBS
 from wear.chain.records import RepeatResult
 from wear.integrate import WearMap
 
-__all__ = ["RepeatWriter", "wear_map_arrays"]
+__all__ = ["ENTRIES", "RepeatWriter", "wear_map_arrays"]
+
+#: What ``impactwear repeat`` may write in its folder (checked against the folder before any work).
+ENTRIES = ("frames", "repeat.pvd", "repeat.csv", "wear_map.npz", "summary.json", "repeat.png")
 
 
 def wear_map_arrays(wm: WearMap) -> dict[str, np.ndarray]:

@@ -24,7 +24,23 @@ from wear.app.outputs.writer import versions, write_csv, write_mesh, write_npz, 
 from wear.chain.single import RunResult
 from wear.surface import deform_plate_mesh, plate_block_mesh, surface_mesh
 
-__all__ = ["write_run", "history_columns", "HISTORY_COLUMNS", "PRESSURE_ABOUT"]
+__all__ = ["write_run", "history_columns", "ENTRIES", "HISTORY_COLUMNS", "PRESSURE_ABOUT"]
+
+#: What ``impactwear run`` may write in its folder (checked against the folder before any work).
+ENTRIES = (
+    "summary.json",
+    "history.csv",
+    "pressure.npz",
+    "surface.vtu",
+    "plate.vtu",
+    "plate_fe.vtu",
+    "force_overlap.png",
+    "pressure_profiles.png",
+    "wear_map.png",
+    "cross_sections.png",
+    "plastic_zone.png",
+    "surface_3d.png",
+)
 
 #: What pressure.npz holds (stored in it as ``about``).
 PRESSURE_ABOUT = (
@@ -77,7 +93,7 @@ def write_run(
     case = result.case
     times = dict(result.stage_times)
     notes = list(notes)
-    with output_folder(out, "run") as tmp:
+    with output_folder(out, "run", ENTRIES) as tmp:
         notify("meshes")
         t0 = time.perf_counter()
         write_csv(tmp / "history.csv", history_columns(result.impact.history))

@@ -10,6 +10,7 @@ get the permissions of the user's umask (:func:`permissions`), as ``open`` would
 from __future__ import annotations
 
 import csv
+import errno
 import json
 import math
 import os
@@ -30,6 +31,7 @@ from wear.app.outputs.fields import named_mesh
 
 __all__ = [
     "SCHEMA_VERSION",
+    "WRITE_ERRORS",
     "atomic_write",
     "is_temporary",
     "permissions",
@@ -45,6 +47,11 @@ __all__ = [
     "write_summary",
     "write_text",
 ]
+
+
+#: The errors of a write the file system refuses (not a fault of the program): a full disk, a quota, a file too
+#: large, a read-only file system, a forbidden folder.
+WRITE_ERRORS = frozenset({errno.ENOSPC, errno.EDQUOT, errno.EFBIG, errno.EROFS, errno.EACCES, errno.EPERM})
 
 
 def _umask() -> int:
@@ -92,8 +99,10 @@ def atomic_write(
                     os.fsync(f.fileno())
         os.chmod(tmp, permissions()[0])
         os.replace(tmp, path)
-    except BaseException:
+    except BaseException as exc:
         Path(tmp).unlink(missing_ok=True)
+        if isinstance(exc, OSError) and exc.filename is None:
+            exc.filename = os.fspath(path)  # a failed write names the file, as a failed open does
         raise
     return path
 

@@ -10,11 +10,12 @@ import warnings
 from collections.abc import Callable
 from pathlib import Path
 
-from wear.app.outputs.writer import write_text
+from wear.app.outputs.folder import check_named_file
+from wear.app.outputs.writer import WRITE_ERRORS, write_text
 from wear.app.reproduce import coupled, fe, laws, paper
-from wear.app.reproduce.report import FigureReport, render_markdown
+from wear.app.reproduce.report import HEADER, FigureReport, render_markdown
 
-__all__ = ["FIGURES", "reproduce"]
+__all__ = ["FIGURES", "check_outputs", "reproduce"]
 
 #: name → function(out_dir, quick) -> FigureReport, in the order of reproduce.md.
 FIGURES: dict[str, Callable[[Path, bool], FigureReport]] = {
@@ -23,6 +24,23 @@ FIGURES: dict[str, Callable[[Path, bool], FigureReport]] = {
     **coupled.FIGURES,
     **laws.FIGURES,
 }
+
+
+def check_outputs(out: str | os.PathLike, names: list[str]) -> None:
+    """Before any work: ``out/reproduce.md`` is absent or impactwear's, and so are the figures ``names`` will
+    write (``out/figures/NAME.png``: impactwear's when reproduce.md is); ValueError naming ``--out`` otherwise."""
+    out = Path(out)
+    shown = f"--out={str(out)!r}"
+    report = out / "reproduce.md"
+    check_named_file(report, "reproduce", HEADER, shown)
+    if report.exists():
+        return
+    taken = [f"figures/{n}.png" for n in names if (out / "figures" / f"{n}.png").exists()]
+    if taken:
+        raise ValueError(
+            f"{shown} holds {taken[0]!r}, which impactwear did not write (there is no reproduce.md of "
+            "impactwear's beside it) and `impactwear reproduce` would replace: move it, or give another folder"
+        )
 
 
 def reproduce(out: str | os.PathLike, *, quick: bool = False, only=None, progress=None) -> list[FigureReport]:
@@ -48,6 +66,8 @@ def reproduce(out: str | os.PathLike, *, quick: bool = False, only=None, progres
                 warnings.filterwarnings("ignore", message="elastic ball: represented by a rigid sphere")
                 rep = FIGURES[name](out / "figures", quick)
         except Exception as exc:  # one failed figure (e.g. an FE run that does not converge) is reported
+            if isinstance(exc, OSError) and exc.errno in WRITE_ERRORS:  # a folder that takes no figure: stop
+                raise
             rep = FigureReport(name, name, missing=f"failed: {type(exc).__name__}: {exc}")
         rep.seconds = time.perf_counter() - start
         reports.append(rep)

@@ -103,7 +103,7 @@ def run_sweep(
     for name, value in (("workers", workers), ("dask_local", dask_local)):
         if value is not None and (isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= 4096):
             raise ValueError(f"{name}={value!r} is out of range: must be an integer in [1, 4096] processes")
-    check_output_folder(out, "sweep")
+    check_output_folder(out, "sweep", ENTRIES)
     # an existing cluster that cannot be reached is refused before the folder is made
     client = None if scheduler is None else dask_client(None, scheduler)
     try:
