@@ -110,6 +110,17 @@ def test_an_override_is_checked_and_names_the_key():
         apply_override(Case(), "impact.spede=3")
 
 
+def test_an_integer_key_takes_a_whole_number_written_as_a_float():
+    """TOML reads ``1e3`` and ``5.0`` as floats: a whole number is the integer the user meant, a fraction is refused."""
+    c = parse_case("[erosion]\nsamples = 1e3\n", "erode")
+    assert c.erosion.samples == 1000 and isinstance(c.erosion.samples, int)
+    assert apply_override(Case(), "repeat.impacts=5.0").repeat.impacts == 5
+    with pytest.raises(ValueError, match=r"erosion.samples=2.5 is not an integer"):
+        apply_override(Case(), "erosion.samples=2.5")
+    with pytest.raises(ValueError, match=r"erosion.samples=1e\+06 is out of range"):
+        apply_override(Case(), "erosion.samples=1e6")
+
+
 def test_inf_yield_strength_means_never_yields():
     """A job whose default plate yields can still be given an elastic plate in TOML: yield_strength = inf."""
     c = parse_case("[plate]\nyield_strength = inf\n", "indent")

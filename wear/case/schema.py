@@ -27,6 +27,11 @@ from contact.checks import check_bool, check_choice, check_number, fmt_value
 __all__ = ["Key", "Table", "key"]
 
 
+def _integral_float(value: Any) -> bool:
+    """True for a finite float with no fractional part (``1e6``, ``5.0``), which an integer key accepts."""
+    return isinstance(value, (float, np.floating)) and math.isfinite(value) and float(value).is_integer()
+
+
 @dataclass(frozen=True)
 class Key:
     """One case key: ``type`` (float, int, str or bool), ``default``, one-line ``doc`` (what the quantity is),
@@ -60,6 +65,9 @@ class Key:
             if not isinstance(value, str):
                 raise ValueError(f"{name}={fmt_value(value)} is not a string: {self.doc}")
             return value
+        if self.type is int and _integral_float(value):
+            # TOML reads 1e6 as a float; a whole number written so is the integer the user meant
+            value = int(value)
         if self.type is int and (isinstance(value, bool) or not isinstance(value, (int, np.integer))):
             raise ValueError(
                 f"{name}={fmt_value(value)} is not an integer: {self.doc} must be an integer {self.valid_range()}"
