@@ -10,12 +10,17 @@
 - **No runaway italics**: in the Markdown pages, an emphasis opened inside a word (``8G*a`` reads ``*`` as an
   opening delimiter, which italicises everything up to the next ``*``), or one longer than a sentence, is reported
   (write ``8G\\*a``).
+- **No build machine in the pages**: no page shows the absolute path of the source tree, the temporary folder
+  (``/tmp/``) or the home folder, a Python warning (``...Warning: ...``) or a traceback: the examples' output
+  (what they print, and what they write to stderr) is part of the gallery pages.
+- **A figure in every example**: each gallery page (when the gallery is run) shows at least one figure.
 """
 
 from __future__ import annotations
 
 import html
 import re
+import tempfile
 from pathlib import Path
 
 from markdown_it import MarkdownIt
@@ -91,6 +96,51 @@ def _check_emphasis(app) -> None:
             logger.warning(f"{page.relative_to(srcdir)}, {problem}")
 
 
+#: A Python warning as ``warnings`` prints it (``file.py:12: UserWarning: text``), or a traceback.
+_PYTHON_WARNING = re.compile(r"\b[A-Z]\w*Warning: |Traceback \(most recent call last\)")
+
+
+def _machine_paths(app) -> list[str]:
+    """Paths of the build machine that no page may show: the source tree, the temporary folder, the home folder."""
+    paths = {str(Path(app.srcdir).resolve().parent), "/tmp/", str(Path(tempfile.gettempdir()).resolve()) + "/"}
+    home = Path.home().resolve()
+    if home != home.parent:  # a home folder "/" is in every path
+        paths.add(str(home) + "/")
+    return sorted(paths)
+
+
+def _check_machine_text(app, pages: list[Path]) -> None:
+    outdir = Path(app.outdir)
+    paths = _machine_paths(app)
+    for page in pages:
+        text = html.unescape(page.read_text(encoding="utf-8"))
+        found = [p for p in paths if p in text]
+        if found:
+            logger.warning(f"{page.relative_to(outdir)} shows a path of the build machine: {found[0]!r}")
+        warning = _PYTHON_WARNING.search(text)
+        if warning:
+            line = text[text.rfind("\n", 0, warning.start()) + 1 : text.find("\n", warning.end())]
+            logger.warning(f"{page.relative_to(outdir)} shows a Python warning or traceback: {line.strip()[:200]!r}")
+
+
+#: An image the gallery's matplotlib scraper put on an example's page.
+_GALLERY_FIGURE = re.compile(r"<img\b[^>]*\bclass\s*=\s*\"[^\"]*sphx-glr-(?:single|multi)-img")
+
+
+def _check_gallery_figures(app) -> None:
+    conf = getattr(app.config, "sphinx_gallery_conf", None) or {}
+    if str(conf.get("plot_gallery", "True")) == "False":  # the gallery shown without running the examples
+        return
+    outdir = Path(app.outdir)
+    dirs = conf.get("gallery_dirs", [])
+    for gallery in [dirs] if isinstance(dirs, str) else dirs:
+        for page in sorted((outdir / gallery).glob("*.html")):
+            if page.name in ("index.html", "sg_execution_times.html"):
+                continue
+            if not _GALLERY_FIGURE.search(page.read_text(encoding="utf-8")):
+                logger.warning(f"{page.relative_to(outdir)}: the example shows no figure")
+
+
 def check_build(app, exception: Exception | None) -> None:
     """Run the checks on a finished HTML build."""
     if exception is not None or app.builder.format != "html":
@@ -99,6 +149,8 @@ def check_build(app, exception: Exception | None) -> None:
     _check_offline_math(app, pages)
     _check_api_summaries(app, pages)
     _check_emphasis(app)
+    _check_machine_text(app, pages)
+    _check_gallery_figures(app)
 
 
 def setup(app) -> dict:
