@@ -83,7 +83,7 @@ for name, value in truth.items():
 # -------------------------------
 # One curve per speed (the fitted law through the calibration's own impacts), the data as markers.
 
-fig, ax = plt.subplots(figsize=(6.0, 4.0))
+fig, ax = plt.subplots(figsize=(7.0, 4.0))
 for speed in np.unique(data.speed):
     rows = np.flatnonzero(data.speed == speed)
     order = rows[np.argsort(data.angle[rows])]
@@ -93,5 +93,5 @@ ax.set_yscale("log")
 ax.set_xlabel("impact angle from the normal (deg)")
 ax.set_ylabel("erosion ratio (kg/kg)")
 ax.set_title("DNV law fitted to the sample data (markers)", fontsize=10)
-ax.legend(fontsize=8)
+ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.0, 1.0))
 fig.tight_layout()

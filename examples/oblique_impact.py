@@ -98,8 +98,8 @@ write_csv(
 
 fig, ax = plt.subplots(figsize=(5.5, 3.6))
 ax.plot(h.t * 1e6, h.normal_force, label="normal force")
-ax.plot(h.t * 1e6, h.tangential_force, label="tangential force")
-ax.plot(h.t * 1e6, mu * h.normal_force, "k:", lw=1, label="μ × normal force")
+ax.plot(h.t * 1e6, np.abs(h.tangential_force), label="|tangential force| (it opposes the slip)")
+ax.plot(h.t * 1e6, mu * h.normal_force, "k:", lw=1, label="μ × normal force (gross sliding)")
 ax.set(xlabel="time (µs)", ylabel="force (N)", title="alumina on glass, 3.9 m/s at 30°")
 ax.legend()
 fig.tight_layout()

@@ -69,8 +69,9 @@ plot_repeat(
 # %%
 # Dent and restitution per impact
 # -------------------------------
-# The first impact dents the plate; the later ones rebound elastically (normal restitution near 1) and leave the
-# dent as it was. ``repeat.png`` in the output folder has these and the plastic work, pressure and worn volume.
+# The first impact dents the plate; each of the next ones adds less plastic strain, until the plate shakes down: the
+# impacts rebound elastically (normal restitution near 1) and the dent stops growing. ``repeat.png`` in the output
+# folder has these and the plastic work, pressure and worn volume.
 
 n = np.asarray(columns["impact_last"])
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(9.0, 3.4))

@@ -30,7 +30,9 @@ def _warnings(caplog) -> list[str]:
 
 
 def test_clean_pages_pass(tmp_path, caplog):
-    app, pages = _site(tmp_path, {"index.html": "impact at 30 deg", "auto_examples/a.html": FIGURE})
+    doctest = "<pre>&gt;&gt;&gt; Case().with_(impact={'angle': 120.0})\nTraceback (most recent call last):</pre>"
+    pages = {"index.html": "impact at 30 deg", "api.html": doctest, "auto_examples/a.html": FIGURE}
+    app, pages = _site(tmp_path, pages)
     build_checks._check_machine_text(app, pages)
     build_checks._check_gallery_figures(app)
     assert _warnings(caplog) == []
@@ -43,7 +45,8 @@ def test_clean_pages_pass(tmp_path, caplog):
         f"wrote {Path(tempfile.gettempdir()).resolve()}/impactwear-gallery-1/x.csv",
         "/tmp/abc/summary.json",
         "plate.py:32: UserWarning: elastic ball: represented by a rigid sphere",
-        "Traceback (most recent call last):",
+        '<div class="sphx-glr-script-out highlight-none"><div class="highlight"><pre>Traceback (most recent call last):'
+        "</pre></div></div>",
     ],
 )
 def test_machine_path_or_warning_is_reported(tmp_path, caplog, text):

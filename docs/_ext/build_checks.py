@@ -11,8 +11,8 @@
   opening delimiter, which italicises everything up to the next ``*``), or one longer than a sentence, is reported
   (write ``8G\\*a``).
 - **No build machine in the pages**: no page shows the absolute path of the source tree, the temporary folder
-  (``/tmp/``) or the home folder, a Python warning (``...Warning: ...``) or a traceback: the examples' output
-  (what they print, and what they write to stderr) is part of the gallery pages.
+  (``/tmp/``) or the home folder, or a Python warning (``...Warning: ...``), and no example's output a traceback:
+  what the examples print, and what they write to stderr, is part of the gallery pages.
 - **A figure in every example**: each gallery page (when the gallery is run) shows at least one figure.
 """
 
@@ -96,8 +96,12 @@ def _check_emphasis(app) -> None:
             logger.warning(f"{page.relative_to(srcdir)}, {problem}")
 
 
-#: A Python warning as ``warnings`` prints it (``file.py:12: UserWarning: text``), or a traceback.
-_PYTHON_WARNING = re.compile(r"\b[A-Z]\w*Warning: |Traceback \(most recent call last\)")
+#: A Python warning as ``warnings`` prints it (``file.py:12: UserWarning: text``).
+_PYTHON_WARNING = re.compile(r"\b[A-Z]\w*Warning: ")
+#: A traceback (a doctest of an error shows one on purpose: only what an example printed is searched).
+_TRACEBACK = re.compile(r"Traceback \(most recent call last\)")
+#: What an example printed: sphinx-gallery's output blocks.
+_SCRIPT_OUTPUT = re.compile(r"<div class=\"sphx-glr-script-out.*?</pre>", re.DOTALL)
 
 
 def _machine_paths(app) -> list[str]:
@@ -117,9 +121,11 @@ def _check_machine_text(app, pages: list[Path]) -> None:
         found = [p for p in paths if p in text]
         if found:
             logger.warning(f"{page.relative_to(outdir)} shows a path of the build machine: {found[0]!r}")
-        warning = _PYTHON_WARNING.search(text)
+        printed = "\n".join(_SCRIPT_OUTPUT.findall(text))
+        warning = _PYTHON_WARNING.search(text) or _TRACEBACK.search(printed)
         if warning:
-            line = text[text.rfind("\n", 0, warning.start()) + 1 : text.find("\n", warning.end())]
+            where = warning.string
+            line = where[where.rfind("\n", 0, warning.start()) + 1 : where.find("\n", warning.end())]
             logger.warning(f"{page.relative_to(outdir)} shows a Python warning or traceback: {line.strip()[:200]!r}")
 
 
