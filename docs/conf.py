@@ -18,10 +18,12 @@ shows the gallery without running the examples.
 
 from __future__ import annotations
 
+import atexit
 import os
 import re
 import shutil
 import sys
+import tempfile
 from pathlib import Path
 
 DOCS = Path(__file__).resolve().parent
@@ -189,6 +191,11 @@ def _copy_examples() -> None:
 
 
 _copy_examples()
+# The examples write their files under IMPACTWEAR_EXAMPLE_OUT: a temporary folder, out of the docs tree (they print
+# no path, so no page shows one of the build machine).
+_EXAMPLE_OUT = tempfile.mkdtemp(prefix="impactwear-gallery-")
+atexit.register(shutil.rmtree, _EXAMPLE_OUT, ignore_errors=True)
+os.environ.setdefault("IMPACTWEAR_EXAMPLE_OUT", _EXAMPLE_OUT)
 
 sphinx_gallery_conf = {
     "examples_dirs": os.path.relpath(GALLERY_SRC, DOCS),
@@ -196,11 +203,10 @@ sphinx_gallery_conf = {
     "filename_pattern": r".*\.py$",  # run every example
     "ignore_pattern": r"__init__\.py",
     "plot_gallery": "True" if GALLERY_RUN else "False",
-    "reset_argv": "gallery_support.reset_argv",  # --out <temporary folder>, and the script's __doc__/__file__
-    "image_scrapers": ("matplotlib", "gallery_support.output_figures"),  # open figures, and the PNGs written
+    "image_scrapers": ("matplotlib",),  # the figures an example's cell leaves open, under that cell
     "reset_modules": ("matplotlib", "gallery_support.guard_exit"),  # sys.exit in an example must not end the build
     "reset_modules_order": "both",
-    "within_subsection_order": "FileNameSortKey",
+    "within_subsection_order": "gallery_support.example_order",  # the tutorial first
     "download_all_examples": False,
     "remove_config_comments": True,
     "abort_on_example_error": False,  # every failing example is reported, then the build fails

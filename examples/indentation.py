@@ -4,14 +4,19 @@
 Press a rigid 10 mm ball into a steel plate past first yield and unload (fem.indent).
 
 Prints the FE first yield against F_c (errata Eq. 18, exact C(ν) and the paper's C = 1.6), the force at the
-maximum, the residual dent, and writes the F–δ table, the figures and the deformed mesh into --out.
-IMPACTWEAR_QUICK=1 uses a coarse mesh and few increments (seconds, not validation quality).
+maximum, the residual dent, and writes the F–δ table, the figures and the deformed mesh into ``indentation/`` of the
+folder named by the environment variable ``IMPACTWEAR_EXAMPLE_OUT`` (default: the current folder).
+``IMPACTWEAR_QUICK=1`` uses a coarse mesh and few increments (seconds, not validation quality).
 """
 
-import argparse
+# %%
+# Load and unload the plate
+# -------------------------
+
 import os
 from pathlib import Path
 
+import matplotlib.pyplot as plt
 import numpy as np
 
 import fem
@@ -20,12 +25,9 @@ from contact.theory import PAPER_YIELD_COEFFICIENT, first_yield
 from wear.app.figures.indent import write_figures
 from wear.app.outputs.writer import write_mesh
 
-parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-parser.add_argument("--out", default="indentation-example", help="output folder")
-args = parser.parse_args()
+OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "indentation"  # where the outputs go
+OUT.mkdir(parents=True, exist_ok=True)
 quick = os.environ.get("IMPACTWEAR_QUICK") == "1"
-out = Path(args.out)
-out.mkdir(parents=True, exist_ok=True)
 
 radius = 10e-3  # m
 plate = Material(E=210e9, nu=0.3, density=7850.0, yield_strength=210e6, name="steel")
@@ -48,13 +50,34 @@ print(f"residual dent on the axis {res.residual_depth[0]:.3e} m")
 law = res.force_law()
 print(f"force law: residual overlap {law.residual_overlap[0]:.3e} m after δ_max {law.unloading_max_overlap[0]:.3e} m")
 
+# %%
+# Write the outputs
+# -----------------
+# The F–δ table, the plate mesh with its fields (open it in ParaView) and the toolkit's figures (PNG files:
+# pressure, force–overlap, plastic zone).
+
 np.savetxt(
-    out / "force_overlap.csv",
+    OUT / "force_overlap.csv",
     np.column_stack([res.overlap, res.force, res.contact_radius]),
     delimiter=",",
-    header="overlap_m,normal_force_N,contact_radius_m",
+    header="overlap_m,force_N,contact_radius_m",
     comments="",
 )
-write_mesh(out / "plate.vtu", res.to_meshio())  # field names with units, as impactwear indent writes them
-write_figures(res, out)
-print(f"outputs in {out}")
+write_mesh(OUT / "plate.vtu", res.to_meshio())  # field names with units, as impactwear indent writes them
+print([p.name for p in write_figures(res, OUT)])
+
+# %%
+# Force against overlap
+# ---------------------
+# The FE loading and unloading against Hertz's elastic curve F = (4/3) E* √R δ^(3/2) (errata Eq. 4); the plate
+# leaves Hertz's curve after first yield and unloads to a residual overlap (the dent).
+
+d = np.r_[0.0, res.overlap]
+dd = np.linspace(0.0, res.overlap.max(), 200)
+fig, ax = plt.subplots(figsize=(5.5, 4.0))
+ax.plot(d * 1e6, np.r_[0.0, res.force], "o-", ms=3, label="FE plate")
+ax.plot(dd * 1e6, 4.0 / 3.0 * e_star * np.sqrt(radius) * dd**1.5, "--", label="Hertz (elastic)")
+ax.plot(fy.overlap * 1e6, fy.force, "k*", ms=9, label="FE first yield")
+ax.set(xlabel="overlap δ (µm)", ylabel="normal force F (N)", ylim=(0.0, 1.1 * res.force.max()))
+ax.legend()
+fig.tight_layout()

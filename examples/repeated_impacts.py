@@ -6,25 +6,32 @@ Repeated normal impacts of an alumina ball at one spot on a Ti-6Al-4V plate, bel
 At V_n = 2.2 V_y (Thornton's yield speed) the first impact yields the plate; the dent it leaves and its residual
 stresses make the later impacts elastic (shakedown). Prints one line per computed impact (restitution, peak
 force and pressure, plastic strain increment, dent) and the impact at which the plate shook down, and writes
-repeat.csv and repeat.png into --out. IMPACTWEAR_QUICK=1 uses a coarser FE mesh (seconds per impact, not
-validation quality).
+repeat.csv and repeat.png into ``repeated_impacts/`` of the folder named by the environment variable
+``IMPACTWEAR_EXAMPLE_OUT`` (default: the current folder). ``IMPACTWEAR_QUICK=1`` uses a coarser FE mesh (seconds
+per impact, not validation quality).
 """
 
-import argparse
+# %%
+# Impacts at one site, wear off
+# -----------------------------
+# The toolkit's statements of its modelling assumptions (Python warnings) are collected and printed as notes, as
+# ``impactwear repeat`` does.
+
 import os
+import warnings
 from pathlib import Path
+
+import matplotlib.pyplot as plt
+import numpy as np
 
 from contact.theory import yield_velocity
 from wear import Case, repeat
 from wear.app.figures.repeat import plot_repeat
 from wear.app.outputs.writer import write_csv
 
-parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-parser.add_argument("--out", default="repeated-impacts-example", help="output folder")
-args = parser.parse_args()
+OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "repeated_impacts"  # where the outputs go
+OUT.mkdir(parents=True, exist_ok=True)
 quick = os.environ.get("IMPACTWEAR_QUICK") == "1"
-out = Path(args.out)
-out.mkdir(parents=True, exist_ok=True)
 
 case = Case()
 v_y = yield_velocity(case.ball.radius, case.ball.material(), case.plate.material())
@@ -35,7 +42,11 @@ case = case.with_(
     output={"figures": False, "render": False},
     repeat={"impacts": 4 if quick else 8, "geometry_update": True, "max_plastic_impacts": 4 if quick else 8},
 )
-result = repeat(case)
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    result = repeat(case)
+for note in dict.fromkeys(str(w.message) for w in caught):
+    print(f"note: {note}")
 
 print(f"V_y = {v_y:.4g} m/s, V_n = {2.2 * v_y:.4g} m/s")
 for row in result.records:
@@ -46,10 +57,26 @@ for row in result.records:
             f"dent {row.dent_depth * 1e6:.3f} µm"
         )
 print(f"shakedown at impact {result.shakedown_impact}" if result.shakedown_impact else "no shakedown")
-write_csv(out / "repeat.csv", result.columns())
+columns = result.columns()
+write_csv(OUT / "repeat.csv", columns)
 plot_repeat(
-    result.columns(),
-    out / "repeat.png",
+    columns,
+    OUT / "repeat.png",
     title=f"{case.repeat.impacts} impacts at one site (no wear)",
     shakedown_impact=result.shakedown_impact,
 )
+
+# %%
+# Dent and restitution per impact
+# -------------------------------
+# The first impact dents the plate; each of the next ones adds less plastic strain, until the plate shakes down: the
+# impacts rebound elastically (normal restitution near 1) and the dent stops growing. ``repeat.png`` in the output
+# folder has these and the plastic work, pressure and worn volume.
+
+n = np.asarray(columns["impact_last"])
+fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(9.0, 3.4))
+ax1.plot(n, np.asarray(columns["dent_depth_m"]) * 1e6, "o-")
+ax1.set(xlabel="impact", ylabel="dent depth (µm)")
+ax2.plot(n, columns["normal_restitution"], "o-")
+ax2.set(xlabel="impact", ylabel="normal restitution $e_n$")
+fig.tight_layout()

@@ -7,11 +7,15 @@ A rigid 10 mm ball is pressed into an elastic steel plate without friction, then
 μp. On a compressible plate the solved contact's pressure shifts towards the trailing edge, in proportion to the
 coupling β = (1 − 2ν)/(2(1 − ν)) (Johnson 1985 §7), and the surface yields earlier. Prints, for ν = 0.3 and 0.45,
 the pressure's centroid, its shift per unit β, and the p0/Y of the largest surface von Mises stress
-(fem.solid.surface_stress); writes the surface von Mises stress along the plane of incidence to --out/surface.csv and a
-figure. IMPACTWEAR_QUICK=1: no edge band (coarser, faster).
+(fem.solid.surface_stress); writes the surface von Mises stress along the plane of incidence to ``surface.csv`` in
+``sliding_surface_yield/`` of the folder named by the environment variable ``IMPACTWEAR_EXAMPLE_OUT`` (default: the
+current folder). ``IMPACTWEAR_QUICK=1``: no edge band (coarser, faster).
 """
 
-import argparse
+# %%
+# Press, then slide, on two plates
+# --------------------------------
+
 import math
 import os
 from pathlib import Path
@@ -23,12 +27,9 @@ import fem
 from contact import Material
 from fem.core.plasticity import von_mises
 
-parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-parser.add_argument("--out", default="sliding-yield-example", help="output folder")
-args = parser.parse_args()
+OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "sliding_surface_yield"  # where the outputs go
+OUT.mkdir(parents=True, exist_ok=True)
 quick = os.environ.get("IMPACTWEAR_QUICK") == "1"
-out = Path(args.out)
-out.mkdir(parents=True, exist_ok=True)
 
 radius, mu, a_max = 10e-3, 0.5, 1e-4  # m, -, m
 overlap = a_max**2 / radius  # m
@@ -74,7 +75,12 @@ for nu, beta, centroid, ratio, xw, yw in rows:
     )
 print("  Hamilton (1983), nu = 0.3, the Hertz pressure and traction mu p: p0/Y = 1.045 at x = -a, y = 0")
 
-with open(out / "surface.csv", "w") as fh:
+# %%
+# The surface stress along the plane of incidence
+# -----------------------------------------------
+# Largest at the trailing edge (x = −a), where the surface yields first.
+
+with open(OUT / "surface.csv", "w") as fh:
     fh.write("# surface von Mises stress / p0 along y = 0 after sliding at mu = 0.5 (rigid ball, elastic plate)\n")
     fh.write("nu,x_over_a,von_mises_over_p0\n")
     for nu, (xs, vm) in profiles.items():
@@ -87,5 +93,3 @@ ax.axvline(-1.0, color="0.6", lw=0.8)
 ax.set(xlabel="x / a (sliding towards +x)", ylabel="surface von Mises / p0", xlim=(-1.5, 1.5))
 ax.legend()
 fig.tight_layout()
-fig.savefig(out / "surface_von_mises.png", dpi=150)
-print(f"wrote {out / 'surface.csv'} and {out / 'surface_von_mises.png'}")

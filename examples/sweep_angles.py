@@ -1,43 +1,66 @@
 """A sweep over the impact angle
 =============================
 
-Run examples/sweep_angles.toml (impact stage, 17 angles) and print the rebound angles from results.csv.
-
-    python examples/sweep_angles.py --out DIR [--workers N]
-
-Equivalent to ``impactwear sweep examples/sweep_angles.toml --out DIR``; rerunning skips finished cases.
+Run a sweep spec (the impact stage at 17 angles: ``examples/sweep_angles.toml``) and read the rebound angles from
+its ``results.csv``. Equivalent to ``impactwear sweep examples/sweep_angles.toml --out sweep_angles``; rerunning
+skips finished cases. Writes into ``sweep_angles/`` of the folder named by the environment variable
+``IMPACTWEAR_EXAMPLE_OUT`` (default: the current folder). SI units; angles in degrees from the plate normal.
 """
 
-from __future__ import annotations
+# %%
+# The sweep spec and the run
+# --------------------------
+# A sweep spec names the stage, the base case (keys left out come from the default case) and the grid of keys.
+# The sweep runs its cases in worker processes: here it is run as the command ``impactwear sweep`` would be, in a
+# process of its own (a script that starts the workers itself must guard its code with
+# ``if __name__ == "__main__":``, as the workers import the script again).
 
-import argparse
 import csv
+import os
+import subprocess
 import sys
 from pathlib import Path
 
-from wear.app import cli
+import matplotlib.pyplot as plt
 
-HERE = Path(__file__).resolve().parent
+OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "sweep_angles"  # where the outputs go
+OUT.mkdir(parents=True, exist_ok=True)
 
+SPEC = """\
+[sweep]
+stage = "impact"
+description = "rebound angle, spin and sliding time vs impact angle (Kharaz et al. 2001 setup)"
 
-def main() -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default="sweep_angles", help="output folder")
-    parser.add_argument("--workers", default="2", help="local worker processes")
-    args = parser.parse_args()
-    status = cli.main(["sweep", str(HERE / "sweep_angles.toml"), "--out", args.out, "--workers", args.workers])
-    if status != 0:
-        return status
-    with open(Path(args.out) / "results.csv", newline="") as f:
-        rows = list(csv.DictReader(f))
-    print(f"{'angle (deg)':>12} {'rebound (deg)':>14} {'contact pt (deg)':>17} {'spin (rad/s)':>13}")
-    for r in rows:
-        print(
-            f"{float(r['impact.angle_deg']):12.1f} {float(r['rebound_angle_deg']):14.3f} "
-            f"{float(r['contact_point_rebound_angle_deg']):17.3f} {float(r['spin_rad_s']):13.2f}"
-        )
-    return 0
+[base]
+impact.speed = 3.9           # m/s
+impact.friction = 0.092
 
+[grid]
+"impact.angle" = [5, 10, 15, 20, 25, 30, 35, 40, 45, 50, 55, 60, 65, 70, 75, 80, 85]   # deg from the normal
+"""
+(OUT / "sweep_angles.toml").write_text(SPEC, encoding="utf-8")
+command = ["sweep", str(OUT / "sweep_angles.toml"), "--out", str(OUT / "run"), "--workers", "2", "--quiet"]
+subprocess.run([sys.executable, "-m", "wear.app.cli", *command], check=True)
 
-if __name__ == "__main__":
-    sys.exit(main())
+# %%
+# The results table
+# -----------------
+# ``results.csv``: one row per case, its grid keys and the stage's numbers.
+
+with open(OUT / "run" / "results.csv", newline="", encoding="utf-8") as f:
+    rows = list(csv.DictReader(f))
+print(f"{'angle (deg)':>12} {'rebound (deg)':>14} {'contact pt (deg)':>17} {'spin (rad/s)':>13}")
+for r in rows:
+    print(
+        f"{float(r['impact.angle_deg']):12.1f} {float(r['rebound_angle_deg']):14.3f} "
+        f"{float(r['contact_point_rebound_angle_deg']):17.3f} {float(r['spin_rad_s']):13.2f}"
+    )
+
+angle = [float(r["impact.angle_deg"]) for r in rows]
+fig, ax = plt.subplots(figsize=(5.5, 3.8))
+ax.plot(angle, [float(r["rebound_angle_deg"]) for r in rows], "o-", ms=3, label="centre of the ball")
+ax.plot(angle, [float(r["contact_point_rebound_angle_deg"]) for r in rows], "s-", ms=3, label="contact point")
+ax.plot([0, 90], [0, 90], "k:", lw=0.8, label="rebound = impact angle")
+ax.set(xlabel="impact angle from the normal (deg)", ylabel="rebound angle (deg)")
+ax.legend()
+fig.tight_layout()

@@ -11,12 +11,17 @@
   opening delimiter, which italicises everything up to the next ``*``), or one longer than a title, is reported
   (write ``8G\\*a``); and in the built pages, whatever their source (Markdown, reST, docstrings), an italic span
   (``<em>``) longer than a title.
+- **No build machine in the pages**: no page shows the absolute path of the source tree, the temporary folder
+  (``/tmp/``) or the home folder, or a Python warning (``...Warning: ...``), and no example's output a traceback:
+  what the examples print, and what they write to stderr, is part of the gallery pages.
+- **A figure in every example**: each gallery page (when the gallery is run) shows at least one figure.
 """
 
 from __future__ import annotations
 
 import html
 import re
+import tempfile
 from pathlib import Path
 
 from markdown_it import MarkdownIt
@@ -107,6 +112,57 @@ def _check_italics(app, pages: list[Path]) -> None:
             logger.warning(f"{page.relative_to(outdir)}: italics of {len(span)} characters: {span[:40]!r}…")
 
 
+#: A Python warning as ``warnings`` prints it (``file.py:12: UserWarning: text``).
+_PYTHON_WARNING = re.compile(r"\b[A-Z]\w*Warning: ")
+#: A traceback (a doctest of an error shows one on purpose: only what an example printed is searched).
+_TRACEBACK = re.compile(r"Traceback \(most recent call last\)")
+#: What an example printed: sphinx-gallery's output blocks.
+_SCRIPT_OUTPUT = re.compile(r"<div class=\"sphx-glr-script-out.*?</pre>", re.DOTALL)
+
+
+def _machine_paths(app) -> list[str]:
+    """Paths of the build machine that no page may show: the source tree, the temporary folder, the home folder."""
+    paths = {str(Path(app.srcdir).resolve().parent), "/tmp/", str(Path(tempfile.gettempdir()).resolve()) + "/"}
+    home = Path.home().resolve()
+    if home != home.parent:  # a home folder "/" is in every path
+        paths.add(str(home) + "/")
+    return sorted(paths)
+
+
+def _check_machine_text(app, pages: list[Path]) -> None:
+    outdir = Path(app.outdir)
+    paths = _machine_paths(app)
+    for page in pages:
+        text = html.unescape(page.read_text(encoding="utf-8"))
+        found = [p for p in paths if p in text]
+        if found:
+            logger.warning(f"{page.relative_to(outdir)} shows a path of the build machine: {found[0]!r}")
+        printed = "\n".join(_SCRIPT_OUTPUT.findall(text))
+        warning = _PYTHON_WARNING.search(text) or _TRACEBACK.search(printed)
+        if warning:
+            where = warning.string
+            line = where[where.rfind("\n", 0, warning.start()) + 1 : where.find("\n", warning.end())]
+            logger.warning(f"{page.relative_to(outdir)} shows a Python warning or traceback: {line.strip()[:200]!r}")
+
+
+#: An image the gallery's matplotlib scraper put on an example's page.
+_GALLERY_FIGURE = re.compile(r"<img\b[^>]*\bclass\s*=\s*\"[^\"]*sphx-glr-(?:single|multi)-img")
+
+
+def _check_gallery_figures(app) -> None:
+    conf = getattr(app.config, "sphinx_gallery_conf", None) or {}
+    if str(conf.get("plot_gallery", "True")) == "False":  # the gallery shown without running the examples
+        return
+    outdir = Path(app.outdir)
+    dirs = conf.get("gallery_dirs", [])
+    for gallery in [dirs] if isinstance(dirs, str) else dirs:
+        for page in sorted((outdir / gallery).glob("*.html")):
+            if page.name in ("index.html", "sg_execution_times.html"):
+                continue
+            if not _GALLERY_FIGURE.search(page.read_text(encoding="utf-8")):
+                logger.warning(f"{page.relative_to(outdir)}: the example shows no figure")
+
+
 def check_build(app, exception: Exception | None) -> None:
     """Run the checks on a finished HTML build."""
     if exception is not None or app.builder.format != "html":
@@ -116,6 +172,8 @@ def check_build(app, exception: Exception | None) -> None:
     _check_api_summaries(app, pages)
     _check_emphasis(app)
     _check_italics(app, pages)
+    _check_machine_text(app, pages)
+    _check_gallery_figures(app)
 
 
 def setup(app) -> dict:

@@ -1,0 +1,67 @@
+"""The docs build's checks of the gallery pages (docs/_ext/build_checks.py) find what they are for: a path of the
+build machine, a Python warning or traceback in a page, a gallery example without a figure."""
+
+import logging
+import sys
+import tempfile
+from pathlib import Path
+from types import SimpleNamespace
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "docs" / "_ext"))
+build_checks = pytest.importorskip("build_checks")  # needs the docs extra (Sphinx, markdown-it)
+
+FIGURE = '<img src="../_images/sphx_glr_x_001.png" alt="x" class = "sphx-glr-single-img"/>'
+
+
+def _site(tmp_path: Path, pages: dict[str, str], plot_gallery: str = "True"):
+    src, out = tmp_path / "src" / "docs", tmp_path / "html"
+    src.mkdir(parents=True)
+    for name, text in pages.items():
+        (out / name).parent.mkdir(parents=True, exist_ok=True)
+        (out / name).write_text(f"<html><body>{text}</body></html>", encoding="utf-8")
+    conf = SimpleNamespace(sphinx_gallery_conf={"gallery_dirs": "auto_examples", "plot_gallery": plot_gallery})
+    return SimpleNamespace(srcdir=str(src), outdir=str(out), config=conf), sorted(out.rglob("*.html"))
+
+
+def _warnings(caplog) -> list[str]:
+    return [r.getMessage() for r in caplog.records if r.levelno >= logging.WARNING]
+
+
+def test_clean_pages_pass(tmp_path, caplog):
+    doctest = "<pre>&gt;&gt;&gt; Case().with_(impact={'angle': 120.0})\nTraceback (most recent call last):</pre>"
+    pages = {"index.html": "impact at 30 deg", "api.html": doctest, "auto_examples/a.html": FIGURE}
+    app, pages = _site(tmp_path, pages)
+    build_checks._check_machine_text(app, pages)
+    build_checks._check_gallery_figures(app)
+    assert _warnings(caplog) == []
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "outputs in {src}/examples/out",
+        f"wrote {Path(tempfile.gettempdir()).resolve()}/impactwear-gallery-1/x.csv",
+        "/tmp/abc/summary.json",
+        "plate.py:32: UserWarning: elastic ball: represented by a rigid sphere",
+        '<div class="sphx-glr-script-out highlight-none"><div class="highlight"><pre>Traceback (most recent call last):'
+        "</pre></div></div>",
+    ],
+)
+def test_machine_path_or_warning_is_reported(tmp_path, caplog, text):
+    app, _ = _site(tmp_path, {})
+    app, pages = _site(tmp_path / "b", {"auto_examples/a.html": FIGURE + text.format(src=Path(app.srcdir).parent)})
+    build_checks._check_machine_text(app, pages)
+    assert len(_warnings(caplog)) == 1 and "auto_examples/a.html" in _warnings(caplog)[0]
+
+
+def test_gallery_page_without_figure_is_reported(tmp_path, caplog):
+    pages = {"auto_examples/index.html": "", "auto_examples/a.html": FIGURE, "auto_examples/b.html": "no image"}
+    app, _ = _site(tmp_path, pages)
+    build_checks._check_gallery_figures(app)
+    assert _warnings(caplog) == ["auto_examples/b.html: the example shows no figure"]
+    caplog.clear()
+    app, _ = _site(tmp_path / "c", pages, plot_gallery="False")  # the gallery shown without running the examples
+    build_checks._check_gallery_figures(app)
+    assert _warnings(caplog) == []
