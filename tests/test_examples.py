@@ -89,7 +89,7 @@ def check_default_run(out: Path, stdout: str) -> None:
     """Newton's second law on the saved history: the normal impulse ∫F dt equals the ball's change of normal momentum
     m (V_in − V_out) (alumina, R 2.5 mm, 3950 kg/m³; V_in = 3 cos 30° m/s); within 0.5%."""
     h = _rows(out / "history.csv")
-    v = _column(h, "normal_velocity_m_per_s")
+    v = _column(h, "normal_velocity_m_s")
     assert v[0] == pytest.approx(3.0 * math.cos(math.radians(30.0)), rel=1e-9)
     impulse = np.trapezoid(_column(h, "normal_force_N"), _column(h, "time_s"))
     assert impulse == pytest.approx(_sphere_mass(2.5e-3, 3950.0) * (v[0] - v[-1]), rel=0.005)
@@ -153,12 +153,12 @@ def check_sweep_angles(out: Path, stdout: str) -> None:
     tan θ > 3.5 μ (1 + e_n) (μ = 0.092), within 0.05°; the spec written equals examples/sweep_angles.toml."""
     rows = _rows(out / "run" / "results.csv")
     assert len(rows) == 17 and {r["status"] for r in rows} == {"ok"}
-    theta = np.radians(_column(rows, "impact.angle"))
+    theta = np.radians(_column(rows, "impact.angle_deg"))
     e_n = _column(rows, "normal_restitution")
     sliding = np.tan(theta) > 3.5 * 0.092 * (1 + e_n)
     assert sliding.sum() >= 8
     expected = np.degrees(np.arctan((np.tan(theta) - 0.092 * (1 + e_n)) / e_n))
-    np.testing.assert_allclose(_column(rows, "rebound_angle")[sliding], expected[sliding], atol=0.05)
+    np.testing.assert_allclose(_column(rows, "rebound_angle_deg")[sliding], expected[sliding], atol=0.05)
     shipped = tomllib.loads((ROOT / "examples" / "sweep_angles.toml").read_text())
     assert tomllib.loads((out / "sweep_angles.toml").read_text()) == shipped
 
