@@ -12,7 +12,13 @@ grid memory: :data:`BYTES_PER_WEAR_CELL` per cell of a grid of ``wear.points_acr
 and, along the impact, that plus the travel :math:`V_t t_c` (Hertz contact time: an upper bound of the contact centre's
 travel while sliding).
 
-The 3-D plate (``fem.model = "3d"``) is not estimated here.
+The 3-D plate (``fem.model = "3d"``): wall time :math:`c_3\,N_3\,(n_{load} + n_{unload})\,n_{cycle}\,n_{impact}`
+with :math:`N_3` its elements (:func:`solid_elements`), :math:`c_3` = :data:`SOLID_SECONDS_PER_ELEMENT_STEP`, the
+``solid_load_steps`` and ``solid_unload_steps`` increments, :math:`n_{cycle}` = min(``fem.solid_iterations``,
+:data:`SOLID_CYCLES`) 3-D plate cycles and one impact for a run, ``repeat.impacts`` for a repeat (every impact is
+computed). It is linear in the elements, while the sparse factorisations grow faster than that, so it is a low
+estimate for meshes much finer than the default: it refuses what would run for hours, not what would take 70 min.
+Its memory is not estimated.
 """
 
 from __future__ import annotations
@@ -35,6 +41,11 @@ __all__ = [
     "fe_elements",
     "fe_memory",
     "fe_seconds",
+    "SOLID_CYCLES",
+    "SOLID_ELEMENTS",
+    "SOLID_SECONDS_PER_ELEMENT_STEP",
+    "solid_elements",
+    "solid_seconds",
     "wear_grid_memory",
 ]
 
@@ -53,6 +64,31 @@ FE_MEMORY = (2.6e8, 2.0e4)
 #: Peak memory per wear-grid cell (B), the run and its output folder with the rendered figures: 2.6 GB measured at
 #: ``wear.points_across = 2000`` on the default run (4.2 million cells, 620 B each, over the run's 0.3 GB).
 BYTES_PER_WEAR_CELL = 620.0
+
+
+#: Elements of the 3-D half plate with k = round(8 / ``fem.mesh_scale``) elements across the contact radius: c k².
+#: Counted on the oblique block (contact centre's track ±0.3 a_max): 7324, 10196, 13416, 20416, 32088, 88176 and
+#: 158992 elements at k = 3, 4, 5, 6, 8, 12 and 16; 640 k² is within -21% (k = 3) to +28% (k = 8) of them.
+SOLID_ELEMENTS = 640.0
+#: 3-D plate wall time per element and planned increment of one plate cycle (s): the default oblique impact (μ 0.3,
+#: 30°, k = 4: 10196 elements, 10 + 6 increments) took 528 s on idle cores for two cycles, 1.6e-3 s
+#: (docs/benchmarks.md); its repeated impacts 391 s each (1.2e-3 s). With μ = 0.5 a cycle took 3–7 times as long
+#: (docs/fem-record.md).
+SOLID_SECONDS_PER_ELEMENT_STEP = 1.6e-3
+#: 3-D plate cycles counted per impact: the most measured over 0/30/60° × μ 0/0.3/0.5 (docs/fem-record.md), whatever
+#: larger ``fem.solid_iterations`` allows.
+SOLID_CYCLES = 2
+
+
+def solid_elements(mesh_scale: float) -> float:
+    """Estimated elements of the 3-D half plate at ``mesh_scale`` (:data:`SOLID_ELEMENTS`)."""
+    across = max(round(8.0 / mesh_scale), 1)
+    return SOLID_ELEMENTS * across**2
+
+
+def solid_seconds(mesh_scale: float, steps: int, cycles: int, impacts: int) -> float:
+    """Estimated wall time (s) of ``impacts`` impacts of ``cycles`` 3-D plate cycles of ``steps`` increments."""
+    return SOLID_SECONDS_PER_ELEMENT_STEP * solid_elements(mesh_scale) * steps * min(cycles, SOLID_CYCLES) * impacts
 
 
 def fe_elements(mesh_scale: float) -> float:
@@ -112,8 +148,44 @@ def check_work(case: Case, job: str) -> None:
             what="the wear grid and its outputs",
             valid=(40, points),
         )
-    if job not in ("run", "repeat", "indent") or case.fem.model != "axisymmetric":
+    if job not in ("run", "repeat", "indent"):
         return
+    FE_WORK[case.fem.model](case, job)
+
+
+def _changed_first(keys: list, job: str) -> list:
+    """``keys`` ((name, value, …) tuples) with the keys the case changed from ``job``'s default first."""
+    default = default_case(job).to_dict()
+    return sorted(keys, key=lambda k: k[1] == default[k[0].split(".")[0]][k[0].split(".")[1]])
+
+
+def _check_solid_work(case: Case, job: str) -> None:
+    """Refuse a 3-D plate run or repeat past the time budget (module docstring), naming the first key the case
+    changed of those behind the estimate."""
+    if job == "indent":
+        return
+    f = case.fem
+    scale, load, unload, cycles = f.mesh_scale, f.solid_load_steps, f.solid_unload_steps, f.solid_iterations
+    impacts = case.repeat.impacts if job == "repeat" else 1
+    keys: list[tuple[str, float, Callable[[float], float], float]] = [
+        ("fem.solid_load_steps", load, lambda n: solid_seconds(scale, int(n) + unload, cycles, impacts), 2),
+        ("fem.solid_unload_steps", unload, lambda n: solid_seconds(scale, load + int(n), cycles, impacts), 1),
+        ("fem.mesh_scale", scale, lambda s: solid_seconds(s, load + unload, cycles, impacts), 8.0),
+    ]
+    if job == "repeat":
+        keys.insert(0, ("repeat.impacts", impacts, lambda n: solid_seconds(scale, load + unload, cycles, int(n)), 1))
+    what = (
+        f"~{solid_elements(scale):.3g} 3-D elements x {load + unload} increments x {min(cycles, SOLID_CYCLES)} "
+        f"plate cycles x {impacts} impact{'s' if impacts > 1 else ''}"
+    )
+    for name, value, need, cheap in _changed_first(keys, job):
+        increasing = name != "fem.mesh_scale"
+        valid = (cheap, value) if increasing else (value, cheap)
+        check_budget(name, value, need, what=what, valid=valid, memory=False, increasing=increasing, integer=increasing)
+
+
+def _check_axisymmetric_work(case: Case, job: str) -> None:
+    """Refuse an axisymmetric FE plate past the memory or time budget (module docstring)."""
     passes, how = _passes(case, job)
     if passes == 0:
         return
@@ -143,10 +215,15 @@ def check_work(case: Case, job: str) -> None:
         ]
     elif job == "run" and f.coupling == "two-way":
         keys.insert(0, ("fem.max_iterations", passes, lambda n: fe_seconds(scale, load + unload, int(n)), 1))
-    default = default_case(job).to_dict()
-    keys.sort(key=lambda k: k[1] == default[k[0].split(".")[0]][k[0].split(".")[1]])
     what = f"~{elements:.3g} FE elements x {load + unload} increments x {passes} {how}"
-    for name, value, need, cheap in keys:
+    for name, value, need, cheap in _changed_first(keys, job):
         increasing = name != "fem.mesh_scale"
         valid = (cheap, value) if increasing else (value, cheap)
         check_budget(name, value, need, what=what, valid=valid, memory=False, increasing=increasing, integer=increasing)
+
+
+#: The FE work check of each plate model (``fem.model``).
+FE_WORK: dict[str, Callable[[Case, str], None]] = {
+    "axisymmetric": _check_axisymmetric_work,
+    "3d": _check_solid_work,
+}
