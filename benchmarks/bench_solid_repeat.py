@@ -21,7 +21,7 @@ import numpy as np
 
 from wear.case import JOBS
 from wear.case.check import on_plate
-from wear.chain.repeat import repeat
+from wear.chain.repeated_impacts import repeat
 
 
 def main() -> None:

@@ -19,7 +19,7 @@ from wear.case import FEM_MODELS, JOBS, Case, dump_case
 from wear.chain.calibrate import calibrate
 from wear.chain.calibration_data import read_data
 from wear.chain.plates import PLATES
-from wear.chain.repeat import repeat
+from wear.chain.repeated_impacts import repeat
 
 AXISYMMETRIC_ONLY = ("calibrate", "indent")
 

@@ -120,7 +120,7 @@ def test_tabulated_peak_pressure_has_no_spike_at_first_contact_or_separation():
 
 def test_tabulated_beyond_table_is_an_error():
     # Documented behaviour: no extrapolation beyond the table; the error names force_law, and is the ValueError
-    # subclass a table-building caller (wear.chain.repeat) catches to extend its table.
+    # subclass a table-building caller (wear.chain.axisymmetric_repeat) catches to extend its table.
     from contact.impact import ForceLawRangeError
 
     e_star = effective_modulus(BALL, RIGID)

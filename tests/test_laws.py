@@ -9,7 +9,7 @@ from contact import Material, simulate_impact
 from contact.theory import yield_velocity
 from wear import Case, WearLaw, integrate_wear, pressure_history, repeat, run, sliding_speed
 from wear.case import default_case
-from wear.chain.repeat import impact_on_plate
+from wear.chain.axisymmetric_repeat import impact_on_plate
 from wear.chain.trends import law_trends
 from wear.laws import (
     deformation_volume,

@@ -275,9 +275,10 @@ def test_cli_writes_outputs(tmp_path, capsys):
 
 
 def test_wear_profile_filter_follows_the_gaussian_transfer_function():
-    """smooth_profile (wear.chain.repeat): a Gaussian filter of standard deviation σ multiplies a ripple of wavelength
-    λ by exp(−(2πσ/λ)²/2) (the Fourier transform of the Gaussian); a constant stays constant; the axis is a mirror."""
-    from wear.chain.repeat import smooth_profile
+    """smooth_profile (wear.chain.axisymmetric_repeat): a Gaussian filter of standard deviation σ multiplies a ripple of
+    wavelength λ by exp(−(2πσ/λ)²/2) (the Fourier transform of the Gaussian); a constant stays constant; the axis is a
+    mirror."""
+    from wear.chain.axisymmetric_repeat import smooth_profile
 
     r = np.linspace(0.0, 1e-3, 2001)
     sigma = 1e-5

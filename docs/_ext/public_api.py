@@ -23,8 +23,7 @@ def defining_paths(path: str) -> list[str]:
     if getattr(obj, "__module__", None) and getattr(obj, "__qualname__", None):
         paths.append(f"{obj.__module__}.{obj.__qualname__}")
     holders = [m for m in sorted(sys.modules) if m.split(".")[0] in PACKAGES and vars(sys.modules[m]).get(name) is obj]
-    # modules before packages: a package re-exports what a module defines (but ``wear.chain.repeat``, the function,
-    # shadows its module in the package, and autosummary documents it there)
+    # modules before packages: a package re-exports what a module defines
     holders.sort(key=lambda m: hasattr(sys.modules[m], "__path__"))
     return paths + [f"{m}.{name}" for m in holders]
 

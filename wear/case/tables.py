@@ -343,10 +343,10 @@ class ErosionSpec(Table):
 
 @dataclass(frozen=True)
 class RepeatSpec(Table):
-    """Repeated impacts at one site (:mod:`wear.chain.repeat`): ``impacts``; ``geometry_update`` (the wear moves the
-    FE surface nodes); ``shakedown_tolerance`` (an impact whose largest plastic strain increment is below this × Y/E
-    is shaken down); ``surface_fraction`` (a cycle-jump block moves the surface by at most this × the last computed
-    impact's approach, its max overlap from first contact); ``max_plastic_impacts`` (computed one by one before
+    """Repeated impacts at one site (:mod:`wear.chain.repeated_impacts`): ``impacts``; ``geometry_update`` (the wear
+    moves the FE surface nodes); ``shakedown_tolerance`` (an impact whose largest plastic strain increment is below this
+    × Y/E is shaken down); ``surface_fraction`` (a cycle-jump block moves the surface by at most this × the last
+    computed impact's approach, its max overlap from first contact); ``max_plastic_impacts`` (computed one by one before
     blocks go on without shakedown); ``save_every`` (FE mesh of every k-th computed impact; 0 = none);
     ``wear_smoothing`` (width of the Gaussian filter of the wear profile the FE surface takes, × the contact radius;
     0 = off, which lets a node-scale ripple grow); ``elastic_after_shakedown`` (after a shaken-down impact the next

@@ -37,7 +37,7 @@ __all__ = ["halfspace_check"]
 
 
 def halfspace_check(result, cells: int = 192) -> dict:
-    """Peak pressures (Pa) of the last computed impact of ``result`` (:class:`wear.chain.repeat.RepeatResult`) at its
+    """Peak pressures (Pa) of the last computed impact of ``result`` (:class:`wear.chain.records.RepeatResult`) at its
     max force: the FE's, and the half-space solution's on the surface that impact met (``result.met_surface``);
     grid of ``cells`` × ``cells`` over ±2.5 contact radii about the FE axis."""
     last = [r for r in result.records if r.kind == "computed"][-1]

@@ -1,5 +1,5 @@
-"""Records of repeated impacts (:mod:`wear.chain.repeat`): one row per computed impact or cycle-jump block, the run's
-result and its repeat.csv columns. SI units."""
+"""Records of repeated impacts (:mod:`wear.chain.repeated_impacts`): one row per computed impact or cycle-jump block,
+the run's result and its repeat.csv columns. SI units."""
 
 from __future__ import annotations
 

@@ -8,8 +8,8 @@ is committed. The slide ξ of each impact starts at 0 at its first contact, with
 
 **Where the ball lands.** Every impact is the same ball on the same trajectory: it crosses the original plane where
 the first one touched (x = 0 of the plate's frame) and flies d₀·V_t/V_n further along x before it meets the dent
-(as the axisymmetric repeat's wear map shift, :mod:`wear.chain.repeat`), where d₀ is the first-contact overlap at
-the site; the impact's contact centres are placed from there.
+(as the axisymmetric repeat's wear map shift, :mod:`wear.chain.axisymmetric_repeat`), where d₀ is the first-contact
+overlap at the site; the impact's contact centres are placed from there.
 
 **The mesh** is built once, from the first impact (the axisymmetric coupled impact of the case, the 3-D coupling's
 start, as in :func:`wear.run`), as the single chain's first 3-D cycle meshes it: for its probe overlap over its

@@ -2,9 +2,10 @@
 
 The case is a run case (``impactwear run``'s tables ``[ball]``, ``[plate]``, ``[impact]``, ``[wear]``, ``[fem]``,
 ``[output]``) plus an optional ``[repeat]`` table; with no CASE the default case (``impactwear repeat
---print-default``); ``--impacts`` overrides ``repeat.impacts``. See :mod:`wear.chain.repeat` for the physics (plate
-state kept, dented and worn surface, shakedown, cycle jump; with ``fem.model = "3d"`` oblique impacts with friction on
-the 3-D plate, every one computed, :mod:`wear.chain.solid_repeat`) and :mod:`wear.app.outputs.repeat` for the files.
+--print-default``); ``--impacts`` overrides ``repeat.impacts``. See :mod:`wear.chain.axisymmetric_repeat` for the
+physics (plate state kept, dented and worn surface, shakedown, cycle jump; with ``fem.model = "3d"`` oblique impacts
+with friction on the 3-D plate, every one computed, :mod:`wear.chain.solid_repeat`) and :mod:`wear.app.outputs.repeat`
+for the files.
 """
 
 from __future__ import annotations
@@ -23,7 +24,7 @@ from wear.app.commands.common import (
 )
 from wear.app.outputs.folder import output_folder
 from wear.app.outputs.repeat import ENTRIES, RepeatWriter
-from wear.chain.repeat import repeat
+from wear.chain.repeated_impacts import repeat
 
 DEFAULT_OUT = "impactwear-repeat"
 

@@ -35,7 +35,7 @@ def plot_repeat(
     shakedown_impact: int | None = None,
     tolerance: float | None = None,
 ) -> Path:
-    """The four panels above from ``columns`` (``wear.chain.repeat.RepeatResult.columns()``) into ``path``."""
+    """The four panels above from ``columns`` (``wear.chain.records.RepeatResult.columns()``) into ``path``."""
     n = np.asarray(columns["impact_last"], float)
     computed = np.asarray(columns["computed"], float) > 0
     fig, axes = subplots(2, 2, figsize=(11, 7.5), sharex=True)

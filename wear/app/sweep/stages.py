@@ -31,7 +31,7 @@ from wear.chain.axisymmetric_run import one_way
 from wear.chain.calibrate import calibrate
 from wear.chain.calibration_data import read_data
 from wear.chain.records import CSV_COLUMNS
-from wear.chain.repeat import repeat
+from wear.chain.repeated_impacts import repeat
 from wear.chain.single import run
 from wear.erosion.run import erode_case
 

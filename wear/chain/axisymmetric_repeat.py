@@ -1,7 +1,8 @@
-r"""Repeated impacts of the same ball at the same spot, each on the plate the previous ones left.
+r"""Repeated impacts of the same ball at the same spot on the axisymmetric plate, each on the plate the previous
+ones left (``fem.model = "axisymmetric"`` of :func:`wear.chain.repeated_impacts.repeat`).
 
-``repeat(case) -> RepeatResult`` (the repetition's settings are ``case.repeat``, :class:`wear.case.RepeatSpec`).
-One FE plate (:class:`fem.Plate`) lives through the whole sequence: it keeps
+``axisymmetric_repeat(case) -> RepeatResult`` (the repetition's settings are ``case.repeat``,
+:class:`wear.case.RepeatSpec`). One FE plate (:class:`fem.Plate`) lives through the whole sequence: it keeps
 its plastic strain and residual stress, each impact's contact gap is measured to the dented (and worn) surface,
 and the wear of each impact moves the FE mesh's surface nodes before the next one.
 
@@ -64,18 +65,16 @@ from scipy.ndimage import gaussian_filter1d
 import fem
 from contact import effective_modulus
 from contact.theory import speed_components, sphere_mass
-from wear.case import Case, check_job_case
+from wear.case import Case
 from wear.chain.axisymmetric_run import impact_wear
 from wear.chain.check import halfspace_check
 from wear.chain.plate import case_plate, coupling_settings, impact_on_law
 from wear.chain.records import ComputedImpact, ImpactRecord, RepeatResult, yield_strain
 from wear.chain.single import estimate_impact
-from wear.chain.solid_repeat import solid_repeat
 from wear.chain.wear_accumulator import WearAccumulator
 from wear.integrate import WearMap, implausible_wear
 
 __all__ = [
-    "REPEATS",
     "AZIMUTHS",
     "CONTACT_GROWTH",
     "ComputedImpact",
@@ -84,7 +83,6 @@ __all__ = [
     "axisymmetric_repeat",
     "azimuthal_average",
     "impact_on_plate",
-    "repeat",
     "smooth_profile",
 ]
 
@@ -158,27 +156,13 @@ def impact_on_plate(
     return ComputedImpact(coupled, wm, profile)
 
 
-def repeat(
-    case: Case,
-    progress: Callable[[int, int], None] | None = None,
-    on_computed: Callable[[int, fem.Plate], None] | None = None,
-) -> RepeatResult:
-    """Run ``case.repeat.impacts`` impacts of ``case`` at one spot (see the module docstring). ``progress(done,
-    total)`` after each computed impact or block; ``on_computed(impact_number, fe_plate)`` after each computed
-    impact (e.g. to write the FE mesh). With ``fem.model = "3d"`` the impacts run on the 3-D plate with friction,
-    every one computed (:func:`wear.chain.solid_repeat.solid_repeat`)."""
-    if not isinstance(case, Case):
-        raise ValueError(f"case={type(case).__name__} is not a wear.Case")
-    check_job_case(case, "repeat")
-    return REPEATS[case.fem.model](case, progress, on_computed)
-
-
 def axisymmetric_repeat(
     case: Case,
     progress: Callable[[int, int], None] | None = None,
     on_computed: Callable[[int, fem.Plate], None] | None = None,
 ) -> RepeatResult:
-    """The impacts of :func:`repeat` on the axisymmetric plate (the module docstring)."""
+    """Run ``case.repeat.impacts`` impacts of ``case`` at one spot on the axisymmetric plate (see the module
+    docstring); ``progress`` and ``on_computed`` as :func:`wear.chain.repeated_impacts.repeat`."""
     spec = case.repeat
     ball, plate = case.ball.material(), case.plate.material()
     if plate.is_rigid:
@@ -319,7 +303,3 @@ def axisymmetric_repeat(
         halfspace_check=halfspace_check(result),
         wear_depth_over_taper=float(fe_plate.wear_depth.max() / fe_plate.taper_depth),
     )
-
-
-#: The repetition on each plate model of ``fem.model``.
-REPEATS: dict[str, Callable[..., RepeatResult]] = {"axisymmetric": axisymmetric_repeat, "3d": solid_repeat}
