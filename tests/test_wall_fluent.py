@@ -119,7 +119,7 @@ def test_rows_read_in_chunks_are_the_whole_file_and_keep_their_row_numbers():
     assert len(read_fluent_dpm(UNSTEADY, None, N)) == 0
 
 
-def test_a_closing_line_blank_lines_and_fewer_printed_digits_are_read(tmp_path):
+def test_a_closing_line_blank_lines_fewer_printed_digits_and_no_rows_are_read(tmp_path):
     lines = UNSTEADY.read_text().splitlines()
     path = tmp_path / "short.dpm"
     # 4 significant digits (a %.3e writer): parcel-mass vs n × mass then agrees to 1.5e-3, not 1.5e-6
@@ -128,6 +128,8 @@ def test_a_closing_line_blank_lines_and_fewer_printed_digits_are_read(tmp_path):
     records = read_fluent_dpm(path)
     assert len(records) == N
     assert np.allclose(records.mass, _written()["mass"], rtol=1e-3, atol=0.0)
+    path.write_text("\n".join(lines[:2]) + "\n")  # sampling started, no hit yet
+    assert len(read_fluent_dpm(path)) == 0 and count_fluent_rows(path) == 0
 
 
 COLUMNS = "x y z u v w diameter t parcel-mass mass n-in-parcel time flow-time".split()

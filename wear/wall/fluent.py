@@ -34,8 +34,9 @@ significant digits of the three) is bad input. The hit's time is ``flow-time`` (
 have no flow time). Fluent gives the hit point, not the face: every record's face is −1, found from the position
 by :func:`wear.wall.hits.hits_on_wall`. The velocity is taken as the incident one (the found sources do not say
 whether a wall sample is written before or after the rebound: a rebound velocity points out of the wall and is
-refused there, naming the row). Units are SI as written (m, m/s, kg, s); a file in mm or µm fails the diameter
-range check.
+refused there, naming the row). Units are SI (m, m/s, kg, s): no source found states a sample file's units, but
+Fluent stores and computes in SI and converts only at its interface (Fluent 6.3 User's Guide, Chapter 5, "Unit
+Systems"), and the public readers take the values as SI; a diameter in mm or µm fails the diameter range check.
 
 Rows are counted from 1 after the header lines (the r-th row of parcels; blank lines and a closing ``)`` line are
 not rows); bad input is a ``ValueError`` naming the file, the row and the column.
