@@ -171,10 +171,11 @@ def _row(name: str, r: int, text: str, columns: list[str]) -> list[str]:
     return values
 
 
-def _digits(text: str) -> int:
-    """Significant digits of a printed number (its mantissa without sign, point and leading zeros)."""
-    mantissa = text.lower().split("e")[0].lstrip("+-").replace(".", "").lstrip("0")
-    return max(len(mantissa), 1)
+def _digits(texts: list[str]) -> np.ndarray:
+    """Significant digits of printed numbers: their mantissas' digits without sign, point and leading zeros (≥ 1)."""
+    mantissa = np.char.partition(np.char.lower(np.asarray(texts, dtype=str)), "e")[:, 0]
+    bare = np.char.lstrip(np.char.replace(np.char.lstrip(mantissa, "+-"), ".", ""), "0")
+    return np.maximum(np.char.str_len(bare), 1)
 
 
 def _records(name: str, table: dict[str, tuple[str, ...]], rows: np.ndarray) -> ImpactRecords:
@@ -234,12 +235,15 @@ def _check_parcel_mass(
         difference = np.abs(parcel - n * mass) / np.abs(parcel)
     finite = np.isfinite(parcel) & np.isfinite(n) & np.isfinite(mass) & (parcel != 0.0)
     suspects = np.flatnonzero(finite & (difference > 1e-15))
-    for i in suspects:
-        digits = min(_digits(table[c][i]) for c in FLUENT_MASS_COLUMNS)
-        tolerance = 1.5 * 10.0 ** (1 - digits)
-        if difference[i] > tolerance:
-            raise ValueError(
-                f"{where(name, int(rows[i]), 'parcel-mass')}: {parcel[i]:.6g} kg is not n-in-parcel × mass = "
-                f"{n[i]:.6g} × {mass[i]:.6g} kg = {n[i] * mass[i]:.6g} kg (relative difference {difference[i]:.2g}, "
-                f"more than the {tolerance:.2g} that {digits} printed digits allow)"
-            )
+    if not len(suspects):
+        return
+    digits = np.min([_digits([table[c][i] for i in suspects]) for c in FLUENT_MASS_COLUMNS], axis=0)
+    tolerances = 1.5 * 10.0 ** (1.0 - digits)
+    bad = np.flatnonzero(difference[suspects] > tolerances)
+    if len(bad):
+        i, digits, tolerance = suspects[bad[0]], digits[bad[0]], tolerances[bad[0]]
+        raise ValueError(
+            f"{where(name, int(rows[i]), 'parcel-mass')}: {parcel[i]:.6g} kg is not n-in-parcel × mass = "
+            f"{n[i]:.6g} × {mass[i]:.6g} kg = {n[i] * mass[i]:.6g} kg (relative difference {difference[i]:.2g}, "
+            f"more than the {tolerance:.2g} that {digits} printed digits allow)"
+        )
