@@ -117,6 +117,7 @@ def test_rows_read_in_chunks_are_the_whole_file_and_keep_their_row_numbers():
     assert np.array_equal(np.concatenate([c.row for c in chunks]), whole.row)
     assert np.array_equal(np.concatenate([c.velocity for c in chunks]), whole.velocity)
     assert len(read_fluent_dpm(UNSTEADY, None, N)) == 0
+    assert np.array_equal(read_fluent_dpm(UNSTEADY, None, np.int64(28), np.int64(5)).row, [29, 30])
 
 
 def test_a_closing_line_blank_lines_fewer_printed_digits_and_no_rows_are_read(tmp_path):
@@ -247,7 +248,7 @@ def test_a_record_off_the_wall_or_leaving_it_is_refused_with_its_row(tmp_path, w
         hits_on_wall(read_fluent_dpm(path, wall), wall)
 
 
-@pytest.mark.parametrize("start_row, max_rows", [(-1, None), (0, 0), (1.5, None)])
+@pytest.mark.parametrize("start_row, max_rows", [(-1, None), (0, 0), (1.5, None), (True, None)])
 def test_a_bad_row_range_is_refused(start_row, max_rows):
     with pytest.raises(ValueError, match=r"^(start_row|max_rows)=.* is out of range"):
         read_fluent_dpm(UNSTEADY, None, start_row, max_rows)

@@ -46,7 +46,6 @@ from __future__ import annotations
 
 import gzip
 import io
-import itertools
 import math
 from collections.abc import Iterator
 from pathlib import Path
@@ -56,7 +55,7 @@ import numpy as np
 from wear.wall.mesh import Wall
 from wear.wall.records import DENSITY_RANGE, ImpactRecords, numbers, where
 
-__all__ = ["read_fluent_dpm", "count_fluent_rows", "FLUENT_COLUMNS", "FLUENT_MASS_COLUMNS"]
+__all__ = ["read_fluent_dpm", "count_fluent_rows", "FLUENT_COLUMNS", "FLUENT_MASS_COLUMNS", "FLUENT_TIME"]
 
 #: The columns read (Fluent's names), by impact-table field; all required.
 FLUENT_COLUMNS = {"position": ("x", "y", "z"), "velocity": ("u", "v", "w"), "diameter": ("diameter",)}
@@ -79,9 +78,9 @@ def read_fluent_dpm(
     skipped unparsed. ``wall`` is not needed (every record's face is −1, found from its position by
     :func:`wear.wall.hits.hits_on_wall`); it is accepted so that all readers are called alike."""
     name = str(path)
-    if not (isinstance(start_row, int) and start_row >= 0):
+    if not (_is_integer(start_row) and start_row >= 0):
         raise ValueError(f"start_row={start_row!r} is out of range: give the rows to skip, an integer >= 0")
-    if max_rows is not None and not (isinstance(max_rows, int) and max_rows >= 1):
+    if max_rows is not None and not (_is_integer(max_rows) and max_rows >= 1):
         raise ValueError(f"max_rows={max_rows!r} is out of range: give an integer >= 1 (or None: all rows)")
     header, lines = _header(name, _lines(Path(path)))
     columns = [c for c in header if c != _NAME]
@@ -100,6 +99,10 @@ def read_fluent_dpm(
         cells.append(_row(name, r, text, columns))
     table = dict(zip(columns, zip(*cells, strict=True), strict=True)) if cells else {c: () for c in columns}
     return _records(name, table, np.array(rows, dtype=np.int64))
+
+
+def _is_integer(value: object) -> bool:
+    return isinstance(value, (int, np.integer)) and not isinstance(value, bool)
 
 
 def count_fluent_rows(path: str | Path) -> int:
@@ -126,8 +129,7 @@ def _header(name: str, lines: Iterator[str]) -> tuple[list[str], Iterator[str]]:
         if not text:
             continue
         if not text.startswith("(") or text.startswith("(("):
-            lines = itertools.chain([text], lines)  # a row: the header line is missing
-            break
+            break  # a row or other text before any column line
         names = text.replace("(", " ").replace(")", " ").split()
         if "x" in names:
             header = names
