@@ -14,6 +14,8 @@ from pathlib import Path
 import pytest
 
 from wear.app.cli import build_parser
+from wear.wall.fluent import FLUENT_COLUMNS, FLUENT_MASS_COLUMNS, FLUENT_TIME
+from wear.wall.table import TABLE_COLUMNS
 
 DOCS = Path(__file__).resolve().parents[1] / "docs"
 
@@ -78,3 +80,21 @@ def test_runaway_italics_are_caught():
     long_em = "<p>k = 8G<em>a·ξ with Coulomb truncation (equations 3, 8 and 9), as DEM codes do, slides at F = μ</em>F"
     assert build_checks._long_italics(long_em)
     assert not build_checks._long_italics("<p><em>A Computational Wear Model of the Oblique Impact of a Ball</em></p>")
+
+
+def _section_columns(page: str, title: str) -> list[str]:
+    """The column names (in backticks) of the first cell of each table row of the section ``## title``."""
+    text = (DOCS / page).read_text(encoding="utf-8")
+    section = text.split(f"## {title}\n", 1)[1].split("\n## ", 1)[0]
+    rows = re.findall(r"^\| (.+?) \|", section, flags=re.MULTILINE)
+    return [name for cell in rows for name in re.findall(r"`([^`]+)`", cell)]
+
+
+def test_the_wall_records_page_lists_exactly_the_plain_table_s_and_fluent_s_columns():
+    """docs/wall-records.md's tables are the readers' column constants: the plain table's every column, once, and
+    Fluent's required, mass and time columns."""
+    listed = _section_columns("wall-records.md", "Plain table: CSV or Parquet")
+    assert sorted(listed) == sorted(TABLE_COLUMNS)
+    fluent = set(_section_columns("wall-records.md", "Ansys Fluent: DPM sample files"))
+    read = {c for cs in FLUENT_COLUMNS.values() for c in cs} | set(FLUENT_MASS_COLUMNS) | {FLUENT_TIME}
+    assert read <= fluent and fluent - read == {"t", "time", "name"}

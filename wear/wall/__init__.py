@@ -1,9 +1,11 @@
 """Erosion of a component's wall from CFD or DEM impact records: the impact table (:mod:`wear.wall.records`) read
-from OpenFOAM (:mod:`wear.wall.openfoam`) or a plain table (:mod:`wear.wall.table`), the wall
-(:mod:`wear.wall.mesh`; an OpenFOAM case's wall patches: :mod:`wear.wall.foam`), the records placed on it with their
-impact angles (:mod:`wear.wall.hits`, :mod:`wear.wall.locate`) and per-face sums (:mod:`wear.wall.sums`). SI units;
-angles in degrees from the wall normal, which points out of the fluid into the wall."""
+from OpenFOAM (:mod:`wear.wall.openfoam`), Ansys Fluent (:mod:`wear.wall.fluent`) or a plain table
+(:mod:`wear.wall.table`), the wall (:mod:`wear.wall.mesh`; an OpenFOAM case's wall patches: :mod:`wear.wall.foam`),
+the records placed on it with their impact angles (:mod:`wear.wall.hits`, :mod:`wear.wall.locate`) and per-face sums
+(:mod:`wear.wall.sums`). SI units; angles in degrees from the wall normal, which points out of the fluid into the
+wall."""
 
+from wear.wall.fluent import read_fluent_dpm
 from wear.wall.foam import read_patch_field, read_polymesh
 from wear.wall.hits import Hits, hits_on_wall
 from wear.wall.mesh import Wall, concat_walls, read_surface
@@ -21,6 +23,7 @@ __all__ = [
     "face_sum",
     "finnie_volumes",
     "hits_on_wall",
+    "read_fluent_dpm",
     "read_patch_field",
     "read_patch_post_processing",
     "read_polymesh",
