@@ -9,8 +9,9 @@ import math
 import meshio
 import numpy as np
 import pytest
+from wall_cases import OUTPUTS, flat_mesh
 
-from tests.wall_cases import flat_mesh
+from wear.wall.foam import read_polymesh
 from wear.wall.mesh import Wall, read_surface
 from wear.wall.worn import (
     SECONDS_PER_YEAR,
@@ -173,3 +174,17 @@ def test_bad_input_names_the_parameter(flat, volume, exposure, density, message)
 def test_bad_thickness_names_the_parameter(flat):
     with pytest.raises(ValueError, match="thickness_m=0.0 .* out of range"):
         remaining_life(wall_wear(flat, np.full(len(flat), 1e-12), EXPOSURE, STEEL), 0.0)
+
+
+def test_lumped_volume_is_the_eroded_volume_on_a_wall_of_quads():
+    """The module docstring's identity sum_v A_v h_v = sum_f A_f h_f (A_v: each face's area shared equally by its
+    k points) on a wall whose faces all have k = 4, for any depths: the OpenFOAM bend's three wall patches (quads),
+    random depths."""
+    wall = read_polymesh(OUTPUTS)
+    assert set(wall.sizes.tolist()) == {4}
+    rng = np.random.default_rng(7)
+    wear = wall_wear(wall, rng.uniform(0.0, 1e-12, len(wall)) * wall.area, EXPOSURE, STEEL)
+    depth = wear.depth_m(1e4)
+    owner = np.repeat(np.arange(len(wall)), wall.sizes)
+    lumped = np.bincount(wall.face_points, weights=(wall.area / wall.sizes)[owner], minlength=len(wall.points))
+    np.testing.assert_allclose((lumped * vertex_depth(wall, depth)).sum(), (wall.area * depth).sum(), rtol=1e-12)
