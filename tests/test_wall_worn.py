@@ -78,13 +78,19 @@ def test_flat_wall_uniform_depth_gives_the_closed_form_rates_and_moves_every_poi
 
 def test_flat_wall_of_triangles_conserves_the_volume_for_any_depths(flat):
     """On a flat wall of triangles the swept prism of a face is its area times the mean depth of its points, and the
-    area-weighted point depths make their sum the eroded volume (module docstring): exact for random depths."""
+    area-weighted point depths make their sum the eroded volume (module docstring): exact for random depths, on
+    triangles of unequal areas (the interior points moved in the plane), where an unweighted mean would not be."""
     rng = np.random.default_rng(3)
-    volume = rng.uniform(0.0, 1e-12, len(flat)) * (rng.uniform(size=len(flat)) > 0.3)
-    wear = wall_wear(flat, volume, EXPOSURE, STEEL)
+    points = flat.points.copy()
+    inner = (points[:, 0] > 0) & (points[:, 0] < 0.04) & (points[:, 1] > 0) & (points[:, 1] < 0.03)
+    points[inner, :2] += rng.uniform(-0.002, 0.002, (inner.sum(), 2))
+    wall = Wall(points, flat.face_points, flat.face_offsets, flat.patch, flat.patch_names, flat.labels)
+    assert wall.area.max() > 1.3 * wall.area.min() and np.allclose(wall.normal, [0.0, 0.0, -1.0])
+    volume = rng.uniform(0.0, 1e-12, len(wall)) * (rng.uniform(size=len(wall)) > 0.3)
+    wear = wall_wear(wall, volume, EXPOSURE, STEEL)
     service = 1e4
     np.testing.assert_allclose(
-        swept_volume(flat, worn_wall(flat, wear, service)), volume.sum() * service / EXPOSURE, rtol=1e-11
+        swept_volume(wall, worn_wall(wall, wear, service)), volume.sum() * service / EXPOSURE, rtol=1e-11
     )
 
 
@@ -171,9 +177,16 @@ def test_bad_input_names_the_parameter(flat, volume, exposure, density, message)
         wall_wear(flat, volumes, exposure, density)
 
 
-def test_bad_thickness_names_the_parameter(flat):
+def test_bad_thickness_service_time_and_count_name_the_parameter(flat):
+    wear = wall_wear(flat, np.full(len(flat), 1e-12), EXPOSURE, STEEL)
     with pytest.raises(ValueError, match="thickness_m=0.0 .* out of range"):
-        remaining_life(wall_wear(flat, np.full(len(flat), 1e-12), EXPOSURE, STEEL), 0.0)
+        remaining_life(wear, 0.0)
+    with pytest.raises(ValueError, match="thickness_m has shape"):
+        remaining_life(wear, np.ones(3))
+    with pytest.raises(ValueError, match="service_s=-1.0 is out of range"):
+        worn_wall(flat, wear, -1.0)
+    with pytest.raises(ValueError, match="n=0 is out of range"):
+        hot_spots(flat, wear, 0.01, n=0)
 
 
 def test_lumped_volume_is_the_eroded_volume_on_a_wall_of_quads():
