@@ -187,6 +187,11 @@ def test_bad_thickness_service_time_and_count_name_the_parameter(flat):
         worn_wall(flat, wear, -1.0)
     with pytest.raises(ValueError, match="n=0 is out of range"):
         hot_spots(flat, wear, 0.01, n=0)
+    other = cylinder(0.025, 0.1, 8, 2)
+    with pytest.raises(ValueError, match="the wear has 40 faces: the wall has 16"):
+        worn_wall(other, wear, 1.0)
+    with pytest.raises(ValueError, match="worn is not the wall's faces on moved points"):
+        swept_volume(flat, other)
 
 
 def test_lumped_volume_is_the_eroded_volume_on_a_wall_of_quads():

@@ -157,6 +157,10 @@ def vertex_depth(wall: Wall, depth_m: np.ndarray) -> np.ndarray:
 def worn_wall(wall: Wall, wear: WallWear, service_s: float) -> Wall:
     """``wall`` after ``service_s`` (s) of the wear ``wear``: each point moved into the wall along its normal by its
     depth (:func:`vertex_normals`, :func:`vertex_depth`); faces, patches and labels unchanged."""
+    if len(wear.volume_m3) != len(wall):
+        raise ValueError(
+            f"the wear has {len(wear.volume_m3)} faces: the wall has {len(wall)}; give the wear of this wall"
+        )
     depth = vertex_depth(wall, wear.depth_m(service_s))
     return Wall(
         points=wall.points + depth[:, None] * vertex_normals(wall),
@@ -173,6 +177,8 @@ def swept_volume(wall: Wall, worn: Wall) -> float:
     lies inside the material: the divergence theorem, :math:`\frac16 \sum x_0 \cdot (x_1 \times x_2)` over the
     triangles of the closed surface made of the worn wall's fan triangles, the wall's reversed, and the quads that the
     wall's boundary edges sweep."""
+    if worn.points.shape != wall.points.shape or not np.array_equal(worn.face_points, wall.face_points):
+        raise ValueError("worn is not the wall's faces on moved points: give worn_wall(wall, ...)")
     tri, _ = wall.triangles
     origin = wall.points.mean(axis=0)
     p, q = wall.points - origin, worn.points - origin
