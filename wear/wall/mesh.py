@@ -124,18 +124,24 @@ class Wall:
         pos = np.clip(np.searchsorted(sorted_labels, labels), 0, len(order) - 1)
         return np.where(sorted_labels[pos] == labels, order[pos], -1)
 
-    def to_meshio(self) -> meshio.Mesh:
-        """The wall as a meshio mesh (one cell block per face size), with the face normal, area (m²) and patch."""
-        blocks, data = [], {"area_m2": [], "normal": [], "patch": []}
+    def to_meshio(
+        self, cell_fields: dict[str, np.ndarray] | None = None, point_fields: dict[str, np.ndarray] | None = None
+    ) -> meshio.Mesh:
+        """The wall as a meshio mesh (one cell block per face size), with the face normal, area (m²) and patch, plus
+        ``cell_fields`` (name → one value or row per face, in face order) and ``point_fields`` (one per point)."""
+        fields = {"area_m2": self.area, "normal": self.normal, "patch": self.patch, **(cell_fields or {})}
+        for name, values in fields.items():
+            if len(values) != len(self):
+                raise ValueError(f"cell field {name!r} has {len(values)} values: the wall has {len(self)} faces")
+        blocks, data = [], {name: [] for name in fields}
         for k in np.unique(self.sizes):
             faces = np.flatnonzero(self.sizes == k)
             idx = self.face_offsets[faces][:, None] + np.arange(k)
             kind = {3: "triangle", 4: "quad"}.get(int(k), "polygon")
             blocks.append((kind, self.face_points[idx]))
-            data["area_m2"].append(self.area[faces])
-            data["normal"].append(self.normal[faces])
-            data["patch"].append(self.patch[faces])
-        return meshio.Mesh(self.points, blocks, cell_data=data)
+            for name, values in fields.items():
+                data[name].append(np.asarray(values)[faces])
+        return meshio.Mesh(self.points, blocks, cell_data=data, point_data=dict(point_fields or {}))
 
 
 def concat_walls(walls: Sequence[Wall]) -> Wall:
