@@ -1,29 +1,33 @@
 """Erosion of a component's wall from CFD or DEM impact records: the impact table (:mod:`wear.wall.records`) read
 from OpenFOAM (:mod:`wear.wall.openfoam`) or a plain table (:mod:`wear.wall.table`), the wall
 (:mod:`wear.wall.mesh`; an OpenFOAM case's wall patches: :mod:`wear.wall.foam`), the records placed on it with their
-impact angles (:mod:`wear.wall.hits`, :mod:`wear.wall.locate`) and per-face sums (:mod:`wear.wall.sums`). SI units;
-angles in degrees from the wall normal, which points out of the fluid into the wall."""
+impact angles (:mod:`wear.wall.hits`, :mod:`wear.wall.locate`), the wear law per record (:mod:`wear.wall.laws`) and
+per-face sums (:mod:`wear.wall.sums`). SI units; angles in degrees from the wall normal, which points out of the fluid
+into the wall."""
 
 from wear.wall.foam import read_patch_field, read_polymesh
 from wear.wall.hits import Hits, hits_on_wall
+from wear.wall.laws import WallLaw, wall_law
 from wear.wall.mesh import Wall, concat_walls, read_surface
 from wear.wall.openfoam import read_patch_post_processing
 from wear.wall.records import ImpactRecords, concat_records
-from wear.wall.sums import face_sum, finnie_volumes
+from wear.wall.sums import face_sum, record_volumes
 from wear.wall.table import read_table
 
 __all__ = [
     "Hits",
     "ImpactRecords",
     "Wall",
+    "WallLaw",
     "concat_records",
     "concat_walls",
     "face_sum",
-    "finnie_volumes",
     "hits_on_wall",
     "read_patch_field",
     "read_patch_post_processing",
     "read_polymesh",
     "read_surface",
     "read_table",
+    "record_volumes",
+    "wall_law",
 ]
