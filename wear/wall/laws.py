@@ -27,8 +27,17 @@ normal laws, the tangential laws and the closed-form pressures have no length of
 speed and angle an impact of a sphere of radius R is self-similar in R (lengths ∝ R, times ∝ R — the time step is
 a fraction of the contact time and the wear grid a number of points across the contact —, pressures and speeds
 independent of R): Eq. 15's :math:`K\int v^\beta \int p^\alpha\,dA\,dt \propto R^3` and Bitter's plastic work
-:math:`\propto m`. Measured: a direct impact at three times the diameter gives the scaled volume to 1e-11
+:math:`\propto m`. Measured: a direct impact at three times the diameter gives the scaled volume to 1.3e-14
 (tests/test_wall_laws.py). The particle's material is the table's: a record of another density is refused.
+
+**Cost and accuracy of the table.** Only the entries a record in [``wall.table_speed_min``,
+``wall.table_speed_max``] can reach are computed (within one speed step of its normal speeds). The default
+``[wall]`` table, 24 normal speeds x 37 angles (2.5° apart) over 0.1-100 m/s, is 603 impacts: 15 s for the local law
+of silica sand on steel (Thornton's pressure), 32 s for the combined law, on one core of a busy 2-core machine, and a
+lookup runs at ~5e6 records/s (the closed forms 1.6e7-2.4e7). Against the impact computed directly at 40 random
+(speed, angle) it measured median 0.14 %, at most 13 % of a small volume (2° from the normal, where the sticking of
+slow oblique impacts bends the local law's curve) and 1.7 % of the largest volume at that speed; the coarse table of
+the tests is checked in tests/test_wall_laws.py.
 """
 
 from __future__ import annotations
@@ -81,7 +90,7 @@ def _arrays(angle, speed, diameter, density, count) -> tuple[np.ndarray, ...]:
     theta = arrays[0]
     if theta.size and not (theta.min() >= 0.0 and theta.max() <= 90.0):
         i = int(np.flatnonzero(~((theta >= 0.0) & (theta <= 90.0)))[0])
-        raise ValueError(f"angle_deg[{i}]={theta[i]!r} is out of range: an impact angle is in [0, 90] deg")
+        raise ValueError(f"angle_deg[{i}]={theta[i]:.6g} is out of range: an impact angle is in [0, 90] deg")
     return tuple(arrays)
 
 
@@ -124,7 +133,7 @@ class OkaLaw:
         """Eroded volume (m³) of each record: N m E(V, θ, d) / ρ_w."""
         theta, speed, d, rho, n = _arrays(angle_deg, speed_m_s, diameter_m, density_kg_m3, count)
         ratio = oka_erosion_ratio(speed, theta, self.hardness, d, self.e90, self.k2)
-        return n * particle_mass(d, rho) * ratio / self.plate_density
+        return n * (particle_mass(d, rho) * ratio / self.plate_density)
 
 
 @dataclass(frozen=True)
@@ -141,7 +150,7 @@ class DnvLaw:
     def volume(self, angle_deg, speed_m_s, diameter_m, density_kg_m3, count) -> np.ndarray:
         """Eroded volume (m³) of each record: N m K V^n F(α) / ρ_w."""
         theta, speed, d, rho, n = _arrays(angle_deg, speed_m_s, diameter_m, density_kg_m3, count)
-        return n * particle_mass(d, rho) * dnv_erosion_ratio(speed, theta, self.K, self.n) / self.plate_density
+        return n * (particle_mass(d, rho) * dnv_erosion_ratio(speed, theta, self.K, self.n) / self.plate_density)
 
 
 @numba.njit(cache=True)
@@ -155,7 +164,7 @@ def _table_volumes(normal_speeds, angles, per_kg, speed, angle, mass, count):
         _, w, _ = table_entries(normal_speeds, angles, per_kg, speed[i], theta)
         if angle[i] > top:
             w *= (90.0 - angle[i]) / (90.0 - top)
-        out[i] = count[i] * mass[i] * w
+        out[i] = count[i] * (mass[i] * w)
     return out
 
 
