@@ -31,7 +31,7 @@ from contact.theory import thornton_restitution
 from wear.case import Case, default_case, dump_case, load_case
 from wear.erosion.run import impact_response
 from wear.wall import ImpactRecords, face_sum, hits_on_wall, read_surface, record_volumes, wall_law
-from wear.wall.laws import DnvLaw, FinnieLaw, OkaLaw, TableLaw, keys_read
+from wear.wall.laws import DnvLaw, FinnieLaw, OkaLaw, TableLaw, check_law_keys, keys_read
 
 #: Silica sand on a carbon steel, Thornton's normal law and pressure, no FE plate (impactwear calibrate's default).
 SAND_ON_STEEL = default_case("calibrate")
@@ -321,3 +321,19 @@ def test_the_keys_each_law_reads():
     }
     assert "speed" not in combined["impact"] and "angle" not in combined["impact"]
     assert "density" in combined["ball"] and "table_speeds" in combined["wall"]
+
+
+def test_a_key_the_law_does_not_read_is_refused_unless_at_its_default():
+    case = Case().with_(wear={"law": "dnv"}, impact={"speed": 12.0})
+    with pytest.raises(
+        ValueError,
+        match=r"^impact.speed=12.0: the wall's wear.law='dnv' does not read it \(of \[impact\] it reads nothing\); "
+        r"leave it out \(default 3.0\)$",
+    ):
+        check_law_keys(case, Case())
+    with pytest.raises(ValueError, match=r"^wall.table_speeds=8: the wall's wear.law='finnie'"):
+        check_law_keys(Case().with_(wear={"law": "finnie"}, wall={"table_speeds": 8}), Case())
+    table = SAND_ON_STEEL.with_(wear={"law": "local"}, wall={"table_speeds": 8, "thickness": 0.01})
+    assert check_law_keys(table, SAND_ON_STEEL) is table
+    with pytest.raises(ValueError, match=r"^impact.time_step=1e-08: the wall's wear.law='local' does not read it"):
+        check_law_keys(table.with_(impact={"time_step": 1e-8}), SAND_ON_STEEL)

@@ -63,6 +63,7 @@ __all__ = [
     "OkaLaw",
     "TableLaw",
     "WallLaw",
+    "check_law_keys",
     "keys_read",
     "particle_mass",
     "table_axes_of",
@@ -310,11 +311,13 @@ _WEAR_KEYS = {
     "local": ("K", "alpha", "beta", "pressure", "speed", "points_across"),
     "deformation": ("deformation_factor",),
 }
+#: The ``[wall]`` keys of the response table (the others are the wall command's: thickness, exposure, rates).
+WALL_TABLE_KEYS = ("table_speed_min", "table_speed_max", "table_speeds", "table_angles", "table_angle_max")
 _TABLE_KEYS = {
     "ball": ("radius", "E", "nu", "density", "yield_strength", "name"),
     "plate": ("rigid", "E", "nu", "density", "yield_strength", "hardness", "name"),
     "impact": ("friction", "restitution", "normal_model", "tangential_model"),
-    "wall": ("table_speed_min", "table_speed_max", "table_speeds", "table_angles", "table_angle_max"),
+    "wall": WALL_TABLE_KEYS,
 }
 
 
@@ -328,8 +331,8 @@ def keys_read(case: Case) -> dict[str, tuple[str, ...]]:
     defaults)."""
     law = case.wear.law
     if law in CLOSED_FORM_LAWS:
-        plate = {"finnie": ("rigid", "hardness", "yield_strength"), "dnv": ("rigid", "density")}.get(
-            law, ("rigid", "density", "hardness", "yield_strength")
+        plate = {"finnie": ("rigid", "hardness", "yield_strength", "name"), "dnv": ("rigid", "density", "name")}.get(
+            law, ("rigid", "density", "hardness", "yield_strength", "name")
         )
         return {"ball": (), "plate": plate, "impact": (), "wear": ("law", *_WEAR_KEYS[law]), "wall": ()}
     parts = {"combined": ("cutting", case.wear.cutting, "deformation")}.get(law, (law,))
@@ -337,3 +340,21 @@ def keys_read(case: Case) -> dict[str, tuple[str, ...]]:
     for part in parts:
         wear += [k for k in _WEAR_KEYS.get(part, (part,)) if k not in wear]
     return {**_TABLE_KEYS, "wear": tuple(wear)}
+
+
+def check_law_keys(case: Case, default: Case) -> Case:
+    """``case`` if every key of ``[ball]``, ``[plate]``, ``[impact]``, ``[wear]`` and the table keys of ``[wall]``
+    (:data:`WALL_TABLE_KEYS`) that the law does not read (:func:`keys_read`) is at its ``default`` (the command's
+    default case), else a one-line ``ValueError`` naming the first other one."""
+    read = keys_read(case)
+    for table, keys in read.items():
+        given, base = getattr(case, table).values(), getattr(default, table).values()
+        candidates = WALL_TABLE_KEYS if table == "wall" else tuple(given)
+        for key in candidates:
+            if key not in keys and given[key] != base[key]:
+                raise ValueError(
+                    f"{table}.{key}={given[key]!r}: the wall's wear.law={case.wear.law!r} does not read it (of "
+                    f"[{table}] it reads {', '.join(keys) if keys else 'nothing'}); leave it out (default "
+                    f"{base[key]!r})"
+                )
+    return case
