@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 import pickle
+from dataclasses import replace
 
 import meshio
 import numpy as np
@@ -136,7 +137,7 @@ def test_oka_s_given_constants_are_used():
 def test_dnv_per_record_is_the_recommended_practice_s():
     rho_wall = 7850.0
     law = wall_law(Case().with_(wear={"law": "dnv"}, plate={"density": rho_wall}))
-    assert isinstance(law, DnvLaw)
+    assert isinstance(law, DnvLaw) and law.description.endswith("K = 2e-09 (kg/kg)(m/s)^-n, n = 2.6")
     theta, speed, d, rho, n = _grid()
     got = law.volume(theta, speed, d, rho, n)
     expected = [dnv_rp_o501(V, 90.0 - t) * _mass() / rho_wall for t, V in zip(theta, speed, strict=True)]
@@ -274,9 +275,11 @@ def test_a_uniform_stream_gives_each_law_s_volume_times_the_particles_on_every_f
 
 
 def test_bad_records_and_keys_are_one_line_naming_them(local_law):
-    with pytest.raises(ValueError, match=r"^speed_m_s\[1\]=40 is outside the response table's speeds \[5, 30\] m/s"):
+    with pytest.raises(ValueError, match=r"^speed_m_s\[1\]: the speed 40 m/s is outside the response table's speeds"):
         local_law.volume([10.0, 20.0], [10.0, 40.0], [DIAMETER] * 2, [DENSITY] * 2, [1.0] * 2)
-    with pytest.raises(ValueError, match=r"^density_kg_m3\[0\]=7850 is not the response table's particle density"):
+    with pytest.raises(
+        ValueError, match=r"^density_kg_m3\[0\]: 7850 kg/m\^3 is not the response table's particle density"
+    ):
         local_law.volume([10.0], [10.0], [DIAMETER], [7850.0], [1.0])
     with pytest.raises(ValueError, match=r"^angle_deg\[0\]=95 is out of range"):
         local_law.volume([95.0], [10.0], [DIAMETER], [DENSITY], [1.0])
@@ -288,8 +291,28 @@ def test_bad_records_and_keys_are_one_line_naming_them(local_law):
         Case().with_(wall={"table_speed_min": 50.0, "table_speed_max": 40.0})
     with pytest.raises(ValueError, match=r"^wall.table_angle_max=89.5 is out of range"):
         Case().with_(wall={"table_angle_max": 89.5})
+    elastic = SAND_ON_STEEL.with_(
+        wear={"law": "deformation", "deformation_factor": 5e9}, impact={"normal_model": "hertz"}
+    )
+    with pytest.raises(ValueError, match=r"needs the impact's plastic work: impact.normal_model='hertz' is elastic"):
+        wall_law(elastic)
     with pytest.raises(ValueError, match=r"^plate.rigid=true: wear.law='dnv' erodes the plate"):
         wall_law(Case().with_(wear={"law": "dnv"}, plate={"rigid": True}))
+
+
+def test_a_record_the_table_cannot_take_is_named_by_file_row_and_column(tmp_path, local_law):
+    path = tmp_path / "plate.vtu"
+    meshio.write(path, flat_mesh())
+    wall = read_surface(path)
+    records = _stream(wall, 35.0, 17.0)
+    velocity = records.velocity.copy()
+    velocity[0, 2] *= -1.0  # leaves the wall: skipped, so the kept records are shifted by one
+    velocity[4] *= 40.0 / 17.0
+    fast = replace(records, velocity=velocity)
+    hits = hits_on_wall(fast, wall, skip_bad=True)
+    assert hits.skipped == {"leaving_wall": 1}
+    with pytest.raises(ValueError, match=r"^records, row 5, columns u_m_s v_m_s w_m_s: the speed 40 m/s is outside"):
+        record_volumes(local_law, fast, hits)
 
 
 def test_the_sand_rate_scales_by_its_ratio():

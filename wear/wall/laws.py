@@ -98,6 +98,12 @@ def _arrays(angle, speed, diameter, density, count) -> tuple[np.ndarray, ...]:
 _NAMES = ("angle_deg", "speed_m_s", "diameter_m", "density_kg_m3", "count")
 
 
+def _describe(law, constants: str) -> None:
+    """Set a closed form's ``description`` (unless given): the law and its constants."""
+    if not law.description:
+        object.__setattr__(law, "description", f"{LAWS[law.name]}, per record: {constants}")
+
+
 @dataclass(frozen=True)
 class FinnieLaw:
     """Finnie's (1960) cutting per record (:func:`wear.laws.finnie_volume`): ``flow_pressure`` p (Pa),
@@ -108,7 +114,11 @@ class FinnieLaw:
     depth_ratio: float
     cutting_fraction: float
     name: str = "finnie"
-    description: str = LAWS["finnie"]
+    description: str = ""
+
+    def __post_init__(self) -> None:
+        k, psi, c = self.force_ratio, self.depth_ratio, self.cutting_fraction
+        _describe(self, f"p = {self.flow_pressure:g} Pa, K = {k:g}, psi = {psi:g}, c = {c:g}")
 
     def volume(self, angle_deg, speed_m_s, diameter_m, density_kg_m3, count) -> np.ndarray:
         """Eroded volume (m³) of each record: N finnie(m, V, θ)."""
@@ -128,7 +138,10 @@ class OkaLaw:
     e90: float
     k2: float
     name: str = "oka"
-    description: str = LAWS["oka"]
+    description: str = ""
+
+    def __post_init__(self) -> None:
+        _describe(self, f"Hv = {self.hardness:g} Pa, E90 = {self.e90:g} kg/kg, k2 = {self.k2:g}, k3 = 0.19")
 
     def volume(self, angle_deg, speed_m_s, diameter_m, density_kg_m3, count) -> np.ndarray:
         """Eroded volume (m³) of each record: N m E(V, θ, d) / ρ_w."""
@@ -146,7 +159,10 @@ class DnvLaw:
     n: float
     plate_density: float
     name: str = "dnv"
-    description: str = LAWS["dnv"]
+    description: str = ""
+
+    def __post_init__(self) -> None:
+        _describe(self, f"K = {self.K:g} (kg/kg)(m/s)^-n, n = {self.n:g}")
 
     def volume(self, angle_deg, speed_m_s, diameter_m, density_kg_m3, count) -> np.ndarray:
         """Eroded volume (m³) of each record: N m K V^n F(α) / ρ_w."""
@@ -187,24 +203,44 @@ class TableLaw:
     name: str
     description: str
 
+    def refused(self, speed_m_s, density_kg_m3) -> tuple[int, str, str] | None:
+        """The first record the table cannot take, as (its index, the record field: ``"velocity"`` or
+        ``"density"``, what is wrong with it), or None: a speed outside the table, a particle density other than
+        the table's."""
+        speed, rho = np.asarray(speed_m_s, float).reshape(-1), np.asarray(density_kg_m3, float).reshape(-1)
+        outside = np.flatnonzero((speed < self.speed_min) | (speed > self.speed_max))
+        if len(outside):
+            i = int(outside[0])
+            return (
+                i,
+                "velocity",
+                (
+                    f"the speed {speed[i]:.6g} m/s is outside the response table's speeds [{self.speed_min:g}, "
+                    f"{self.speed_max:g}] m/s: widen wall.table_speed_min / wall.table_speed_max"
+                ),
+            )
+        other = np.flatnonzero(np.abs(rho - self.density) > DENSITY_TOLERANCE * self.density)
+        if len(other):
+            i = int(other[0])
+            return (
+                i,
+                "density",
+                (
+                    f"{rho[i]:.6g} kg/m^3 is not the response table's particle density ball.density={self.density:g} "
+                    f"kg/m^3: the {self.name} law's table is for one particle material"
+                ),
+            )
+        return None
+
     def volume(self, angle_deg, speed_m_s, diameter_m, density_kg_m3, count) -> np.ndarray:
-        """Eroded volume (m³) of each record: N m w(V, θ). A speed outside the table or a particle density other
-        than the table's is a one-line ``ValueError`` naming the record's index."""
+        """Eroded volume (m³) of each record: N m w(V, θ). A record the table cannot take (:meth:`refused`) is a
+        one-line ``ValueError`` naming its index."""
         theta, speed, d, rho, n = _arrays(angle_deg, speed_m_s, diameter_m, density_kg_m3, count)
-        outside = (speed < self.speed_min) | (speed > self.speed_max)
-        if outside.any():
-            i = int(np.flatnonzero(outside)[0])
-            raise ValueError(
-                f"speed_m_s[{i}]={speed[i]:.6g} is outside the response table's speeds [{self.speed_min:g}, "
-                f"{self.speed_max:g}] m/s: widen wall.table_speed_min / wall.table_speed_max"
-            )
-        other = np.abs(rho - self.density) > DENSITY_TOLERANCE * self.density
-        if other.any():
-            i = int(np.flatnonzero(other)[0])
-            raise ValueError(
-                f"density_kg_m3[{i}]={rho[i]:.6g} is not the response table's particle density ball.density="
-                f"{self.density:g} kg/m^3: the {self.name} law's table is for one particle material"
-            )
+        bad = self.refused(speed, rho)
+        if bad is not None:
+            i, field_name, why = bad
+            name = "speed_m_s" if field_name == "velocity" else "density_kg_m3"
+            raise ValueError(f"{name}[{i}]: {why}")
         return _table_volumes(self.normal_speed, self.angle, self.volume_per_kg, speed, theta, particle_mass(d, rho), n)
 
 
@@ -249,6 +285,9 @@ def _table_law(case: Case) -> TableLaw:
     speeds, angles = table_axes_of(case)
     w = case.wall
     band = _Band(response, w.table_speed_min, w.table_speed_max, (1.0 + 1e-9) * speeds[1] / speeds[0])
+    # one impact first: a law that cannot run on this case (no plastic work on an elastic normal law) fails in one
+    # impact rather than after the whole table's
+    response.many(speeds[-1:], angles[:1])
     t0 = time.perf_counter()
     # the footprints' resampling grid is not used (only the volumes): the coarsest one
     table = build_response_table(

@@ -31,8 +31,15 @@ def face_sum(n_faces: int, hits: Hits, values: np.ndarray) -> np.ndarray:
 
 def record_volumes(law, records: ImpactRecords, hits: Hits) -> np.ndarray:
     """The eroded volume (m³) of each record by ``law`` (:func:`wear.wall.laws.wall_law`, or any object with its
-    ``volume(angle_deg, speed_m_s, diameter_m, density_kg_m3, count)``); 0 for a skipped record."""
+    ``volume(angle_deg, speed_m_s, diameter_m, density_kg_m3, count)``); 0 for a skipped record. A record the law
+    cannot take (a law's ``refused``, e.g. a speed outside a response table) is a ``ValueError`` naming its file, row
+    and column."""
     kept = hits.kept
+    refused = getattr(law, "refused", None)
+    bad = None if refused is None else refused(hits.speed[kept], records.density[kept])
+    if bad is not None:
+        i, field_name, why = bad
+        raise ValueError(f"{records.where(int(np.flatnonzero(kept)[i]), field_name)}: {why}")
     volume = np.zeros(len(records))
     volume[kept] = law.volume(
         hits.angle[kept], hits.speed[kept], records.diameter[kept], records.density[kept], records.count[kept]
