@@ -32,7 +32,8 @@ from contact.theory import thornton_restitution
 from wear.case import Case, default_case, dump_case, load_case
 from wear.erosion.run import impact_response
 from wear.wall import ImpactRecords, face_sum, hits_on_wall, read_surface, record_volumes, wall_law
-from wear.wall.laws import DnvLaw, FinnieLaw, OkaLaw, TableLaw, check_law_keys, keys_read
+from wear.wall.law_keys import check_law_keys, keys_read
+from wear.wall.laws import DnvLaw, FinnieLaw, OkaLaw, TableLaw
 
 #: Silica sand on a carbon steel, Thornton's normal law and pressure, no FE plate (impactwear calibrate's default).
 SAND_ON_STEEL = default_case("calibrate")

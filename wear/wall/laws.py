@@ -63,8 +63,6 @@ __all__ = [
     "OkaLaw",
     "TableLaw",
     "WallLaw",
-    "check_law_keys",
-    "keys_read",
     "particle_mass",
     "table_axes_of",
     "wall_law",
@@ -271,6 +269,7 @@ class _Band:
     ratio: float
 
     def many(self, normal_speeds, angles) -> list[Footprint]:
+        """The footprints at ``normal_speeds`` (m/s) and ``angles`` (deg), one batched run of those used."""
         cosine = np.cos(np.radians(angles))
         used = (normal_speeds <= self.high * cosine * self.ratio) & (normal_speeds >= self.low * cosine / self.ratio)
         computed = iter(self.response.many(normal_speeds[used], angles[used]))
@@ -340,60 +339,3 @@ def wall_law(case: Case) -> WallLaw:
     if law == "dnv":
         return DnvLaw(w.dnv_K, w.dnv_n, plate.density)
     return _table_law(case)
-
-
-#: The keys of each law (besides ``wear.law``) in the ``[wear]`` table, and the ``[wall]`` keys of the table.
-_WEAR_KEYS = {
-    "finnie": ("cutting_fraction", "force_ratio", "depth_ratio"),
-    "oka": ("oka_e90", "oka_k2"),
-    "dnv": ("dnv_K", "dnv_n"),
-    "local": ("K", "alpha", "beta", "pressure", "speed", "points_across"),
-    "deformation": ("deformation_factor",),
-}
-#: The ``[wall]`` keys of the response table (the others are the wall command's: thickness, exposure, rates).
-WALL_TABLE_KEYS = ("table_speed_min", "table_speed_max", "table_speeds", "table_angles", "table_angle_max")
-_TABLE_KEYS = {
-    "ball": ("radius", "E", "nu", "density", "yield_strength", "name"),
-    "plate": ("rigid", "E", "nu", "density", "yield_strength", "hardness", "name"),
-    "impact": ("friction", "restitution", "normal_model", "tangential_model"),
-    "wall": WALL_TABLE_KEYS,
-}
-
-
-def keys_read(case: Case) -> dict[str, tuple[str, ...]]:
-    """The keys of the ``[ball]``, ``[plate]``, ``[impact]``, ``[wear]`` tables and the table keys of ``[wall]``
-    that :func:`wall_law` reads for ``case`` (table → keys): a command refuses the others at a value other than
-    its default, so that no key is silently ignored. The closed forms read no particle key (the records carry
-    the particles) and only the plate's density and hardness (or yield strength); the table laws read the
-    particle's material and the impact's models, but neither its speed nor its angle (the records'), nor
-    ``impact.limiting_pressure``, ``scheme`` or ``time_step`` (the response table's impacts run on their
-    defaults)."""
-    law = case.wear.law
-    if law in CLOSED_FORM_LAWS:
-        plate = {"finnie": ("rigid", "hardness", "yield_strength", "name"), "dnv": ("rigid", "density", "name")}.get(
-            law, ("rigid", "density", "hardness", "yield_strength", "name")
-        )
-        return {"ball": (), "plate": plate, "impact": (), "wear": ("law", *_WEAR_KEYS[law]), "wall": ()}
-    parts = {"combined": ("cutting", case.wear.cutting, "deformation")}.get(law, (law,))
-    wear = ["law"]
-    for part in parts:
-        wear += [k for k in _WEAR_KEYS.get(part, (part,)) if k not in wear]
-    return {**_TABLE_KEYS, "wear": tuple(wear)}
-
-
-def check_law_keys(case: Case, default: Case) -> Case:
-    """``case`` if every key of ``[ball]``, ``[plate]``, ``[impact]``, ``[wear]`` and the table keys of ``[wall]``
-    (:data:`WALL_TABLE_KEYS`) that the law does not read (:func:`keys_read`) is at its ``default`` (the command's
-    default case), else a one-line ``ValueError`` naming the first other one."""
-    read = keys_read(case)
-    for table, keys in read.items():
-        given, base = getattr(case, table).values(), getattr(default, table).values()
-        candidates = WALL_TABLE_KEYS if table == "wall" else tuple(given)
-        for key in candidates:
-            if key not in keys and given[key] != base[key]:
-                raise ValueError(
-                    f"{table}.{key}={given[key]!r}: the wall's wear.law={case.wear.law!r} does not read it (of "
-                    f"[{table}] it reads {', '.join(keys) if keys else 'nothing'}); leave it out (default "
-                    f"{base[key]!r})"
-                )
-    return case
