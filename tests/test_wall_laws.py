@@ -29,7 +29,7 @@ from wall_cases import flat_mesh
 
 from contact import yield_velocity
 from contact.theory import thornton_restitution
-from wear.case import Case, default_case, dump_case, load_case
+from wear.case import Case, default_case, dump_case, key_reference, load_case
 from wear.erosion.run import impact_response
 from wear.wall import ImpactRecords, face_sum, hits_on_wall, read_surface, record_volumes, wall_law
 from wear.wall.law_keys import check_law_keys, keys_read
@@ -261,11 +261,16 @@ def _stream(wall, theta, speed, per_face=3, count=40.0):
     )
 
 
-def test_a_uniform_stream_gives_each_law_s_volume_times_the_particles_on_every_face(tmp_path, local_law):
+def test_a_uniform_stream_gives_each_law_s_volume_times_the_particles_on_every_face(
+    tmp_path, local_law, deformation_law
+):
     path = tmp_path / "plate.vtu"
     meshio.write(path, flat_mesh())
     wall = read_surface(path)
-    laws = [wall_law(SAND_ON_STEEL.with_(wear={"law": name})) for name in ("finnie", "oka", "dnv")] + [local_law]
+    laws = [wall_law(SAND_ON_STEEL.with_(wear={"law": name})) for name in ("finnie", "oka", "dnv")] + [
+        local_law,
+        deformation_law,
+    ]
     for law in laws:
         records = _stream(wall, 35.0, 17.0)
         hits = hits_on_wall(records, wall)
@@ -314,6 +319,17 @@ def test_a_record_the_table_cannot_take_is_named_by_file_row_and_column(tmp_path
     assert hits.skipped == {"leaving_wall": 1}
     with pytest.raises(ValueError, match=r"^records, row 5, columns u_m_s v_m_s w_m_s: the speed 40 m/s is outside"):
         record_volumes(local_law, fast, hits)
+
+
+def test_the_wall_keys_are_in_the_key_reference():
+    """The docs' key reference (docs/keys.md) is generated from the schema: the [wall] keys with units and range."""
+    text = key_reference()
+    assert "| `wall.thickness` | (absent) | in (0, 10] m | wall thickness for the remaining life (absent: " in text
+    assert (
+        "| `wall.service_time` | `3.15576e7` | in (0, 1e+11] s | service time after which the worn wall is written "
+        "(default: a year" in text
+    )
+    assert "| `wall.table_angle_max` | `89.0` | in [45, 89] deg |" in text
 
 
 def test_the_sand_rate_scales_by_its_ratio():

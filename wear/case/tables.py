@@ -447,7 +447,13 @@ class WallSpec(Table):
         absent="the records' time span, last minus first hit time",
     )
     service_time: float = key(
-        float, YEAR, "service time after which the worn wall is written", "s", low=0.0, low_open=True, high=1e11
+        float,
+        YEAR,
+        "service time after which the worn wall is written (default: a year of 365.25 days)",
+        "s",
+        low=0.0,
+        low_open=True,
+        high=1e11,
     )
     sand_rate: float | None = key(
         float,
