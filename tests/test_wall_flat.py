@@ -16,14 +16,16 @@ import numpy as np
 import pytest
 from wall_cases import flat_mesh, write_csv
 
+from wear.case import Case
 from wear.wall import (
     ImpactRecords,
     concat_walls,
     face_sum,
-    finnie_volumes,
     hits_on_wall,
     read_surface,
     read_table,
+    record_volumes,
+    wall_law,
 )
 
 P, PSI, K, C = 3e9, 2.0, 2.0, 0.5
@@ -60,7 +62,10 @@ def _stream(wall, theta: float, seed: int = 1) -> ImpactRecords:
 
 def _per_face(wall, records):
     hits = hits_on_wall(records, wall)
-    v = finnie_volumes(records, hits, flow_pressure=P, force_ratio=K, depth_ratio=PSI, cutting_fraction=C)
+    case = Case().with_(
+        wear={"law": "finnie", "cutting_fraction": C, "force_ratio": K, "depth_ratio": PSI}, plate={"hardness": P}
+    )
+    v = record_volumes(wall_law(case), records, hits)
     return hits, v, face_sum(len(wall), hits, v)
 
 

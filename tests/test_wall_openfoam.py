@@ -4,7 +4,7 @@ Reference: OpenFOAM's own eroded volume Q (``particleErosion``, Finnie; v1912
 src/lagrangian/intermediate/submodels/CloudFunctionObjects/ParticleErosion/ParticleErosion.C: Q += nParticle m |U|² /
 (p ψ K) f(α) per hit, no cutting fraction, α from the unit normal of the crossed face's tet triangle), written by
 OpenFOAM at the final time. impactwear reads the records and the polyMesh, and its Finnie law (c = 1, OpenFOAM's
-constants read from the case dictionary) reproduces Q on every wall face.
+constants read from the case dictionary, through wear.wall.wall_law) reproduces Q on every wall face.
 """
 
 from __future__ import annotations
@@ -16,14 +16,16 @@ import numpy as np
 import pytest
 from wall_cases import OUTPUTS, RECORDS, erosion_constants
 
+from wear.case import Case
 from wear.wall import (
     face_sum,
-    finnie_volumes,
     hits_on_wall,
     read_patch_field,
     read_patch_post_processing,
     read_polymesh,
     read_surface,
+    record_volumes,
+    wall_law,
 )
 
 
@@ -38,9 +40,12 @@ def _volumes(bend, normal, skip_bad=False):
     wall, records, _ = bend
     c = erosion_constants()
     hits = hits_on_wall(records, wall, normal=normal, skip_bad=skip_bad)
-    v = finnie_volumes(
-        records, hits, flow_pressure=c["p"], force_ratio=c["K"], depth_ratio=c["psi"], cutting_fraction=1.0
+    # OpenFOAM's particleErosion: Finnie with c = 1, its p, psi and K
+    case = Case().with_(
+        wear={"law": "finnie", "cutting_fraction": 1.0, "force_ratio": c["K"], "depth_ratio": c["psi"]},
+        plate={"hardness": c["p"]},
     )
+    v = record_volumes(wall_law(case), records, hits)
     return hits, v, face_sum(len(wall), hits, v)
 
 

@@ -50,6 +50,7 @@ from wear.pressure import PressureHistory, SlidingSpeed
 
 __all__ = [
     "LAWS",
+    "LAW_CONSTANTS",
     "CUTTING_LAWS",
     "ImpactWear",
     "bitter_threshold_velocity",
@@ -80,6 +81,15 @@ LAWS = {
     "dnv": "DNV-RP-O501 (2015) erosion ratio correlation",
 }
 CUTTING_LAWS = ("local", "finnie")
+#: The constants of each law (keys of the case's ``[wear]`` table; Finnie's and Oka's also read the plate's hardness;
+#: ``combined`` has those of its cutting law and of ``deformation``).
+LAW_CONSTANTS = {
+    "local": ("K", "alpha", "beta"),
+    "finnie": ("cutting_fraction", "force_ratio", "depth_ratio"),
+    "deformation": ("deformation_factor",),
+    "oka": ("oka_e90", "oka_k2"),
+    "dnv": ("dnv_K", "dnv_n"),
+}
 
 #: Oka et al. (2005): reference speed (m/s) and particle diameter (m); exponents of silica sand.
 OKA_SPEED, OKA_DIAMETER = 104.0, 326e-6

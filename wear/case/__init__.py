@@ -28,6 +28,7 @@ from wear.case.tables import (
     OutputSpec,
     PlateSpec,
     RepeatSpec,
+    WallSpec,
     WearSpec,
 )
 from wear.case.toml import (
@@ -63,6 +64,7 @@ __all__ = [
     "STAGES",
     "Stage",
     "Table",
+    "WallSpec",
     "WearSpec",
     "apply_override",
     "check_job_case",

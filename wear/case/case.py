@@ -23,6 +23,7 @@ from wear.case.tables import (
     OutputSpec,
     PlateSpec,
     RepeatSpec,
+    WallSpec,
     WearSpec,
 )
 
@@ -47,6 +48,7 @@ class Case:
     erosion: ErosionSpec = field(default_factory=ErosionSpec)
     repeat: RepeatSpec = field(default_factory=RepeatSpec)
     calibration: CalibrationSpec = field(default_factory=CalibrationSpec)
+    wall: WallSpec = field(default_factory=WallSpec)
 
     def __post_init__(self) -> None:
         for f in fields(self):

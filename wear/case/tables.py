@@ -1,12 +1,12 @@
 """The case: every table and key, defined once (type, units, default, valid range, one-line doc).
 
 A :class:`wear.case.Case` holds tables ``[ball]``, ``[plate]``, ``[impact]``, ``[wear]``, ``[fem]``, ``[output]``,
-``[erosion]``, ``[repeat]`` and ``[calibration]``; each job reads the tables it needs (:mod:`wear.case.jobs`). The
-defaults below are those of the main job, ``impactwear run``: a hard alumina ball (R 2.5 mm) hitting a Ti-6Al-4V
-plate at 3 m/s, 30° from the normal, μ 0.3 — about 12 times Thornton's yield speed in the normal direction, so first
-yield is far exceeded and the plastic zone reaches the surface — on the FE plate's own force law (two-way coupling),
-with the paper's wear law (Eq. 15, α = 1, β = 0.3, K = 1e-11 m^0.7 s^-0.7 Pa^-1). SI units; angles in degrees from
-the plate normal.
+``[erosion]``, ``[repeat]``, ``[calibration]`` and ``[wall]``; each job reads the tables it needs
+(:mod:`wear.case.jobs`). The defaults below are those of the main job, ``impactwear run``: a hard alumina ball
+(R 2.5 mm) hitting a Ti-6Al-4V plate at 3 m/s, 30° from the normal, μ 0.3 — about 12 times Thornton's yield speed in
+the normal direction, so first yield is far exceeded and the plastic zone reaches the surface — on the FE plate's own
+force law (two-way coupling), with the paper's wear law (Eq. 15, α = 1, β = 0.3, K = 1e-11 m^0.7 s^-0.7 Pa^-1). SI
+units; angles in degrees from the plate normal.
 
 One module past 400 lines on purpose: the schema is one concept, every key of every table in one place, so that a
 key's meaning, units and range are read (and changed) where the others are.
@@ -35,6 +35,7 @@ __all__ = [
     "ErosionSpec",
     "RepeatSpec",
     "CalibrationSpec",
+    "WallSpec",
     "COUPLINGS",
     "FEM_MODELS",
     "NORMAL_MODELS",
@@ -409,8 +410,132 @@ class CalibrationSpec(Table):
         return bool(self.data) and (name in free or (not free and name == "deformation_factor"))
 
 
+#: One Julian year (s): the service time of the worn wall unless given, and the year of the mm/year rates.
+YEAR = 365.25 * 86400.0
+
+
+@dataclass(frozen=True)
+class WallSpec(Table):
+    """Erosion of a component's wall from CFD or DEM impact records (:mod:`wear.wall`; the particles are the
+    records', the wall material ``[plate]``, the wear law ``[wear]``): the wall ``thickness`` (m; a per-face field of
+    the wall file replaces it), the ``exposure`` (s) the records stand for, the ``service_time`` (s) of the worn
+    wall, the real flow's ``sand_rate`` against the ``cfd_sand_rate`` its run injected (kg/s: every volume is scaled
+    by their ratio), and the response table of an FE-informed law over speed and angle (``table_*``; the closed
+    forms read none of them)."""
+
+    table: ClassVar[str] = "wall"
+    thickness: float | None = key(
+        float,
+        None,
+        "wall thickness for the remaining life",
+        "m",
+        low=0.0,
+        low_open=True,
+        high=10.0,
+        optional=True,
+        absent="no remaining life unless the wall file has a thickness field",
+    )
+    exposure: float | None = key(
+        float,
+        None,
+        "time the records stand for, turning eroded volumes into rates",
+        "s",
+        low=0.0,
+        low_open=True,
+        high=1e10,
+        optional=True,
+        absent="the records' time span, last minus first hit time",
+    )
+    service_time: float = key(
+        float,
+        YEAR,
+        "service time after which the worn wall is written (default: a year of 365.25 days)",
+        "s",
+        low=0.0,
+        low_open=True,
+        high=1e11,
+    )
+    sand_rate: float | None = key(
+        float,
+        None,
+        "particle mass rate of the real flow; volumes scale by sand_rate / cfd_sand_rate",
+        "kg/s",
+        low=0.0,
+        low_open=True,
+        high=1e6,
+        optional=True,
+        absent="no scaling: the records' own rate",
+    )
+    cfd_sand_rate: float | None = key(
+        float,
+        None,
+        "particle mass rate the CFD or DEM run injected (with sand_rate)",
+        "kg/s",
+        low=0.0,
+        low_open=True,
+        high=1e6,
+        optional=True,
+        absent="none: sand_rate needs it",
+    )
+    table_speed_min: float = key(
+        float, 0.1, "response table (FE-informed laws): lowest impact speed", "m/s", low=0.0, low_open=True, high=1000.0
+    )
+    table_speed_max: float = key(
+        float,
+        100.0,
+        "response table (FE-informed laws): highest impact speed",
+        "m/s",
+        low=0.0,
+        low_open=True,
+        high=1000.0,
+    )
+    # at most 50 x 40 = 2000 impacts, wear.erosion.table.MAX_TABLE_ENTRIES
+    table_speeds: int = key(int, 24, "response table (FE-informed laws): number of normal speeds", low=2, high=50)
+    table_angles: int = key(
+        int, 37, "response table (FE-informed laws): number of angles, 0 to table_angle_max", low=2, high=40
+    )
+    table_angle_max: float = key(
+        float,
+        89.0,
+        "response table (FE-informed laws): last angle; the volume goes linearly to 0 at 90 deg",
+        "deg",
+        low=45.0,
+        high=89.0,
+    )
+
+    def check(self) -> None:
+        if (self.sand_rate is None) != (self.cfd_sand_rate is None):
+            given, missing = (
+                ("sand_rate", "cfd_sand_rate") if self.cfd_sand_rate is None else ("cfd_sand_rate", "sand_rate")
+            )
+            raise ValueError(
+                f"wall.{given}={getattr(self, given):g} without wall.{missing}: the volumes scale by "
+                "sand_rate / cfd_sand_rate (kg/s), give both or neither"
+            )
+        if self.table_speed_min >= self.table_speed_max:
+            raise ValueError(
+                f"wall.table_speed_min={self.table_speed_min:g} is not below wall.table_speed_max="
+                f"{self.table_speed_max:g} m/s"
+            )
+
+    def rate_scale(self) -> float:
+        """The factor on every eroded volume: sand_rate / cfd_sand_rate, or 1."""
+        return 1.0 if self.sand_rate is None else self.sand_rate / self.cfd_sand_rate
+
+
 #: The case tables, in order: TOML name → table class.
 TABLES: dict[str, type[Table]] = {
     t.table: t
-    for t in (BallSpec, PlateSpec, ImpactSpec, WearSpec, FemSpec, OutputSpec, ErosionSpec, RepeatSpec, CalibrationSpec)
+    for t in (
+        BallSpec,
+        PlateSpec,
+        ImpactSpec,
+        WearSpec,
+        FemSpec,
+        OutputSpec,
+        ErosionSpec,
+        RepeatSpec,
+        CalibrationSpec,
+        WallSpec,
+    )
 }

@@ -17,18 +17,10 @@ from wear.chain.calibration_data import CalibrationData
 from wear.chain.fit import Constant, LogFit, log_fit
 from wear.chain.forward_model import ForwardModel, check_rows, fe_coupled
 from wear.chain.plate import wear_constants
-from wear.laws import oka_constants
+from wear.laws import LAW_CONSTANTS, oka_constants
 
 __all__ = ["CalibrationResult", "calibrate", "check_data_keys", "law_constants"]
 
-#: Constants of each law that a calibration may fit.
-_CONSTANTS = {
-    "local": ("K", "alpha", "beta"),
-    "finnie": ("cutting_fraction", "force_ratio", "depth_ratio"),
-    "deformation": ("deformation_factor",),
-    "oka": ("oka_e90", "oka_k2"),
-    "dnv": ("dnv_K", "dnv_n"),
-}
 #: The constant fitted when none is named: each law's scale.
 _SCALE = {
     "local": "K",
@@ -48,8 +40,8 @@ def law_constants(case: Case) -> tuple[tuple[str, ...], tuple[str, ...]]:
     law = case.wear.law
     if law == "combined":
         cut = case.wear.cutting
-        return _CONSTANTS[cut] + _CONSTANTS["deformation"], (_SCALE[cut], _SCALE["deformation"])
-    return _CONSTANTS[law], (_SCALE[law],)
+        return LAW_CONSTANTS[cut] + LAW_CONSTANTS["deformation"], (_SCALE[cut], _SCALE["deformation"])
+    return LAW_CONSTANTS[law], (_SCALE[law],)
 
 
 @dataclass(frozen=True, eq=False)

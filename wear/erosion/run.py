@@ -23,7 +23,15 @@ from wear.erosion.result import ErosionResult
 from wear.erosion.stream import Stream
 from wear.erosion.table import MAX_TABLE_ENTRIES, build_response_table, table_axes
 
-__all__ = ["ErosionRun", "erode_case", "erode_angles", "nominal_contact_radius", "MAX_STREAM_ANGLE", "CELLS_PER_RADIUS"]
+__all__ = [
+    "ErosionRun",
+    "erode_case",
+    "erode_angles",
+    "impact_response",
+    "nominal_contact_radius",
+    "MAX_STREAM_ANGLE",
+    "CELLS_PER_RADIUS",
+]
 
 #: Largest stream angle from the normal (deg): beyond it the response table has no footprints.
 MAX_STREAM_ANGLE = 85.0
@@ -107,7 +115,10 @@ def _check_budget(case: Case, angles: list[float]) -> None:
         _axes(case, theta)
 
 
-def _response(case: Case) -> ImpactResponse:
+def impact_response(case: Case) -> ImpactResponse:
+    """The per-impact model of the case's particles (:class:`wear.erosion.ImpactResponse`): ``[ball]``, ``[plate]``,
+    the contact models of ``[impact]`` and the wear law of ``[wear]`` (its pressure source ``"fe"`` replaced, with a
+    warning, by the closed form of ``impact.normal_model``: the batched impacts run no FE plate)."""
     pressure = case.wear.pressure
     if pressure == "fe":  # e.g. a run case given to erode: it holds everything the stream needs but this
         pressure = "thornton" if case.impact.normal_model == "thornton" else "hertz"
@@ -157,7 +168,7 @@ def erode_case(
     override ``impact.angle`` and ``erosion.patch_size``; ``progress``: a progress bar on stderr."""
     theta = _stream_angle(case, angle)
     _check_budget(case, [theta])
-    response, stream = _response(case), _stream(case, theta)
+    response, stream = impact_response(case), _stream(case, theta)
     ero = case.erosion
     speeds, angles = _axes(case, theta)
     t0 = time.perf_counter()

@@ -1,17 +1,19 @@
 """Erosion of a component's wall from CFD or DEM impact records: the impact table (:mod:`wear.wall.records`) read
 from OpenFOAM (:mod:`wear.wall.openfoam`), Ansys Fluent (:mod:`wear.wall.fluent`) or a plain table
 (:mod:`wear.wall.table`), the wall (:mod:`wear.wall.mesh`; an OpenFOAM case's wall patches: :mod:`wear.wall.foam`),
-the records placed on it with their impact angles (:mod:`wear.wall.hits`, :mod:`wear.wall.locate`), per-face sums
-(:mod:`wear.wall.sums`), and from them the rates, remaining life and worn wall (:mod:`wear.wall.worn`). SI units;
-angles in degrees from the wall normal, which points out of the fluid into the wall."""
+the records placed on it with their impact angles (:mod:`wear.wall.hits`, :mod:`wear.wall.locate`), the wear law per
+record (:mod:`wear.wall.laws`), per-face sums (:mod:`wear.wall.sums`), and from them the rates, remaining life and
+worn wall (:mod:`wear.wall.worn`). SI units; angles in degrees from the wall normal, which points out of the fluid
+into the wall."""
 
 from wear.wall.fluent import read_fluent_dpm
 from wear.wall.foam import read_patch_field, read_polymesh
 from wear.wall.hits import Hits, hits_on_wall
+from wear.wall.laws import WallLaw, wall_law
 from wear.wall.mesh import Wall, concat_walls, read_surface
 from wear.wall.openfoam import read_patch_post_processing
 from wear.wall.records import ImpactRecords, concat_records
-from wear.wall.sums import face_sum, finnie_volumes
+from wear.wall.sums import face_sum, record_volumes
 from wear.wall.table import read_table
 from wear.wall.worn import HotSpots, WallWear, hot_spots, remaining_life, wall_wear, worn_mesh, worn_wall
 
@@ -20,11 +22,11 @@ __all__ = [
     "HotSpots",
     "ImpactRecords",
     "Wall",
+    "WallLaw",
     "WallWear",
     "concat_records",
     "concat_walls",
     "face_sum",
-    "finnie_volumes",
     "hits_on_wall",
     "hot_spots",
     "read_fluent_dpm",
@@ -33,7 +35,9 @@ __all__ = [
     "read_polymesh",
     "read_surface",
     "read_table",
+    "record_volumes",
     "remaining_life",
+    "wall_law",
     "wall_wear",
     "worn_mesh",
     "worn_wall",

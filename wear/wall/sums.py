@@ -1,4 +1,4 @@
-r"""Per-face sums of per-impact quantities, and the eroded volume of each impact by a closed-form law.
+r"""Per-face sums of per-impact quantities, and the eroded volume of each impact by a wear law.
 
 A quantity :math:`q_i` of each record i (kept on face :math:`f_i`) sums per face as
 
@@ -7,26 +7,20 @@ A quantity :math:`q_i` of each record i (kept on face :math:`f_i`) sums per face
 one ``np.bincount`` pass; the sum over the faces equals the sum over the kept records (no record counted twice or
 lost). Sums of chunks of records add face by face, which is how a large table is summed in parts.
 
-Finnie's (1960) cutting volume of record i, with :math:`N_i` particles of mass :math:`m_i = \rho_i \pi d_i^3 / 6`
-at speed :math:`V_i` and angle :math:`\alpha_i = 90° - \theta_i` from the surface (:func:`wear.laws.finnie_volume`):
-
-.. math:: W_i = N_i \frac{c\, m_i V_i^2}{p\, \psi K}\, f(\alpha_i), \qquad
-          f(\alpha) = \sin 2\alpha - \frac{6}{K}\sin^2\alpha \ \ (\tan\alpha \le K/6), \qquad
-          \frac{K\cos^2\alpha}{6} \ \ \text{otherwise}.
-
-OpenFOAM's ``particleErosion`` is this with c = 1 (it has no cutting fraction; ``p``, ``psi`` = ψ and ``K`` are its
-coefficients, defaults ψ = K = 2).
+The eroded volume of record i by a wear law of :mod:`wear.wall.laws` (:func:`record_volumes`): the law's
+volume of one particle at the record's angle and speed, times the particles it stands for, and 0 for a record left
+out of the sums (its face −1). OpenFOAM's ``particleErosion`` is Finnie's law with c = 1 (it has no cutting
+fraction; its ``p``, ``psi`` = ψ and ``K`` are ``plate.hardness``, ``wear.depth_ratio`` and ``wear.force_ratio``).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from wear.laws import finnie_volume
 from wear.wall.hits import Hits
 from wear.wall.records import ImpactRecords
 
-__all__ = ["face_sum", "finnie_volumes"]
+__all__ = ["face_sum", "record_volumes"]
 
 
 def face_sum(n_faces: int, hits: Hits, values: np.ndarray) -> np.ndarray:
@@ -35,18 +29,19 @@ def face_sum(n_faces: int, hits: Hits, values: np.ndarray) -> np.ndarray:
     return np.bincount(hits.face[kept], weights=np.asarray(values, float)[kept], minlength=n_faces)
 
 
-def finnie_volumes(
-    records: ImpactRecords,
-    hits: Hits,
-    *,
-    flow_pressure: float,
-    force_ratio: float,
-    depth_ratio: float,
-    cutting_fraction: float,
-) -> np.ndarray:
-    """Finnie's eroded volume of each record (m³; 0 for a skipped one): ``flow_pressure`` p (Pa), ``force_ratio``
-    K, ``depth_ratio`` ψ, ``cutting_fraction`` c (see the module docstring)."""
-    volume = records.count * finnie_volume(
-        records.mass, hits.speed, hits.angle, flow_pressure, force_ratio, depth_ratio, cutting_fraction
+def record_volumes(law, records: ImpactRecords, hits: Hits) -> np.ndarray:
+    """The eroded volume (m³) of each record by ``law`` (:func:`wear.wall.laws.wall_law`, or any object with its
+    ``volume(angle_deg, speed_m_s, diameter_m, density_kg_m3, count)``); 0 for a skipped record. A record the law
+    cannot take (a law's ``refused``, e.g. a speed outside a response table) is a ``ValueError`` naming its file, row
+    and column."""
+    kept = hits.kept
+    refused = getattr(law, "refused", None)
+    bad = None if refused is None else refused(hits.speed[kept], records.density[kept])
+    if bad is not None:
+        i, field_name, why = bad
+        raise ValueError(f"{records.where(int(np.flatnonzero(kept)[i]), field_name)}: {why}")
+    volume = np.zeros(len(records))
+    volume[kept] = law.volume(
+        hits.angle[kept], hits.speed[kept], records.diameter[kept], records.density[kept], records.count[kept]
     )
-    return np.where(hits.kept, volume, 0.0)
+    return volume

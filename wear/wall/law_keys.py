@@ -1,0 +1,63 @@
+"""The keys a wall's wear law reads (:func:`wear.wall.laws.wall_law`), by law, and the refusal of the others: a key
+a wall run accepts is used or refused, never silently ignored. The wall command adds the ``[wall]`` keys it reads
+itself (thickness, exposure, service time, sand rates)."""
+
+from __future__ import annotations
+
+from wear.case import Case
+from wear.laws import LAW_CONSTANTS
+from wear.wall.laws import CLOSED_FORM_LAWS
+
+__all__ = ["WALL_TABLE_KEYS", "check_law_keys", "keys_read"]
+
+#: The ``[wear]`` keys of each law besides ``wear.law``: its constants, and of the local law its pressure source,
+#: sliding-speed model and wear grid.
+_WEAR_KEYS = {**LAW_CONSTANTS, "local": (*LAW_CONSTANTS["local"], "pressure", "speed", "points_across")}
+#: The ``[wall]`` keys of the response table (the others are the wall command's: thickness, exposure, rates).
+WALL_TABLE_KEYS = ("table_speed_min", "table_speed_max", "table_speeds", "table_angles", "table_angle_max")
+_TABLE_KEYS = {
+    "ball": ("radius", "E", "nu", "density", "yield_strength", "name"),
+    "plate": ("rigid", "E", "nu", "density", "yield_strength", "hardness", "name"),
+    "impact": ("friction", "restitution", "normal_model", "tangential_model"),
+    "wall": WALL_TABLE_KEYS,
+}
+
+
+def keys_read(case: Case) -> dict[str, tuple[str, ...]]:
+    """The keys of the ``[ball]``, ``[plate]``, ``[impact]``, ``[wear]`` tables and the table keys of ``[wall]``
+    that :func:`wall_law` reads for ``case`` (table → keys): a command refuses the others at a value other than
+    its default, so that no key is silently ignored. The closed forms read no particle key (the records carry
+    the particles) and of the plate only what their formula takes (density, hardness or yield strength), whether it
+    is rigid, and its name; the table laws read the
+    particle's material and the impact's models, but neither its speed nor its angle (the records'), nor
+    ``impact.limiting_pressure``, ``scheme`` or ``time_step`` (the response table's impacts run on their
+    defaults)."""
+    law = case.wear.law
+    if law in CLOSED_FORM_LAWS:
+        plate = {"finnie": ("rigid", "hardness", "yield_strength", "name"), "dnv": ("rigid", "density", "name")}.get(
+            law, ("rigid", "density", "hardness", "yield_strength", "name")
+        )
+        return {"ball": (), "plate": plate, "impact": (), "wear": ("law", *_WEAR_KEYS[law]), "wall": ()}
+    parts = {"combined": ("cutting", case.wear.cutting, "deformation")}.get(law, (law,))
+    wear = ["law"]
+    for part in parts:
+        wear += [k for k in _WEAR_KEYS.get(part, (part,)) if k not in wear]
+    return {**_TABLE_KEYS, "wear": tuple(wear)}
+
+
+def check_law_keys(case: Case, default: Case) -> Case:
+    """``case`` if every key of ``[ball]``, ``[plate]``, ``[impact]``, ``[wear]`` and the table keys of ``[wall]``
+    (:data:`WALL_TABLE_KEYS`) that the law does not read (:func:`keys_read`) is at its ``default`` (the command's
+    default case), else a one-line ``ValueError`` naming the first other one."""
+    read = keys_read(case)
+    for table, keys in read.items():
+        given, base = getattr(case, table).values(), getattr(default, table).values()
+        candidates = WALL_TABLE_KEYS if table == "wall" else tuple(given)
+        for key in candidates:
+            if key not in keys and given[key] != base[key]:
+                raise ValueError(
+                    f"{table}.{key}={given[key]!r}: the wall's wear.law={case.wear.law!r} does not read it (of "
+                    f"[{table}] it reads {', '.join(keys) if keys else 'nothing'}); leave it out (default "
+                    f"{base[key]!r})"
+                )
+    return case
