@@ -13,7 +13,9 @@ import pytest
 
 from contact import Material, simulate_impact
 from wear import WearLaw, wear_from_impact
+from wear.case import default_case
 from wear.erosion import ImpactResponse, Stream, build_response_table, erode, footprint_on_grid, table_axes
+from wear.erosion.run import impact_response
 
 SAND = Material(E=94e9, nu=0.17, density=2650.0, name="silica")
 STEEL = Material(E=200e9, nu=0.3, density=7850.0, yield_strength=350e6, name="steel")
@@ -268,3 +270,27 @@ def test_erosion_rate_converges_with_the_grid(rough_table):
     ]
     se = math.sqrt(sum(r.var(ddof=1) / r.size for r in rates))
     assert abs(rates[1].mean() - rates[0].mean()) < 3 * se, (rates[0].mean(), rates[1].mean(), se)
+
+
+def test_erode_honours_the_impact_integration_keys():
+    """``impact.limiting_pressure``, ``scheme`` and ``time_step`` reach the stream's impacts: a footprint's contact
+    radius is the one ``contact.simulate_impact`` gives with the same keys, and a limiting pressure of 3e8 Pa gives a
+    wider contact than one of 6e8 Pa (the flattened pressure carries the force over a larger area)."""
+    base = default_case("erode")
+    keys = {"normal_model": "thornton", "limiting_pressure": 3e8, "scheme": "paper", "time_step": 2e-8}
+    case = base.with_(impact=keys)
+    footprint = impact_response(case)(2.0, 30.0)
+    direct = simulate_impact(
+        case.ball.radius,
+        case.ball.material(),
+        case.plate.material(),
+        2.0 / math.cos(math.radians(30.0)),
+        30.0,
+        case.impact.friction,
+        restitution=case.impact.restitution,
+        tangential_model=case.impact.tangential_model,
+        **keys,
+    )
+    assert footprint.length_scale == pytest.approx(direct.max_contact_radius, rel=1e-12)
+    plain = impact_response(case.with_(impact={"limiting_pressure": 6e8}))(2.0, 30.0)
+    assert footprint.length_scale > 1.05 * plain.length_scale

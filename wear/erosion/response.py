@@ -82,7 +82,8 @@ class ImpactResponse:
     ``"thornton"``; ``speed_model`` ``"sliding"`` or ``"kinematic"``; ``restitution``, ``normal_model``
     (``"hertz"``/``"thornton"``), ``tangential_model`` as in ``contact.simulate_impact``; ``points_across``
     wear-grid points across the contact diameter; ``wear_law`` the law by name (:data:`wear.laws.LAWS`) and
-    ``constants`` its constants (the ``[wear]`` keys and the plate's ``hardness``).
+    ``constants`` its constants (the ``[wear]`` keys and the plate's ``hardness``); ``limiting_pressure`` (Pa),
+    ``scheme`` and ``time_step`` (s) of the impacts, as in ``contact.simulate_impacts``.
     """
 
     radius: float
@@ -98,6 +99,9 @@ class ImpactResponse:
     points_across: int = 64
     wear_law: str = "local"
     constants: Mapping[str, float | str | None] = field(default_factory=dict)
+    limiting_pressure: float | None = None
+    scheme: str = "verlet"
+    time_step: float | None = None
 
     def __post_init__(self) -> None:
         check_number("radius", self.radius, low=0.0, low_open=True, high=10.0, units="m", what="particle radius")
@@ -131,6 +135,9 @@ class ImpactResponse:
             restitution=self.restitution,
             normal_model=self.normal_model,
             tangential_model=self.tangential_model,
+            limiting_pressure=self.limiting_pressure,
+            scheme=self.scheme,
+            time_step=self.time_step,
             histories=True,
         )
         constants = {**self.constants, "K": self.law.K, "alpha": self.law.alpha, "beta": self.law.beta}

@@ -145,6 +145,9 @@ def impact_response(case: Case) -> ImpactResponse:
         points_across=w.points_across,
         wear_law=w.law,
         constants={**w.values(), "hardness": case.plate.hardness},
+        limiting_pressure=imp.limiting_pressure,
+        scheme=imp.scheme,
+        time_step=imp.time_step,
     )
 
 

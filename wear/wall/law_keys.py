@@ -18,7 +18,15 @@ WALL_TABLE_KEYS = ("table_speed_min", "table_speed_max", "table_speeds", "table_
 _TABLE_KEYS = {
     "ball": ("radius", "E", "nu", "density", "yield_strength", "name"),
     "plate": ("rigid", "E", "nu", "density", "yield_strength", "hardness", "name"),
-    "impact": ("friction", "restitution", "normal_model", "tangential_model"),
+    "impact": (
+        "friction",
+        "restitution",
+        "normal_model",
+        "tangential_model",
+        "limiting_pressure",
+        "scheme",
+        "time_step",
+    ),
     "wall": WALL_TABLE_KEYS,
 }
 
@@ -29,9 +37,8 @@ def keys_read(case: Case) -> dict[str, tuple[str, ...]]:
     its default, so that no key is silently ignored. The closed forms read no particle key (the records carry
     the particles) and of the plate only what their formula takes (density, hardness or yield strength), whether it
     is rigid, and its name; the table laws read the
-    particle's material and the impact's models, but neither its speed nor its angle (the records'), nor
-    ``impact.limiting_pressure``, ``scheme`` or ``time_step`` (the response table's impacts run on their
-    defaults)."""
+    particle's material and the impact's models and integration, but neither its speed nor its angle (the
+    records')."""
     law = case.wear.law
     if law in CLOSED_FORM_LAWS:
         plate = {"finnie": ("rigid", "hardness", "yield_strength", "name"), "dnv": ("rigid", "density", "name")}.get(
