@@ -17,9 +17,10 @@ the number of workers. The mean speed of a face's particles is :math:`S_f / N_f`
 **The law** is any object with ``volume(angle_deg, speed_m_s, diameter_m, density_kg_m3, count) -> ndarray``: the
 eroded volume (m³) of each record, given arrays of equal length (``count``: particles per record).
 
-**Memory.** At most :func:`in_flight` chunks are read or summed at a time (the next is submitted as a result comes
-back), each needing about :data:`BYTES_PER_RECORD` per record; :func:`chunk_rows_for` is the largest chunk that
-fits the budget of :mod:`wear.case.budget`, and a plan of larger chunks is refused before any work.
+**Memory.** Each worker reads and sums one chunk at a time, needing about :data:`BYTES_PER_RECORD` per record;
+at most :func:`in_flight` chunks are submitted ahead (the next as a result comes back) and their per-face results
+wait to be added in order. :func:`chunk_rows_for` is the largest chunk that fits the budget of
+:mod:`wear.case.budget`, and a plan of larger chunks is refused before any work.
 """
 
 from __future__ import annotations
@@ -54,9 +55,11 @@ __all__ = [
 
 #: Edges (deg from the normal) of the angle histogram's bins by default: 10° wide.
 DEFAULT_ANGLE_EDGES_DEG = tuple(float(a) for a in range(0, 91, 10))
-#: Peak memory (B) per record of a chunk being read and summed: the text of a CSV row (~1 kB as Python strings),
-#: the impact table (~150 B), the hits and the law's temporaries; an upper bound (``benchmarks/bench_wall.py``).
-BYTES_PER_RECORD = 2500.0
+#: Peak memory (B) per record of a chunk being read and summed, by format: its text as Python strings (a CSV row,
+#: a 40-column OpenFOAM line) or its Arrow columns, the impact table, the hits and the law's temporaries. Measured
+#: (tracemalloc, 2e5-row chunks on a 1e5-face wall, Finnie): 680 (Parquet), 800 (CSV), 2600 (OpenFOAM v1912's
+#: lines); these bounds add half (and Arrow's own memory, which tracemalloc does not see).
+BYTES_PER_RECORD = {"parquet": 1000.0, "csv": 1200.0, "openfoam": 4000.0}
 #: Largest chunk (rows) :func:`chunk_rows_for` gives: bigger chunks are not faster.
 MAX_CHUNK_ROWS = 1_000_000
 
@@ -176,19 +179,24 @@ def in_flight(workers: int) -> int:
     return 2 * max(workers, 1)
 
 
-def _memory_need(rows: float, wall: Wall, workers: int, edges: Sequence[float]) -> float:
-    """Upper bound of the peak memory (B) with chunks of ``rows`` rows: the records in flight, and the wall, its
-    grid and the per-face sums (in every worker and the results waiting)."""
+def _memory_need(rows: float, per_record: float, wall: Wall, workers: int, edges: Sequence[float]) -> float:
+    """Upper bound of the peak memory (B) with chunks of ``rows`` rows of ``per_record`` B: the chunks being
+    summed (one per worker), and the wall, its grid and the per-face sums (in every worker and the results
+    waiting)."""
     per_face = 8.0 * (5 + len(edges))
     fixed = (workers + 1) * (2000.0 * len(wall)) + (in_flight(workers) + 2) * per_face * len(wall)
-    return fixed + in_flight(workers) * rows * BYTES_PER_RECORD
+    return fixed + workers * rows * per_record
 
 
-def chunk_rows_for(wall: Wall, workers: int = 1, edges: Sequence[float] = DEFAULT_ANGLE_EDGES_DEG) -> int:
-    """The largest chunk (rows, at most :data:`MAX_CHUNK_ROWS`) whose records in flight on ``workers`` workers fit
-    the memory budget (:func:`wear.case.budget.memory_budget`; see the module docstring)."""
-    free = memory_budget() - _memory_need(0, wall, workers, edges)
-    return int(max(1, min(MAX_CHUNK_ROWS, free // (in_flight(workers) * BYTES_PER_RECORD))))
+def chunk_rows_for(
+    wall: Wall, workers: int = 1, format: str = "openfoam", edges: Sequence[float] = DEFAULT_ANGLE_EDGES_DEG
+) -> int:
+    """The largest chunk (rows, at most :data:`MAX_CHUNK_ROWS`) of records of ``format`` whose chunks being summed
+    on ``workers`` workers fit the memory budget (:func:`wear.case.budget.memory_budget`; see the module
+    docstring)."""
+    per_record = BYTES_PER_RECORD[format]
+    free = memory_budget() - _memory_need(0, per_record, wall, workers, edges)
+    return int(max(1, min(MAX_CHUNK_ROWS, free // (workers * per_record))))
 
 
 @dataclass(frozen=True, eq=False)
@@ -270,11 +278,12 @@ def erode_wall(
         )
     chunks = list(chunks)
     if chunks:
+        per_record = max(BYTES_PER_RECORD.get(c.format, max(BYTES_PER_RECORD.values())) for c in chunks)
         check_budget(
             "chunk_rows",
             max(c.rows for c in chunks),
-            lambda rows: _memory_need(rows, wall, workers, edges),
-            what=f"the records of {in_flight(workers)} chunks in flight on {workers} workers",
+            lambda rows: _memory_need(rows, per_record, wall, workers, edges),
+            what=f"the records of a chunk on each of {workers} workers",
             valid=(1, MAX_CHUNK_ROWS),
             context=f"{chunks[0].path}: ",
         )

@@ -1,0 +1,268 @@
+"""Records read in chunks and summed per face on this process, a process pool or Dask (wear.wall.sources,
+wear.wall.engine), and the numba grid for the nearest face (wear.wall.grid).
+
+References: the chunked result against the whole files read at once (wear.wall.openfoam, wear.wall.table and the
+per-face sums of wear.wall.sums), against OpenFOAM's own eroded volume Q of the committed v1912 pipe-bend run
+(examples/openfoam_bend, ``particleErosion``, Finnie: see tests/test_wall_openfoam.py), against closed forms (the
+particle mass ρπd³/6, the mean of given speeds, the bins of given angles), and the grid against the exact k-d tree
+search of wear.wall.locate.nearest_faces.
+"""
+
+from __future__ import annotations
+
+import gzip
+import math
+import re
+from dataclasses import dataclass
+
+import numpy as np
+import pyarrow as pa
+import pyarrow.parquet as pq
+import pytest
+from wall_cases import OUTPUTS, RECORDS, erosion_constants, flat_mesh, write_csv
+
+from wear.laws import finnie_volume
+from wear.wall import (
+    concat_records,
+    face_sum,
+    finnie_volumes,
+    hits_on_wall,
+    read_patch_field,
+    read_patch_post_processing,
+    read_polymesh,
+    read_surface,
+    read_table,
+)
+from wear.wall.engine import chunk_rows_for, erode_wall
+from wear.wall.grid import face_grid
+from wear.wall.locate import distance_to_faces, nearest_faces
+from wear.wall.sources import Chunk, plan_chunks, read_chunk
+
+
+@dataclass(frozen=True)
+class Finnie:
+    """A test double of a wall law: Finnie's volume (wear.laws.finnie_volume) of each record, count particles."""
+
+    flow_pressure: float
+    force_ratio: float = 2.0
+    depth_ratio: float = 2.0
+    cutting_fraction: float = 1.0
+    name: str = "finnie"
+
+    def volume(self, angle_deg, speed_m_s, diameter_m, density_kg_m3, count):
+        mass = density_kg_m3 * math.pi * diameter_m**3 / 6.0
+        return count * finnie_volume(
+            mass, speed_m_s, angle_deg, self.flow_pressure, self.force_ratio, self.depth_ratio, self.cutting_fraction
+        )
+
+
+@pytest.fixture(scope="module")
+def bend():
+    wall = read_polymesh(OUTPUTS)
+    c = erosion_constants()
+    law = Finnie(c["p"], c["K"], c["psi"])
+    return wall, law, read_patch_post_processing(RECORDS, wall)
+
+
+def _same_records(parts, whole):
+    got = concat_records(parts)
+    assert [got.files[i] for i in got.file_index] == [whole.files[i] for i in whole.file_index]
+    assert np.array_equal(got.row, whole.row)
+    for name in ("position", "velocity", "diameter", "density", "count", "time", "face"):
+        assert np.array_equal(getattr(got, name), getattr(whole, name)), name
+
+
+@pytest.mark.parametrize("chunk_rows", [1, 97, 1000, 10**6])
+def test_the_plan_of_the_openfoam_folder_reads_every_row_once(bend, chunk_rows):
+    wall, _, whole = bend
+    chunks = plan_chunks(RECORDS, chunk_rows)
+    assert sum(c.rows for c in chunks) == len(whole) == 4528  # the README's count of hits
+    assert all(c.format == "openfoam" and c.serial for c in chunks)
+    if chunk_rows > 1:
+        _same_records([read_chunk(c, wall) for c in chunks], whole)
+        normal = concat_records([read_chunk(c, wall) for c in chunks]).normal
+        assert np.array_equal(normal, whole.normal)
+
+
+def _table_rows(n, rng):
+    """n records on the flat wall of flat_mesh (z = 0, fluid above), falling at random angles."""
+    position = np.column_stack([rng.random(n) * 0.04, rng.random(n) * 0.03, np.zeros(n)])
+    velocity = np.column_stack([rng.normal(size=n), rng.normal(size=n), -1.0 - rng.random(n)]) * 10.0
+    d = 1e-4 * (1.0 + rng.random(n))
+    return np.column_stack([position, velocity, d, np.full(n, 2650.0), 1.0 + rng.integers(0, 5, n)])
+
+
+HEADER = ["x_m", "y_m", "z_m", "u_m_s", "v_m_s", "w_m_s", "diameter_m", "density_kg_m3", "particles"]
+
+
+@pytest.mark.parametrize("gz", [False, True])
+@pytest.mark.parametrize("chunk_rows", [1, 3, 7, 100])
+def test_the_plan_of_a_csv_file_reads_every_row_once(tmp_path, gz, chunk_rows):
+    rows = [[repr(float(v)) for v in r] for r in _table_rows(23, np.random.default_rng(1))]
+    rows.insert(9, [""] * 0)  # an empty row: counted, skipped
+    path = write_csv(tmp_path / "r.csv", HEADER, rows)
+    if gz:
+        path = tmp_path / "r.csv.gz"
+        path.write_bytes(gzip.compress((tmp_path / "r.csv").read_bytes()))
+    chunks = plan_chunks(path, chunk_rows)
+    assert [c.start_row for c in chunks] == list(range(0, 24, chunk_rows))
+    assert sum(c.rows for c in chunks) == 24
+    assert all((c.offset is None) == gz for c in chunks)
+    whole = read_table(path)
+    assert whole.row.tolist() == [*range(1, 10), *range(11, 25)]
+    _same_records([read_chunk(c, None) for c in chunks], whole)
+
+
+def test_the_plan_of_a_parquet_file_is_its_row_groups(tmp_path):
+    values = _table_rows(50, np.random.default_rng(2))
+    path = tmp_path / "r.parquet"
+    pq.write_table(pa.table({h: values[:, j] for j, h in enumerate(HEADER)}), path, row_group_size=12)
+    chunks = plan_chunks(path, 1000)
+    assert [(c.start_row, c.rows) for c in chunks] == [(0, 12), (12, 12), (24, 12), (36, 12), (48, 2)]
+    _same_records([read_chunk(c, None) for c in chunks], read_table(path))
+    assert np.array_equal(read_table(path).position, values[:, :3])
+
+
+def test_the_engine_reproduces_the_single_read_sums_and_openfoam_s_q(bend):
+    wall, law, records = bend
+    c = erosion_constants()
+    hits = hits_on_wall(records, wall)
+    volume = finnie_volumes(
+        records, hits, flow_pressure=c["p"], force_ratio=c["K"], depth_ratio=c["psi"], cutting_fraction=1.0
+    )
+    single = face_sum(len(wall), hits, volume)
+    q = read_patch_field(OUTPUTS / "kinematicCloudQ", wall)
+    sums = erode_wall(plan_chunks(RECORDS, 500), wall, law, progress=False)
+    assert np.allclose(sums.volume_m3, single, rtol=1e-12, atol=1e-12 * single.max())
+    assert np.allclose(sums.volume_m3, q, rtol=1e-12, atol=1e-12 * q.max())
+    assert (sums.volume_m3 > 0).sum() == 756  # the faces OpenFOAM's Q is non-zero on (README)
+    assert sums.records.sum() == sums.records_read == 4528 and sums.skipped == {}
+
+
+def test_mass_and_particles_are_conserved(bend):
+    """Σ over faces of the delivered mass = Σ over records of nParticle ρ π d³ / 6 (closed form, from the records)."""
+    wall, law, records = bend
+    sums = erode_wall(plan_chunks(RECORDS, 333), wall, law, progress=False)
+    mass = records.count * records.density * math.pi * records.diameter**3 / 6.0
+    assert sums.mass_kg.sum() == pytest.approx(mass.sum(), rel=1e-13)
+    assert sums.mass_read_kg == pytest.approx(mass.sum(), rel=1e-13)
+    assert sums.particles.sum() == pytest.approx(records.count.sum(), rel=1e-14)
+    assert sums.angle_histogram.sum() == pytest.approx(records.count.sum(), rel=1e-14)
+    # the README: 5e-4 kg of sand injected, and every one of the 1000 parcels hit a wall at least once
+    assert sums.mass_kg.sum() > 0.999 * 5e-4
+
+
+def test_pool_and_dask_give_the_serial_sums(bend):
+    wall, law, _ = bend
+    serial = erode_wall(plan_chunks(RECORDS, 400), wall, law, progress=False)
+    pool = erode_wall(plan_chunks(RECORDS, 400), wall, law, workers=2, progress=False)
+    other = erode_wall(plan_chunks(RECORDS, 1777), wall, law, workers=2, progress=False)
+    dask = erode_wall(plan_chunks(RECORDS, 700), wall, law, workers=2, scheduler="local", progress=False)
+    for name in ("volume_m3", "mass_kg", "records", "particles", "speed_sum_m_s", "angle_histogram"):
+        assert np.array_equal(getattr(pool, name), getattr(serial, name)), name  # the same chunks, added in order
+        for result in (other, dask):
+            assert np.allclose(getattr(result, name), getattr(serial, name), rtol=1e-13, atol=0), name
+
+
+def test_speed_and_angle_statistics_against_the_given_records(tmp_path):
+    """Records of known speed and angle on one face of a flat wall: the face's mean speed is the particle-weighted
+    mean of the given speeds, its histogram the particles at the given angles."""
+    wall = read_surface(_write_flat(tmp_path))
+    centre = wall.centre[5]
+    rows = []
+    for theta, speed, n in ((5.0, 10.0, 1.0), (35.0, 20.0, 3.0), (89.0, 30.0, 2.0), (35.0, 40.0, 4.0)):
+        t = math.radians(theta)
+        rows.append([*centre, speed * math.sin(t), 0.0, -speed * math.cos(t), 1e-4, 2650.0, n])
+    chunks = plan_chunks(write_csv(tmp_path / "r.csv", HEADER, rows), 2)
+    sums = erode_wall(chunks, wall, Finnie(1e9), progress=False, histogram_bins_deg=[0, 30, 60, 90])
+    assert sums.records[5] == 4 and sums.records.sum() == 4
+    assert sums.mean_speed_m_s[5] == pytest.approx((10 + 60 + 60 + 160) / 10, rel=1e-14)
+    assert sums.angle_histogram[5].tolist() == [1.0, 7.0, 2.0]
+    assert np.isnan(sums.mean_speed_m_s[0])
+
+
+def _write_flat(tmp_path):
+    import meshio
+
+    path = tmp_path / "flat.vtu"
+    meshio.write(path, flat_mesh())
+    return path
+
+
+def test_a_bad_row_in_a_later_chunk_names_the_file_and_its_row(tmp_path):
+    rows = [[repr(float(v)) for v in r] for r in _table_rows(20, np.random.default_rng(3))]
+    rows[12][6] = "-1e-4"  # row 13: a negative diameter, in the third chunk of 5 rows
+    path = write_csv(tmp_path / "r.csv", HEADER, rows)
+    wall = read_surface(_write_flat(tmp_path))
+    for workers in (1, 2):
+        with pytest.raises(ValueError, match=rf"^{re.escape(str(path))}, row 13, column diameter_m: -0\.0001 is out"):
+            erode_wall(plan_chunks(path, 5), wall, Finnie(1e9), workers=workers, progress=False)
+
+
+def test_a_bad_value_in_a_parquet_row_group_names_its_row(tmp_path):
+    values = _table_rows(30, np.random.default_rng(4))
+    values[17, 4] = np.nan
+    path = tmp_path / "r.parquet"
+    pq.write_table(pa.table({h: values[:, j] for j, h in enumerate(HEADER)}), path, row_group_size=10)
+    wall = read_surface(_write_flat(tmp_path))
+    with pytest.raises(ValueError, match=r"r\.parquet, row 18, columns u_m_s v_m_s w_m_s: .* is not a finite number"):
+        erode_wall(plan_chunks(path, 10), wall, Finnie(1e9), progress=False)
+
+
+def test_skipped_records_are_counted_not_summed(tmp_path):
+    values = _table_rows(10, np.random.default_rng(5))
+    values[4, 5] = 7.0  # row 5 leaves the wall (w > 0 with the fluid above)
+    path = write_csv(tmp_path / "r.csv", HEADER, [[repr(float(v)) for v in r] for r in values])
+    wall = read_surface(_write_flat(tmp_path))
+    sums = erode_wall(plan_chunks(path, 3), wall, Finnie(1e9), progress=False, skip_bad=True)
+    mass = values[:, 8] * 2650.0 * math.pi * values[:, 6] ** 3 / 6.0
+    assert sums.skipped == {"leaving_wall": 1} and sums.records.sum() == 9 and sums.records_read == 10
+    assert sums.mass_kg.sum() == pytest.approx(mass.sum() - mass[4], rel=1e-13)
+
+
+def test_chunks_too_large_for_the_memory_budget_are_refused_before_any_work(bend):
+    wall, law, _ = bend
+    huge = [Chunk("missing.csv", "csv", 0, 10**9)]
+    fits = chunk_rows_for(wall, 2, "csv")
+    with pytest.raises(ValueError, match=rf"^missing\.csv: chunk_rows=1e\+09 needs .* give chunk_rows <= {fits}$"):
+        erode_wall(huge, wall, law, workers=2, progress=False)
+
+
+@pytest.mark.parametrize("bad", [0, 1.5, -3])
+def test_chunk_rows_and_workers_are_checked(bend, bad):
+    with pytest.raises(ValueError, match=rf"^chunk_rows={bad!r} is out of range"):
+        plan_chunks(RECORDS, bad)
+    with pytest.raises(ValueError, match=rf"^workers={bad!r} is out of range"):
+        erode_wall([], bend[0], bend[1], workers=bad, progress=False)
+
+
+def test_the_grid_finds_the_exact_nearest_face(bend):
+    """Random points near the bend's wall, anywhere around it and at its vertices: the grid's distance is the k-d
+    tree search's and the exact distance (wear.wall.locate.distance_to_faces) to both searches' faces, which are
+    the same face but at ties (a point as near to two faces: at a shared edge or vertex)."""
+    wall = bend[0]
+    grid = face_grid(wall)
+    rng = np.random.default_rng(6)
+    low, high = wall.points.min(axis=0), wall.points.max(axis=0)
+    anywhere = low - 0.2 * (high - low) + rng.random((3000, 3)) * 1.4 * (high - low)
+    faces = rng.integers(0, len(wall), 3000)
+    near = wall.centre[faces] + 1e-3 * rng.normal(size=(3000, 3))
+    vertices = wall.points[rng.integers(0, len(wall.points), 200)]  # ties between every face at a vertex
+    for points in (anywhere, near, vertices):
+        face, distance = grid.nearest(points)
+        exact_face, exact = nearest_faces(wall, points)
+        assert np.array_equal(distance, exact)
+        assert np.array_equal(distance, distance_to_faces(wall, points, face))
+        assert np.array_equal(distance_to_faces(wall, points, exact_face), distance)  # where the faces differ: a tie
+
+
+def test_the_grid_is_used_for_records_without_a_face(tmp_path):
+    values = _table_rows(200, np.random.default_rng(7))
+    path = write_csv(tmp_path / "r.csv", HEADER, [[repr(float(v)) for v in r] for r in values])
+    wall = read_surface(_write_flat(tmp_path))
+    records = read_table(path)
+    reference = hits_on_wall(records, wall)
+    with_grid = hits_on_wall(records, wall, locator=face_grid(wall))
+    assert np.array_equal(with_grid.distance, reference.distance)
+    assert np.array_equal(distance_to_faces(wall, records.position, with_grid.face), reference.distance)
+    assert np.array_equal(with_grid.angle, reference.angle)
