@@ -13,7 +13,8 @@ Side by side in one run, on a synthetic pipe wall of ``--faces`` triangles (10�
 3. ``--impacts`` (10⁸) synthetic impacts written as Parquet (row groups of 5 · 10⁵) in a temporary folder, summed by
    :func:`wear.wall.engine.erode_wall` on 2 worker processes: wall time and peak memory (Linux's ``VmHWM``: this
    process's, reset before the run, and each worker's, read while it runs; the peak of the whole run is at most
-   their sum); and 1 worker against 2 on the first ``--compare`` impacts.
+   their sum); and 1 worker against 2 on the first ``--compare`` impacts, beside the speed-up of a pure-Python
+   loop on 2 processes against 1 (the cores the run gets on a shared machine).
 
 Goals (the issue): ≥ 1e7 impacts/s/core for a closed-form law, ≥ 1e6 for a response-table law; 10⁸ impacts on a
 10⁵-face wall on 2 cores in ≤ 5 min with ≤ 2 GB. The machine's load is printed (other work shares its cores).
@@ -34,6 +35,7 @@ from dataclasses import dataclass
 import numba
 import numpy as np
 
+from wear.case.workers import worker_pool
 from wear.erosion.table import table_entries
 from wear.laws import finnie_volume
 from wear.wall.engine import DEFAULT_ANGLE_EDGES_DEG, chunk_sums, erode_wall
@@ -223,6 +225,23 @@ class PeakMemory:
         return self._hwm("self"), sorted(self.children.values(), reverse=True)
 
 
+def _spin(n: int) -> float:
+    t0 = time.perf_counter()
+    total = 0
+    for i in range(n):
+        total += i
+    return time.perf_counter() - t0
+
+
+def parallel_cores(n: int = 10_000_000) -> float:
+    """The cores this run gets now: a pure-Python loop on 1 process against the same loop on each of 2 at once
+    (2 on an idle 2-core machine; less when other work shares the cores)."""
+    one = _spin(n)
+    with worker_pool(2) as pool:
+        two = list(pool.map(_spin, [n, n]))
+    return 2.0 * one / max(two)
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--faces", type=int, default=100_000)
@@ -285,14 +304,16 @@ def main(argv: list[str] | None = None) -> int:
         part = chunks[: max(1, int(args.compare) // 500_000)]
         rows = sum(c.rows for c in part)
         times = {}
+        cores = parallel_cores()
         for workers in (1, 2):
             t0 = time.perf_counter()
             sums = erode_wall(part, wall, finnie, workers=workers, progress=False)
             times[workers] = time.perf_counter() - t0
             assert sums.records.sum() == rows
         print(
-            f"   {rows:.3g} impacts: 1 worker {times[1]:.1f} s, 2 workers {times[2]:.1f} s, "
-            f"speed-up {times[1] / times[2]:.2f} (load average now {os.getloadavg()[0]:.2f})"
+            f"   {rows:.3g} impacts: 1 worker (this process) {times[1]:.1f} s, 2 workers {times[2]:.1f} s, "
+            f"speed-up {times[1] / times[2]:.2f}; a pure-Python loop on 2 processes against 1 at the same time: "
+            f"{cores:.2f} (the cores this run gets; load average {os.getloadavg()[0]:.2f})"
         )
         del impacts, points, angle, speed, face, distance
         peak = PeakMemory()

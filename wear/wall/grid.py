@@ -32,11 +32,12 @@ CELLS_PER_TRIANGLE = 2.0
 
 @dataclass(frozen=True, eq=False)
 class FaceGrid:
-    """A uniform grid of a wall's fan triangles (see the module docstring): ``corners`` (t, 3, 3) (m), ``face``
-    (t,) the wall face of each triangle, ``origin`` (3,) (m) and ``cell`` h (m) and ``shape`` (3,) of the grid,
-    and the triangles of cell k: ``items[start[k]:start[k + 1]]`` (cells numbered x fastest)."""
+    """A uniform grid of a wall's fan triangles (see the module docstring): ``face`` (t,) the wall face of each
+    triangle, ``origin`` (3,) (m) and ``cell`` h (m) and ``shape`` (3,) of the grid, and the triangles of cell k:
+    ``items[start[k]:start[k + 1]]`` (cells numbered x fastest), their corners (m) ``packed[start[k]:start[k + 1]]``
+    (each cell's triangles side by side in memory: a search reads a few blocks, not scattered triangles)."""
 
-    corners: np.ndarray
+    packed: np.ndarray
     face: np.ndarray
     origin: np.ndarray
     cell: float
@@ -46,11 +47,26 @@ class FaceGrid:
 
     def nearest(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The wall face nearest to each point (n, 3) (m) and its distance (m)."""
-        points = np.ascontiguousarray(points, dtype=float).reshape(-1, 3)
+        points = np.asarray(points, dtype=float).reshape(-1, 3)
+        # searched in the order of their cells: neighbouring searches read the same memory (3x faster on 1e5 faces)
+        ijk = np.clip(((points - self.origin) / self.cell).astype(np.int64), 0, self.shape - 1)
+        order = np.argsort((ijk[:, 2] * self.shape[1] + ijk[:, 1]) * self.shape[0] + ijk[:, 0])
         tri = np.empty(len(points), np.int64)
         distance = np.empty(len(points))
-        _nearest(points, self.corners, self.origin, self.cell, self.shape, self.start, self.items, tri, distance)
-        return self.face[tri], distance
+        _nearest(
+            np.ascontiguousarray(points[order]),
+            self.packed,
+            self.origin,
+            self.cell,
+            self.shape,
+            self.start,
+            self.items,
+            tri,
+            distance,
+        )
+        face, out = np.empty(len(points), np.int64), np.empty(len(points))
+        face[order], out[order] = self.face[tri], distance
+        return face, out
 
 
 def face_grid(wall: Wall) -> FaceGrid:
@@ -73,7 +89,8 @@ def face_grid(wall: Wall) -> FaceGrid:
     h = large
     shape = np.maximum(np.ceil(extent / h), 1).astype(np.int64)
     start, items = _fill(corners, low, h, shape)
-    return FaceGrid(corners=corners, face=face, origin=low, cell=h, shape=shape, start=start, items=items)
+    packed = np.ascontiguousarray(corners[items])
+    return FaceGrid(packed=packed, face=face, origin=low, cell=h, shape=shape, start=start, items=items)
 
 
 @numba.njit(cache=True)
@@ -115,7 +132,8 @@ def _fill(corners, origin, h, shape):
 
 @numba.njit(cache=True, inline="always")
 def _distance(px, py, pz, corners, t):
-    """Distance from p to triangle t: wear.wall.locate.closest_on_triangles, the same operations in the same order."""
+    """Distance from p to the triangle ``corners[t]``: wear.wall.locate.closest_on_triangles, the same operations in
+    the same order."""
     ax, ay, az = corners[t, 0, 0], corners[t, 0, 1], corners[t, 0, 2]
     bx, by, bz = corners[t, 1, 0], corners[t, 1, 1], corners[t, 1, 2]
     cx, cy, cz = corners[t, 2, 0], corners[t, 2, 1], corners[t, 2, 2]
@@ -157,7 +175,7 @@ def _distance(px, py, pz, corners, t):
 
 
 @numba.njit(cache=True)
-def _nearest(points, corners, origin, h, shape, start, items, out_tri, out_distance):
+def _nearest(points, packed, origin, h, shape, start, items, out_tri, out_distance):
     """The nearest triangle of each point and its distance, by shells of cells (see the module docstring)."""
     c = np.empty(3, np.int64)
     q = np.empty(3)
@@ -178,7 +196,7 @@ def _nearest(points, corners, origin, h, shape, start, items, out_tri, out_dista
                         cell = (k * shape[1] + j) * shape[0] + i
                         for m in range(start[cell], start[cell + 1]):
                             t = items[m]
-                            d = _distance(points[n, 0], points[n, 1], points[n, 2], corners, t)
+                            d = _distance(points[n, 0], points[n, 1], points[n, 2], packed, m)
                             if d < best or (d == best and t < best_t):
                                 best, best_t = d, t
             # the nearest any triangle beyond the block of radius r can be: p' to the block's open sides

@@ -60,9 +60,9 @@ def hits_on_wall(
     locator: FaceGrid | None = None,
 ) -> Hits:
     """Place ``records`` on ``wall``: the face of each (its own, or the nearest to its position when −1), the
-        normal (``"recorded"``, ``"face"``; default: the recorded one where the records carry it, else the face's),
-        the angle and the speed. ``tolerance`` (m): the largest distance of a hit from its face
-        (:func:`wear.wall.locate.default_tolerance` by default). ``locator``: the wall's
+    normal (``"recorded"``, ``"face"``; default: the recorded one where the records carry it, else the face's),
+    the angle and the speed. ``tolerance`` (m): the largest distance of a hit from its face
+    (:func:`wear.wall.locate.default_tolerance` by default). ``locator``: the wall's
     :class:`wear.wall.grid.FaceGrid` to find the nearest faces with (fast, for many records; default
     :func:`wear.wall.locate.nearest_faces`). See the module docstring for the bad records."""
     if normal is None:

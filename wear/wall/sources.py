@@ -1,16 +1,16 @@
 """Impact records read in chunks: a plan of small, picklable :class:`Chunk` s over record files, each read on its own
 (in any process) with :func:`read_chunk`, so that no process ever holds all the records.
 
-================  ==========================================  ================================================
-format            files                                       a chunk
-================  ==========================================  ================================================
-``"openfoam"``    ``.post``, ``.post.gz`` (patchPostProcessing;  ``chunk_rows`` rows of one file
-                  a folder: every write time's files)
-``"csv"``         ``.csv``, ``.csv.gz`` (the plain table)      ``chunk_rows`` rows of one file (a plain file:
-                                                              from the byte its first row starts at)
-``"parquet"``     ``.parquet`` (the plain table, pyarrow)      one row group (write the file with row groups of
-                                                              the chunk size you want)
-================  ==========================================  ================================================
+============  ==============================================  ==============================================
+format        files                                           a chunk
+============  ==============================================  ==============================================
+``openfoam``  ``.post``, ``.post.gz`` (patchPostProcessing),  ``chunk_rows`` rows of one file
+              or their folder (every write time's files)
+``csv``       ``.csv``, ``.csv.gz`` (the plain table)         ``chunk_rows`` rows of one file (a plain
+                                                              file: from the byte its first row starts at)
+``parquet``   ``.parquet`` (the plain table, pyarrow)         one row group (write the file with row
+                                                              groups of the chunk size wanted)
+============  ==============================================  ==============================================
 
 Each reader reads only its rows (:func:`wear.wall.table.read_table`,
 :func:`wear.wall.openfoam.read_patch_post_processing` with ``start_row`` and ``max_rows``), and the rows keep their
