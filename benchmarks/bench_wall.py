@@ -7,7 +7,7 @@ Side by side in one run, on a synthetic pipe wall of ``--faces`` triangles (10�
    :func:`wear.erosion.table.table_entries` of the erosion response table, on a synthetic 9 × 17 table: the
    lookup an FE-informed law does per impact), each with the per-face sums (volume, mass, count, speed, angle
    histogram); and the whole chunk path of :func:`wear.wall.engine.chunk_sums` (impact table checks, the angle
-   against the face, the law, the sums);
+   against the face, the law, the sums), with the faces given and found from the positions;
 2. the nearest face of records located from their positions: the numba grid (:mod:`wear.wall.grid`) against the
    exact k-d tree search (:func:`wear.wall.locate.nearest_faces`), same answers checked;
 3. ``--impacts`` (10⁸) synthetic impacts written as Parquet (row groups of 5 · 10⁵) in a temporary folder, summed by
@@ -145,22 +145,27 @@ def kernel_rate(law, wall: Wall, angle, speed, face, repeat: int = 3) -> float:
     return n / best
 
 
-def chunk_rate(law, wall: Wall, impacts, repeat: int = 2) -> float:
-    """Impacts/s of wear.wall.engine.chunk_sums on a chunk in memory (faces given)."""
+def chunk_rate(law, wall: Wall, impacts, given: bool = True, repeat: int = 2) -> float:
+    """Impacts/s of wear.wall.engine.chunk_sums on a chunk in memory, as the engine calls it (the wall's grid
+    built beforehand): faces ``given``, or found from the positions (1e-6 m off the face centres)."""
     n = len(impacts["face"])
+    grid = face_grid(wall)
+    position = wall.centre[impacts["face"]]
+    if not given:
+        position = position + 1e-6 * np.random.default_rng(0).normal(size=(n, 3))
     best = np.inf
     for _ in range(repeat):
         t0 = time.perf_counter()
         records = ImpactRecords(
-            position=wall.centre[impacts["face"]],
+            position=position,
             velocity=impacts["velocity"],
             diameter=np.full(n, DIAMETER),
             density=np.full(n, DENSITY),
             count=np.ones(n),
             time=np.zeros(n),
-            face=impacts["face"],
+            face=impacts["face"] if given else np.full(n, -1),
         )
-        chunk_sums(records, wall, law)
+        chunk_sums(records, wall, law, locator=grid)
         best = min(best, time.perf_counter() - t0)
     return n / best
 
@@ -265,13 +270,15 @@ def main(argv: list[str] | None = None) -> int:
     table.volume(angle[:10], speed[:10], np.full(10, DIAMETER), np.full(10, DENSITY), np.ones(10))  # compile
     closed = kernel_rate(finnie, wall, angle, speed, impacts["face"])
     looked = kernel_rate(table, wall, angle, speed, impacts["face"])
-    whole = chunk_rate(finnie, wall, {k: v[:1_000_000] for k, v in impacts.items()})
+    part = {k: v[:1_000_000] for k, v in impacts.items()}
+    whole, located = chunk_rate(finnie, wall, part), chunk_rate(finnie, wall, part, given=False)
     print("\n1. per-impact work, one core, faces given (law + per-face sums, arrays in memory):")
     print(f"   closed form (Finnie):   {closed:.3g} impacts/s   goal >= {GOAL_CLOSED_FORM:.0e}")
     print(
         f"   response-table lookup:  {looked:.3g} impacts/s   goal >= {GOAL_TABLE:.0e}  (ratio {closed / looked:.2f})"
     )
     print(f"   whole chunk path (checks, angle from the face, Finnie, sums): {whole:.3g} impacts/s")
+    print(f"   whole chunk path, faces found from the positions (the grid): {located:.3g} impacts/s")
 
     points = wall.centre[impacts["face"][:200_000]] + 1e-5 * rng.normal(size=(200_000, 3))
     t0 = time.perf_counter()

@@ -254,6 +254,7 @@ def test_the_grid_finds_the_exact_nearest_face(bend):
         assert np.array_equal(distance, exact)
         assert np.array_equal(distance, distance_to_faces(wall, points, face))
         assert np.array_equal(distance_to_faces(wall, points, exact_face), distance)  # where the faces differ: a tie
+        assert np.array_equal(grid.distance(points, exact_face), distance)
 
 
 def test_the_grid_is_used_for_records_without_a_face(tmp_path):

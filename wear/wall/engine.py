@@ -202,7 +202,7 @@ def chunk_rows_for(
 @dataclass(frozen=True, eq=False)
 class _Job:
     """What every chunk's sums need: the wall, the law and the settings of :func:`chunk_sums`; the wall's grid
-    is built once per process, the first time a chunk has records without a face."""
+    (:mod:`wear.wall.grid`) is built once per process, for the first chunk."""
 
     wall: Wall
     law: object
@@ -217,7 +217,6 @@ class _Job:
 
     def sums(self, chunk: Chunk) -> WallSums:
         records = read_chunk(chunk, self.wall)
-        locator = self.grid if len(records) and records.face.min() < 0 else None
         return chunk_sums(
             records,
             self.wall,
@@ -226,7 +225,7 @@ class _Job:
             skip_bad=self.skip_bad,
             normal=self.normal,
             tolerance=self.tolerance,
-            locator=locator,
+            locator=self.grid,
         )
 
 

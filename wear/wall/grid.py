@@ -35,9 +35,12 @@ class FaceGrid:
     """A uniform grid of a wall's fan triangles (see the module docstring): ``face`` (t,) the wall face of each
     triangle, ``origin`` (3,) (m) and ``cell`` h (m) and ``shape`` (3,) of the grid, and the triangles of cell k:
     ``items[start[k]:start[k + 1]]`` (cells numbered x fastest), their corners (m) ``packed[start[k]:start[k + 1]]``
-    (each cell's triangles side by side in memory: a search reads a few blocks, not scattered triangles)."""
+    (each cell's triangles side by side in memory: a search reads a few blocks, not scattered triangles); and the
+    triangles in face order, ``corners`` (t, 3, 3) (m), face f's being ``corners[first[f]:first[f + 1]]``."""
 
     packed: np.ndarray
+    corners: np.ndarray
+    first: np.ndarray
     face: np.ndarray
     origin: np.ndarray
     cell: float
@@ -68,6 +71,14 @@ class FaceGrid:
         face[order], out[order] = self.face[tri], distance
         return face, out
 
+    def distance(self, points: np.ndarray, faces: np.ndarray) -> np.ndarray:
+        """Distance (m) from each point (n, 3) to the face ``faces[i]`` (the nearest of its triangles): what
+        :func:`wear.wall.locate.distance_to_faces` gives, by the same operations."""
+        points = np.ascontiguousarray(points, dtype=float).reshape(-1, 3)
+        out = np.empty(len(points))
+        _face_distance(points, np.asarray(faces, np.int64), self.corners, self.first, out)
+        return out
+
 
 def face_grid(wall: Wall) -> FaceGrid:
     """The grid of ``wall``'s fan triangles (:attr:`wear.wall.mesh.Wall.triangles`)."""
@@ -90,7 +101,18 @@ def face_grid(wall: Wall) -> FaceGrid:
     shape = np.maximum(np.ceil(extent / h), 1).astype(np.int64)
     start, items = _fill(corners, low, h, shape)
     packed = np.ascontiguousarray(corners[items])
-    return FaceGrid(packed=packed, face=face, origin=low, cell=h, shape=shape, start=start, items=items)
+    first = np.concatenate([[0], np.cumsum(wall.sizes - 2)])
+    return FaceGrid(
+        packed=packed,
+        corners=corners,
+        first=first,
+        face=face,
+        origin=low,
+        cell=h,
+        shape=shape,
+        start=start,
+        items=items,
+    )
 
 
 @numba.njit(cache=True)
@@ -172,6 +194,15 @@ def _distance(px, py, pz, corners, t):
         qx, qy, qz = ax + v * abx + w * acx, ay + v * aby + w * acy, az + v * abz + w * acz
     dx, dy, dz = px - qx, py - qy, pz - qz
     return math.sqrt(dx * dx + dy * dy + dz * dz)
+
+
+@numba.njit(cache=True)
+def _face_distance(points, faces, corners, first, out):
+    for n in range(points.shape[0]):
+        best = np.inf
+        for t in range(first[faces[n]], first[faces[n] + 1]):
+            best = min(best, _distance(points[n, 0], points[n, 1], points[n, 2], corners, t))
+        out[n] = best
 
 
 @numba.njit(cache=True)

@@ -63,8 +63,9 @@ def hits_on_wall(
     normal (``"recorded"``, ``"face"``; default: the recorded one where the records carry it, else the face's),
     the angle and the speed. ``tolerance`` (m): the largest distance of a hit from its face
     (:func:`wear.wall.locate.default_tolerance` by default). ``locator``: the wall's
-    :class:`wear.wall.grid.FaceGrid` to find the nearest faces with (fast, for many records; default
-    :func:`wear.wall.locate.nearest_faces`). See the module docstring for the bad records."""
+    :class:`wear.wall.grid.FaceGrid` to find the nearest faces and the distances to the faces given with (fast, for
+    many records; default :func:`wear.wall.locate.nearest_faces`, :func:`wear.wall.locate.distance_to_faces`). See
+    the module docstring for the bad records."""
     if normal is None:
         normal = "recorded" if records.normal is not None else "face"
     if normal not in NORMALS:
@@ -84,7 +85,8 @@ def hits_on_wall(
     distance = np.zeros(len(face))
     given = face >= 0
     if given.any():
-        distance[given] = distance_to_faces(wall, records.position[given], face[given])
+        measure = distance_to_faces if locator is None else lambda _, points, faces: locator.distance(points, faces)
+        distance[given] = measure(wall, records.position[given], face[given])
     if (~given).any():
         find = nearest_faces if locator is None else lambda _, points: locator.nearest(points)
         face[~given], distance[~given] = find(wall, records.position[~given])
