@@ -84,6 +84,33 @@ def test_the_plan_of_the_openfoam_folder_reads_every_row_once(bend, chunk_rows):
         assert np.array_equal(normal, whole.normal)
 
 
+def test_a_parallel_run_s_records_are_located_in_every_chunk(bend, tmp_path):
+    """A record written by processor 1 anywhere in the run makes every chunk find its faces from the positions, as
+    the whole-run reader does (wear.wall.openfoam)."""
+    wall = bend[0]
+    source = RECORDS / "0.04" / "bend.post.gz"
+    lines = gzip.decompress(source.read_bytes()).decode().splitlines(keepends=True)
+    tokens = lines[-1].split(" ", 2)
+    lines[-1] = " ".join([tokens[0], "1", tokens[2]])  # currentProc of the last row
+    (tmp_path / "0.04").mkdir()
+    (tmp_path / "0.04" / "bend.post").write_text("".join(lines))
+    (tmp_path / "0.02").mkdir()
+    (tmp_path / "0.02" / "bend.post.gz").write_bytes((RECORDS / "0.02" / "bend.post.gz").read_bytes())
+    chunks = plan_chunks(tmp_path, 100)
+    assert chunks[0].path.endswith("bend.post.gz") and not any(c.serial for c in chunks)
+    _same_records([read_chunk(c, wall) for c in chunks], read_patch_post_processing(tmp_path, wall))
+    assert (read_chunk(chunks[0], wall).face == -1).all()
+
+
+def test_formats_are_found_by_suffix_or_content(tmp_path):
+    values = _table_rows(5, np.random.default_rng(8))
+    pq.write_table(pa.table({h: values[:, j] for j, h in enumerate(HEADER)}), tmp_path / "records")
+    write_csv(tmp_path / "records.txt", HEADER, [[repr(float(v)) for v in r] for r in values])
+    assert [c.format for c in plan_chunks([tmp_path / "records", tmp_path / "records.txt"], 10)] == ["parquet", "csv"]
+    assert plan_chunks(RECORDS / "0.02" / "bend.post.gz", 10)[0].format == "openfoam"
+    assert np.array_equal(read_chunk(plan_chunks(tmp_path / "records", 10)[0], None).velocity, values[:, 3:6])
+
+
 def _table_rows(n, rng):
     """n records on the flat wall of flat_mesh (z = 0, fluid above), falling at random angles."""
     position = np.column_stack([rng.random(n) * 0.04, rng.random(n) * 0.03, np.zeros(n)])

@@ -49,6 +49,7 @@ __all__ = [
     "add_sums",
     "chunk_rows_for",
     "chunk_sums",
+    "empty_sums",
     "erode_wall",
     "in_flight",
 ]

@@ -31,7 +31,7 @@ import numpy as np
 from wear.wall.mesh import Wall
 from wear.wall.openfoam import post_files, read_patch_post_processing, scan_post_file
 from wear.wall.records import ImpactRecords
-from wear.wall.table import parquet_file, read_table
+from wear.wall.table import is_parquet, parquet_file, read_table
 
 __all__ = ["Chunk", "FORMATS", "plan_chunks", "read_chunk", "record_format"]
 
@@ -64,16 +64,14 @@ def record_format(path: str | Path) -> str:
         return "openfoam"
     if name.endswith((".csv", ".csv.gz")):
         return "csv"
-    if name.endswith(".parquet"):
+    if is_parquet(p):
         return "parquet"
     try:
         with gzip.open(p, "rb") if name.endswith(".gz") else open(p, "rb") as f:
-            start = f.read(4)
+            start = f.read(1)
     except (OSError, EOFError) as err:
         raise ValueError(f"records={str(p)!r} cannot be read ({err})") from None
-    if start == b"PAR1":
-        return "parquet"
-    return "openfoam" if start.startswith(b"#") else "csv"
+    return "openfoam" if start == b"#" else "csv"
 
 
 def plan_chunks(paths: str | Path | Sequence[str | Path], chunk_rows: int) -> list[Chunk]:

@@ -1,5 +1,6 @@
 """The plain impact table: the format users of other codes convert their records to (CSV; Parquet when pyarrow is
-installed). One row per record, a header row naming the columns (any order; UTF-8, a byte-order mark is read):
+installed, known by its suffix ``.parquet`` or its content). One row per record, a header row naming the columns
+(any order; UTF-8, a byte-order mark is read):
 
 ==================================  ========  ===================================================================
 column                              unit      meaning
@@ -40,7 +41,7 @@ import numpy as np
 from wear.wall.mesh import Wall
 from wear.wall.records import COLUMNS, ImpactRecords, numbers, where
 
-__all__ = ["read_table", "parquet_file", "TABLE_COLUMNS", "TABLE_DEFAULTS"]
+__all__ = ["read_table", "is_parquet", "parquet_file", "TABLE_COLUMNS", "TABLE_DEFAULTS"]
 
 #: Every column of the plain table, in the order of the impact table's fields.
 TABLE_COLUMNS = tuple(c for cs in COLUMNS.values() for c in cs)
@@ -61,7 +62,7 @@ def read_table(
     part of the file (see the module docstring)."""
     p = Path(path)
     name = str(p)
-    if p.suffix == ".parquet":
+    if is_parquet(p):
         columns, rows = _parquet(p, start_row, max_rows)
     else:
         columns, rows = _csv(p, start_row, max_rows, offset)
@@ -153,6 +154,18 @@ def _csv(
 
 def _stop(start_row: int, max_rows: int | None) -> int | None:
     return None if max_rows is None else start_row + max_rows
+
+
+def is_parquet(path: str | Path) -> bool:
+    """Whether ``path`` is a Parquet file: its suffix ``.parquet``, or its first bytes (``PAR1``)."""
+    p = Path(path)
+    if p.suffix.lower() == ".parquet":
+        return True
+    try:
+        with open(p, "rb") as f:
+            return f.read(4) == b"PAR1"
+    except OSError:
+        return False  # the reader that opens it says why
 
 
 def parquet_file(p: Path):
