@@ -16,7 +16,9 @@ Each reader reads only its rows (:func:`wear.wall.table.read_table`,
 :func:`wear.wall.openfoam.read_patch_post_processing` with ``start_row`` and ``max_rows``), and the rows keep their
 numbers in the file, so that a bad value is named by its file and row wherever it is read. Planning reads each
 text file once (counting its lines; for OpenFOAM also whether the run was parallel, which decides for every chunk
-how a record's face is found) and a Parquet file's metadata only.
+how a record's face is found) and a Parquet file's metadata only. A gzipped file cannot be entered in the middle: a
+chunk of a ``.csv.gz`` or ``.post.gz`` file decompresses the rows before its own, so that reading such a file in k
+chunks costs about k/2 readings of it; give very large tables as plain CSV or Parquet.
 """
 
 from __future__ import annotations
