@@ -14,9 +14,8 @@ import gzip
 import meshio
 import numpy as np
 import pytest
-from wall_cases import OUTPUTS, RECORDS, erosion_constants
+from wall_cases import OUTPUTS, RECORDS, openfoam_finnie_case
 
-from wear.case import Case
 from wear.wall import (
     face_sum,
     hits_on_wall,
@@ -38,14 +37,8 @@ def bend():
 
 def _volumes(bend, normal, skip_bad=False):
     wall, records, _ = bend
-    c = erosion_constants()
     hits = hits_on_wall(records, wall, normal=normal, skip_bad=skip_bad)
-    # OpenFOAM's particleErosion: Finnie with c = 1, its p, psi and K
-    case = Case().with_(
-        wear={"law": "finnie", "cutting_fraction": 1.0, "force_ratio": c["K"], "depth_ratio": c["psi"]},
-        plate={"hardness": c["p"]},
-    )
-    v = record_volumes(wall_law(case), records, hits)
+    v = record_volumes(wall_law(openfoam_finnie_case()), records, hits)
     return hits, v, face_sum(len(wall), hits, v)
 
 

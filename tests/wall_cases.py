@@ -9,6 +9,8 @@ from pathlib import Path
 import meshio
 import numpy as np
 
+from wear.case import Case
+
 BEND = Path(__file__).resolve().parents[1] / "examples" / "openfoam_bend"
 OUTPUTS = BEND / "outputs"
 RECORDS = OUTPUTS / "patchPostProcessing1"
@@ -19,6 +21,16 @@ def erosion_constants() -> dict[str, float]:
     text = (BEND / "particles" / "constant" / "kinematicCloudProperties").read_text()
     block = text[text.index("particleErosion1") :]
     return {k: float(re.search(rf"\b{k}\s+([^;\s]+);", block)[1]) for k in ("p", "psi", "K")}
+
+
+def openfoam_finnie_case() -> Case:
+    """The case whose ``finnie`` law is OpenFOAM's particleErosion of the run: Finnie with c = 1, its p (the plate's
+    flow pressure, given as its hardness), psi and K."""
+    c = erosion_constants()
+    return Case().with_(
+        wear={"law": "finnie", "cutting_fraction": 1.0, "force_ratio": c["K"], "depth_ratio": c["psi"]},
+        plate={"hardness": c["p"]},
+    )
 
 
 def flat_mesh(nx: int = 4, ny: int = 3, width: float = 0.04, height: float = 0.03) -> meshio.Mesh:

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from wear.wall.grid import FaceGrid
 from wear.wall.locate import default_tolerance, distance_to_faces, nearest_faces
 from wear.wall.mesh import Wall
 from wear.wall.records import ImpactRecords
@@ -56,11 +57,15 @@ def hits_on_wall(
     normal: str | None = None,
     tolerance: float | None = None,
     skip_bad: bool = False,
+    locator: FaceGrid | None = None,
 ) -> Hits:
     """Place ``records`` on ``wall``: the face of each (its own, or the nearest to its position when −1), the
     normal (``"recorded"``, ``"face"``; default: the recorded one where the records carry it, else the face's),
     the angle and the speed. ``tolerance`` (m): the largest distance of a hit from its face
-    (:func:`wear.wall.locate.default_tolerance` by default). See the module docstring for the bad records."""
+    (:func:`wear.wall.locate.default_tolerance` by default). ``locator``: the wall's
+    :class:`wear.wall.grid.FaceGrid` to find the nearest faces and the distances to the faces given with (fast, for
+    many records; default :func:`wear.wall.locate.nearest_faces`, :func:`wear.wall.locate.distance_to_faces`). See
+    the module docstring for the bad records."""
     if normal is None:
         normal = "recorded" if records.normal is not None else "face"
     if normal not in NORMALS:
@@ -80,9 +85,11 @@ def hits_on_wall(
     distance = np.zeros(len(face))
     given = face >= 0
     if given.any():
-        distance[given] = distance_to_faces(wall, records.position[given], face[given])
+        measure = distance_to_faces if locator is None else lambda _, points, faces: locator.distance(points, faces)
+        distance[given] = measure(wall, records.position[given], face[given])
     if (~given).any():
-        face[~given], distance[~given] = nearest_faces(wall, records.position[~given])
+        find = nearest_faces if locator is None else lambda _, points: locator.nearest(points)
+        face[~given], distance[~given] = find(wall, records.position[~given])
     n = records.normal if normal == "recorded" else wall.normal[face]
     speed = records.speed
     cosine = np.clip(np.einsum("ij,ij->i", n, records.velocity) / speed, -1.0, 1.0)

@@ -16,7 +16,9 @@ On a non-planar face the triangles' normals differ from the face's. The barycent
 the tet (cell centre, :math:`f_b`, :math:`f_{b+t}`, :math:`f_{b+t+1}`; coordinates0 = 0 on the face) give b: it is
 the base point for which :math:`c_1 P(f_b) + c_2 P(f_{b+t}) + c_3 P(f_{b+t+1})` is the recorded position.
 
-Rows are counted from 1 after the header line (row r is line r + 1). A parallel run's records carry
+Rows are counted from 1 after the header line (row r is line r + 1); a part of a file is read with ``start_row``
+(the first row read is row ``start_row + 1``) and ``max_rows`` (empty lines included), streamed (the file is never
+held whole), its rows keeping their numbers in the file. A parallel run's records carry
 processor-local face labels and tets: when any record read has ``currentProc`` > 0, every record's face is found
 from its position, and its normal is the face normal.
 """
@@ -24,6 +26,7 @@ from its position, and its normal is the face normal.
 from __future__ import annotations
 
 import gzip
+import itertools
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -33,7 +36,7 @@ import numpy as np
 from wear.wall.mesh import Wall
 from wear.wall.records import ImpactRecords, concat_records, numbers, where
 
-__all__ = ["read_patch_post_processing", "post_files", "triangle_normals", "REQUIRED"]
+__all__ = ["read_patch_post_processing", "post_files", "scan_post_file", "triangle_normals", "REQUIRED"]
 
 #: The columns read (OpenFOAM's names), by impact-table field.
 REQUIRED = {
@@ -70,17 +73,65 @@ def post_files(path: str | Path) -> list[Path]:
     return files
 
 
-def read_patch_post_processing(path: str | Path | Sequence[str | Path], wall: Wall) -> ImpactRecords:
+def read_patch_post_processing(
+    path: str | Path | Sequence[str | Path],
+    wall: Wall,
+    start_row: int = 0,
+    max_rows: int | None = None,
+    *,
+    serial: bool | None = None,
+) -> ImpactRecords:
     """The impact table of OpenFOAM ``patchPostProcessing`` records (a file, a list of files, or the function's
     folder: every write time) on ``wall``, an OpenFOAM wall (:func:`wear.wall.foam.read_polymesh`) whose face labels
     are the mesh's. Each record's face is the wall face of its ``facei``; its normal is OpenFOAM's triangle normal
     (see the module docstring) when the files have the tet columns. If any record was written by a processor other
     than 0, the run was parallel and every record's face is found from its position instead (a parallel run whose
-    hits all fell on processor 0 shows as records off their faces or tets: bad input naming the row)."""
+    hits all fell on processor 0 shows as records off their faces or tets: bad input naming the row); ``serial``
+    says so for a part of a run (:func:`scan_post_file` of all its files), None: from the records read.
+    ``start_row``, ``max_rows``: the part of one file to read (see the module docstring)."""
     paths = [path] if isinstance(path, (str, Path)) else list(path)
-    files = [_PostFile.read(f) for p in paths for f in post_files(p)]
-    serial = not any(np.any(f.column("currentProc", integer=True)) for f in files if "currentProc" in f.header)
+    names = [f for p in paths for f in post_files(p)]
+    if (start_row or max_rows is not None) and len(names) != 1:
+        raise ValueError(f"start_row={start_row}, max_rows={max_rows}: a part is read of one file, not {len(names)}")
+    files = [_PostFile.read(f, start_row, max_rows) for f in names]
+    if serial is None:
+        serial = not any(np.any(f.column("currentProc", integer=True)) for f in files if "currentProc" in f.header)
     return concat_records([f.records(wall, serial) for f in files])
+
+
+def scan_post_file(path: str | Path) -> tuple[int, bool]:
+    """(rows, parallel) of one record file, streamed: its number of rows after the header line (empty lines
+    included: the ``start_row`` / ``max_rows`` range of the whole file) and whether any record was written by a
+    processor other than 0 (a parallel run; see :func:`read_patch_post_processing`)."""
+    p = Path(path)
+    header, lines = _open_post(p)
+    proc = header.index("currentProc") if "currentProc" in header else None
+    rows, parallel = 0, False
+    try:
+        with lines as f:
+            next(f)
+            for line in f:
+                rows += 1
+                if proc is not None and not parallel:
+                    tokens = line.replace("(", " ").replace(")", " ").split(None, proc + 1)
+                    parallel = len(tokens) > proc and tokens[proc] not in ("0", "0.0")
+    except (OSError, UnicodeDecodeError, EOFError) as err:
+        raise ValueError(f"{p} is not a patchPostProcessing text file ({err})") from None
+    return rows, parallel
+
+
+def _open_post(p: Path):
+    """The header's column names of a record file and the file opened as text (positioned at its start)."""
+    try:
+        f = gzip.open(p, "rt", encoding="utf-8") if p.suffix == ".gz" else open(p, encoding="utf-8")
+        first = f.readline()
+        f.seek(0)
+    except (OSError, UnicodeDecodeError, EOFError) as err:
+        raise ValueError(f"{p} is not a patchPostProcessing text file ({err})") from None
+    if not first.startswith("#"):
+        f.close()
+        raise ValueError(f"{p}, row 0: no header line '# Time currentProc ...': give a patchPostProcessing file")
+    return first[1:].replace("(", " ").replace(")", " ").split(), f
 
 
 @dataclass(frozen=True)
@@ -94,20 +145,22 @@ class _PostFile:
     table: list[tuple[str, ...]]
 
     @classmethod
-    def read(cls, path: Path) -> _PostFile:
+    def read(cls, path: Path, start_row: int = 0, max_rows: int | None = None) -> _PostFile:
+        """The rows ``start_row + 1`` ... ``start_row + max_rows`` of the file (all with ``max_rows`` None)."""
         name = str(path)
-        try:
-            raw = gzip.decompress(path.read_bytes()) if path.suffix == ".gz" else path.read_bytes()
-            lines = raw.decode("utf-8").splitlines()
-        except (OSError, UnicodeDecodeError, EOFError) as err:
-            raise ValueError(f"{name} is not a patchPostProcessing text file ({err})") from None
-        if not lines or not lines[0].startswith("#"):
-            raise ValueError(f"{name}, row 0: no header line '# Time currentProc ...': give a patchPostProcessing file")
-        header = lines[0][1:].replace("(", " ").replace(")", " ").split()
+        header, f = _open_post(path)
         missing = [c for cols in REQUIRED.values() for c in cols if c not in header]
         if missing:
+            f.close()
             raise ValueError(f"{name}, header: no column {missing[0]} (the header names {' '.join(header)})")
-        body = [(r, line) for r, line in enumerate(lines[1:], start=1) if line.strip()]
+        try:
+            with f:
+                next(f)
+                stop = None if max_rows is None else start_row + max_rows
+                lines = list(itertools.islice(f, start_row, stop))
+        except (OSError, UnicodeDecodeError, EOFError) as err:
+            raise ValueError(f"{name} is not a patchPostProcessing text file ({err})") from None
+        body = [(r, line) for r, line in enumerate(lines, start=start_row + 1) if line.strip()]
         cells = []
         for r, line in body:
             tokens = line.replace("(", " ").replace(")", " ").split()

@@ -33,7 +33,7 @@ def record_volumes(law, records: ImpactRecords, hits: Hits) -> np.ndarray:
     """The eroded volume (m³) of each record by ``law`` (:func:`wear.wall.laws.wall_law`, or any object with its
     ``volume(angle_deg, speed_m_s, diameter_m, density_kg_m3, count)``); 0 for a skipped record. A record the law
     cannot take (a law's ``refused``, e.g. a speed outside a response table) is a ``ValueError`` naming its file, row
-    and column."""
+    and column, and so is a volume that is not finite and >= 0 (a law's bug or its constants)."""
     kept = hits.kept
     refused = getattr(law, "refused", None)
     bad = None if refused is None else refused(hits.speed[kept], records.density[kept])
@@ -41,7 +41,16 @@ def record_volumes(law, records: ImpactRecords, hits: Hits) -> np.ndarray:
         i, field_name, why = bad
         raise ValueError(f"{records.where(int(np.flatnonzero(kept)[i]), field_name)}: {why}")
     volume = np.zeros(len(records))
-    volume[kept] = law.volume(
-        hits.angle[kept], hits.speed[kept], records.diameter[kept], records.density[kept], records.count[kept]
-    )
+    if kept.any():
+        volume[kept] = law.volume(
+            hits.angle[kept], hits.speed[kept], records.diameter[kept], records.density[kept], records.count[kept]
+        )
+    wrong = np.flatnonzero(kept & ~(np.isfinite(volume) & (volume >= 0.0)))
+    if len(wrong):
+        i = wrong[0]
+        raise ValueError(
+            f"{records.where(i, 'velocity')}: the law {getattr(law, 'name', type(law).__name__)} gives the "
+            f"eroded volume {volume[i]!r} m^3 (speed {hits.speed[i]:.6g} m/s, angle {hits.angle[i]:.6g} deg): "
+            "a volume is finite and >= 0"
+        )
     return volume

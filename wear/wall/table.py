@@ -1,5 +1,6 @@
 """The plain impact table: the format users of other codes convert their records to (CSV; Parquet when pyarrow is
-installed). One row per record, a header row naming the columns (any order; UTF-8, a byte-order mark is read):
+installed, known by its suffix ``.parquet`` or its content). One row per record, a header row naming the columns
+(any order; UTF-8, a byte-order mark is read):
 
 ==================================  ========  ===================================================================
 column                              unit      meaning
@@ -17,14 +18,22 @@ column                              unit      meaning
 ==================================  ========  ===================================================================
 
 Any other column is refused. Rows are counted from 1 after the header row (empty rows are skipped). Without
-position columns a record's position is its face's centre.
+position columns a record's position is its face's centre. A CSV file may be gzipped (``.csv.gz``).
+
+A part of a table is read with ``start_row`` (the rows before it are skipped: the first row read is row
+``start_row + 1``) and ``max_rows`` (at most so many rows, empty ones included); rows keep their numbers in the
+file. A CSV part is streamed (the file is never held whole; with ``offset``, the byte where row ``start_row + 1``
+starts in a plain CSV file, the rows before it are not even read); a Parquet part reads only the row groups it
+overlaps.
 """
 
 from __future__ import annotations
 
 import csv
+import gzip
 import importlib.util
 import io
+import itertools
 from pathlib import Path
 
 import numpy as np
@@ -32,7 +41,7 @@ import numpy as np
 from wear.wall.mesh import Wall
 from wear.wall.records import COLUMNS, ImpactRecords, numbers, where
 
-__all__ = ["read_table", "TABLE_COLUMNS", "TABLE_DEFAULTS"]
+__all__ = ["read_table", "is_parquet", "parquet_file", "TABLE_COLUMNS", "TABLE_DEFAULTS"]
 
 #: Every column of the plain table, in the order of the impact table's fields.
 TABLE_COLUMNS = tuple(c for cs in COLUMNS.values() for c in cs)
@@ -40,17 +49,28 @@ TABLE_COLUMNS = tuple(c for cs in COLUMNS.values() for c in cs)
 TABLE_DEFAULTS = {"particles": 1.0, "time_s": 0.0, "face": -1}
 
 
-def read_table(path: str | Path, wall: Wall | None = None) -> ImpactRecords:
+def read_table(
+    path: str | Path,
+    wall: Wall | None = None,
+    start_row: int = 0,
+    max_rows: int | None = None,
+    *,
+    offset: int | None = None,
+) -> ImpactRecords:
     """The impact table of a CSV (or, with pyarrow, Parquet) file ``path`` (see the module docstring); ``wall``
-    is needed only when the table gives faces without positions."""
+    is needed only when the table gives faces without positions. ``start_row``, ``max_rows``, ``offset``: read a
+    part of the file (see the module docstring)."""
     p = Path(path)
     name = str(p)
-    columns, rows = _parquet(p) if p.suffix == ".parquet" else _csv(p)
+    if is_parquet(p):
+        columns, rows = _parquet(p, start_row, max_rows)
+    else:
+        columns, rows = _csv(p, start_row, max_rows, offset)
     unknown = [c for c in columns if c not in TABLE_COLUMNS]
     if unknown:
         raise ValueError(f"{name}, header: column {unknown[0]!r} is not one of {', '.join(TABLE_COLUMNS)}")
     n = len(rows)
-    if n == 0:
+    if n == 0 and start_row == 0 and max_rows is None:
         raise ValueError(f"{name} has no rows: give one row per impact record")
 
     def field(key: str, integer: bool = False) -> np.ndarray | None:
@@ -70,7 +90,7 @@ def read_table(path: str | Path, wall: Wall | None = None) -> ImpactRecords:
     face = field("face", integer=True)
     face = np.full(n, TABLE_DEFAULTS["face"]) if face is None else face
     position = field("position")
-    if position is None:
+    if position is None and n:
         if wall is None or face.min() < 0:
             i = int(np.argmin(face))
             raise ValueError(
@@ -83,6 +103,7 @@ def read_table(path: str | Path, wall: Wall | None = None) -> ImpactRecords:
                 f"{where(name, int(rows[i]), 'face')}: {face[i]} is out of range: the wall has {len(wall)} faces"
             )
         position = wall.centre[face]
+    position = np.zeros((0, 3)) if position is None else position
     count, time = field("count"), field("time")
     return ImpactRecords(
         position=position,
@@ -98,21 +119,32 @@ def read_table(path: str | Path, wall: Wall | None = None) -> ImpactRecords:
     )
 
 
-def _csv(p: Path) -> tuple[dict[str, list[str]], np.ndarray]:
-    """The columns of a CSV file as text (header → values) and the row of each value (empty rows are skipped), or
-    ValueError naming the file and row."""
+def _csv(
+    p: Path, start_row: int = 0, max_rows: int | None = None, offset: int | None = None
+) -> tuple[dict[str, list[str]], np.ndarray]:
+    """The columns of (a part of) a CSV file as text (header → values) and the row of each value (empty rows are
+    skipped), or ValueError naming the file and row. The file is streamed: only the part's rows are held."""
+    opener = gzip.open if p.name.endswith(".gz") else open
     try:
-        text = p.read_text(encoding="utf-8-sig")  # a byte-order mark (Excel's "CSV UTF-8") is not a column name
-    except (OSError, UnicodeDecodeError) as err:
+        # a byte-order mark (Excel's "CSV UTF-8") is not a column name
+        with opener(p, "rt", encoding="utf-8-sig", newline="") as f:
+            header = next(csv.reader(f), None)
+            if header is not None and offset is None:
+                lines = list(itertools.islice(csv.reader(f), start_row, _stop(start_row, max_rows)))
+        if header is not None and offset is not None:
+            with open(p, "rb") as raw:
+                raw.seek(offset)
+                text = io.TextIOWrapper(raw, encoding="utf-8", newline="")
+                lines = list(itertools.islice(csv.reader(text), max_rows))
+    except (OSError, UnicodeDecodeError, EOFError, csv.Error) as err:
         raise ValueError(f"{p} is not a CSV text file (UTF-8): {err}") from None
-    lines = list(csv.reader(io.StringIO(text, newline="")))
-    if not lines:
+    if header is None:
         raise ValueError(f"{p} is empty: give a header row and one row per impact record")
-    header = [h.strip() for h in lines[0]]
+    header = [h.strip() for h in header]
     for h in header:
         if header.count(h) > 1:
             raise ValueError(f"{p}, header: column {h!r} appears {header.count(h)} times: give each column once")
-    body = [(r, line) for r, line in enumerate(lines[1:], start=1) if any(c.strip() for c in line)]
+    body = [(r, line) for r, line in enumerate(lines, start=start_row + 1) if any(c.strip() for c in line)]
     for r, line in body:
         if len(line) != len(header):
             raise ValueError(f"{p}, row {r}: {len(line)} values for the header's {len(header)} columns")
@@ -120,14 +152,52 @@ def _csv(p: Path) -> tuple[dict[str, list[str]], np.ndarray]:
     return {h: [line[j].strip() for _, line in body] for j, h in enumerate(header)}, rows
 
 
-def _parquet(p: Path) -> tuple[dict[str, list], np.ndarray]:
-    """The columns of a Parquet file (pyarrow) and their rows (1, 2, ...)."""
+def _stop(start_row: int, max_rows: int | None) -> int | None:
+    return None if max_rows is None else start_row + max_rows
+
+
+def is_parquet(path: str | Path) -> bool:
+    """Whether ``path`` is a Parquet file: its suffix ``.parquet``, or its first bytes (``PAR1``)."""
+    p = Path(path)
+    if p.suffix.lower() == ".parquet":
+        return True
+    try:
+        with open(p, "rb") as f:
+            return f.read(4) == b"PAR1"
+    except OSError:
+        return False  # the reader that opens it says why
+
+
+def parquet_file(p: Path):
+    """The ``pyarrow.parquet.ParquetFile`` of ``p`` (its metadata read, no rows), or ValueError naming the file."""
     if importlib.util.find_spec("pyarrow") is None:
         raise ValueError(f"{p}: reading Parquet needs pyarrow, which is not installed: install it or give CSV")
     import pyarrow.parquet  # optional: only Parquet tables need it
 
     try:
-        columns = pyarrow.parquet.read_table(p).to_pydict()
+        return pyarrow.parquet.ParquetFile(p)
     except Exception as err:  # pyarrow raises its own error types for an unreadable file
         raise ValueError(f"{p} is not a Parquet table ({type(err).__name__}: {err})") from None
-    return columns, np.arange(1, len(next(iter(columns.values()), [])) + 1)
+
+
+def _parquet(p: Path, start_row: int = 0, max_rows: int | None = None) -> tuple[dict[str, np.ndarray], np.ndarray]:
+    """The columns of (a part of) a Parquet file (pyarrow; only the row groups the part overlaps are read) and
+    their rows (counted from 1)."""
+    pf = parquet_file(p)
+    import pyarrow  # optional, and found by parquet_file
+
+    try:
+        n = pf.metadata.num_rows
+        stop = n if max_rows is None else min(n, start_row + max_rows)
+        parts, first = [], 0
+        for g in range(pf.num_row_groups):
+            size = pf.metadata.row_group(g).num_rows
+            if first < stop and first + size > start_row:
+                lo = max(start_row - first, 0)
+                parts.append(pf.read_row_group(g).slice(lo, min(size, stop - first) - lo))
+            first += size
+        table = pyarrow.concat_tables(parts) if parts else pf.schema_arrow.empty_table()
+        columns = {c: table.column(c).to_numpy(zero_copy_only=False) for c in table.column_names}
+    except Exception as err:  # pyarrow raises its own error types for an unreadable file
+        raise ValueError(f"{p} is not a Parquet table ({type(err).__name__}: {err})") from None
+    return columns, np.arange(start_row + 1, max(stop, start_row) + 1)

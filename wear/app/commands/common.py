@@ -8,13 +8,12 @@ import json
 import math
 import sys
 import warnings
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
-
-from tqdm import tqdm
 
 from wear.app.outputs.writer import to_jsonable
 from wear.case import JOBS, Case, check_job_case, dump_case, load_case, override_tables
+from wear.case.progress import progress_bar, show_progress
 
 __all__ = [
     "add_case_options",
@@ -136,27 +135,6 @@ def print_default(args: argparse.Namespace, job: str, case: Case) -> int:
         print("# plate normal.\n")
     sys.stdout.write(dump_case(case, tables, only=read_keys(job)))
     return 0
-
-
-def show_progress(quiet: bool) -> bool:
-    """A progress bar is shown unless ``quiet`` or stderr is not a terminal."""
-    return not quiet and sys.stderr.isatty()
-
-
-@contextmanager
-def progress_bar(total: int, desc: str, unit: str, quiet: bool) -> Iterator[Callable[[int, str], None]]:
-    """Yield ``update(done, label)`` drawing a bar on stderr (nothing when quiet or not on a terminal)."""
-    bar = tqdm(total=total, desc=desc, unit=unit, file=sys.stderr, leave=False, disable=not show_progress(quiet))
-
-    def update(done: int, label: str = "") -> None:
-        bar.update(done - bar.n)
-        if label:
-            bar.set_postfix_str(label)
-
-    try:
-        yield update
-    finally:
-        bar.close()
 
 
 @contextmanager

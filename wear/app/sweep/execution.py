@@ -4,60 +4,23 @@ records each case as it returns).
 A worker process that dies takes its case with it: the local pool restarts and retries the cases that were
 running, and gives a case up (recorded as failed) after it was running in :data:`MAX_ATTEMPTS` pool breakdowns; Dask
 does the same through its ``allowed-failures`` setting (default 3). Workers run each case with one thread for numba,
-OpenMP and BLAS (:data:`THREAD_VARIABLES` = 1).
+OpenMP and BLAS (:data:`~wear.case.workers.THREAD_VARIABLES` = 1; the pool and the client are
+:mod:`wear.case.workers`'s).
 """
 
 from __future__ import annotations
 
 import concurrent.futures as cf
-import logging
-import multiprocessing
-import os
-import threading
-import time
 from collections.abc import Callable
 
 from wear.app.sweep.spec import SweepCase
 from wear.app.sweep.stages import execute_case
+from wear.case.workers import THREAD_VARIABLES, dask_client, worker_pool
 
 __all__ = ["MAX_ATTEMPTS", "THREAD_VARIABLES", "SweepAborted", "dask_client", "run_dask", "run_local", "worker_pool"]
 
 #: A case is recorded as failed after the worker running it died this many times.
 MAX_ATTEMPTS = 3
-
-#: Environment variables set to the thread count (1) of every worker, before numpy and numba load.
-THREAD_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS")
-
-
-def _worker_init(parent_pid: int, threads: int) -> None:
-    """Limit the worker's threads (before numpy/numba load) and make it exit when the driver disappears."""
-    for var in THREAD_VARIABLES:
-        os.environ[var] = str(threads)
-
-    def watch() -> None:
-        while os.getppid() == parent_pid:
-            time.sleep(0.5)
-        os._exit(1)  # orphaned by a killed driver: its result would have nowhere to go
-
-    threading.Thread(target=watch, daemon=True).start()
-
-
-def _threads_per_worker(workers: int) -> int:
-    """One: a reduction's result may depend on its thread count, and a sweep's speed comes from its cases."""
-    return 1
-
-
-def worker_pool(workers: int) -> cf.ProcessPoolExecutor:
-    """A pool of ``workers`` processes set up as a local sweep's: spawned, each with the thread count of
-    :func:`_threads_per_worker` (:data:`THREAD_VARIABLES`), each ending when this process does. A function run on it
-    gives the very numbers a sweep's case would (a threaded reduction's last digits depend on its thread count)."""
-    return cf.ProcessPoolExecutor(
-        max_workers=workers,
-        mp_context=multiprocessing.get_context("spawn"),
-        initializer=_worker_init,
-        initargs=(os.getpid(), _threads_per_worker(workers)),
-    )
-
 
 Done = Callable[[SweepCase, dict], None]
 
@@ -122,34 +85,6 @@ def _kill_pool(pool: cf.ProcessPoolExecutor) -> None:
     pool.shutdown(wait=False, cancel_futures=True)
     for proc in processes:
         proc.terminate()
-
-
-def dask_client(dask_local: int | None = None, scheduler: str | None = None):
-    """A ``distributed.Client``: a new loopback ``LocalCluster`` of ``dask_local`` worker processes (one thread
-    each) or the existing cluster at ``scheduler`` (``tcp://host:port``). The caller closes it (and its
-    ``.cluster`` for a local one)."""
-    try:
-        import distributed
-    except ImportError:
-        raise ValueError(
-            "--dask-local/--scheduler need dask.distributed, which is not installed: pip install 'impactwear[dask]'"
-        ) from None
-    if scheduler is not None:
-        try:
-            return distributed.Client(scheduler, timeout="30s")
-        except (OSError, TimeoutError) as exc:
-            raise ValueError(f"scheduler={scheduler!r}: cannot connect to a Dask scheduler ({exc})") from None
-    threads = _threads_per_worker(dask_local)
-    cluster = distributed.LocalCluster(
-        n_workers=dask_local,
-        threads_per_worker=1,
-        processes=True,
-        host="127.0.0.1",
-        dashboard_address=None,
-        silence_logs=logging.ERROR,
-        env={v: str(threads) for v in THREAD_VARIABLES},
-    )
-    return distributed.Client(cluster)
 
 
 def run_dask(pending: list[SweepCase], stage: str, client, done: Done) -> None:

@@ -21,7 +21,7 @@ in :data:`~wear.app.sweep.execution.MAX_ATTEMPTS` pool breakdowns; Dask does the
 Workers run each case in a fresh process (``spawn``) with one thread for numba, OpenMP and BLAS (the sweep's
 parallelism is across cases), so the same case gives the same numbers, bit for bit, whichever way and with how
 many workers the sweep runs. Workers of an existing cluster (``--scheduler``) should set the same variables
-(:data:`~wear.app.sweep.execution.THREAD_VARIABLES` = 1) for that guarantee.
+(:data:`~wear.case.workers.THREAD_VARIABLES` = 1) for that guarantee.
 """
 
 from __future__ import annotations
