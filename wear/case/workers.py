@@ -12,7 +12,8 @@ import multiprocessing
 import os
 import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 
 __all__ = ["THREAD_VARIABLES", "dask_client", "worker_pool"]
 
@@ -20,9 +21,31 @@ __all__ = ["THREAD_VARIABLES", "dask_client", "worker_pool"]
 THREAD_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS")
 
 
+@contextmanager
+def _thread_environment(threads: int) -> Iterator[None]:
+    """:data:`THREAD_VARIABLES` set to ``threads`` in this process's environment for the block, then restored: a
+    process spawned inside it starts with them, before it imports numpy or numba (a spawned worker imports the
+    modules of its functions, and the driver's main module, before any initializer runs; numba reads
+    NUMBA_NUM_THREADS once, at import, and refuses another value after its threads started)."""
+    saved = {var: os.environ.get(var) for var in THREAD_VARIABLES}
+    os.environ.update({var: str(threads) for var in THREAD_VARIABLES})
+    try:
+        yield
+    finally:
+        for var, value in saved.items():
+            if value is None:
+                os.environ.pop(var, None)
+            else:
+                os.environ[var] = value
+
+
+def _started() -> int:
+    return os.getpid()
+
+
 def _worker_init(parent_pid: int, threads: int, initializer: Callable | None, initargs: tuple) -> None:
-    """Limit the worker's threads (before numpy/numba load), make it exit when the driver disappears, then run the
-    caller's ``initializer``."""
+    """Make the worker exit when the driver disappears, then run the caller's ``initializer`` (the thread count is
+    in the environment the worker started with, :func:`_thread_environment`)."""
     for var in THREAD_VARIABLES:
         os.environ[var] = str(threads)
 
@@ -45,12 +68,18 @@ def worker_pool(workers: int, initializer: Callable | None = None, initargs: tup
     """A pool of ``workers`` processes: spawned, each with the thread count of :func:`_threads_per_worker`
     (:data:`THREAD_VARIABLES`), each ending when this process does, each running ``initializer(*initargs)`` once
     (e.g. to keep data every task of the pool reads)."""
-    return cf.ProcessPoolExecutor(
+    threads = _threads_per_worker(workers)
+    pool = cf.ProcessPoolExecutor(
         max_workers=workers,
         mp_context=multiprocessing.get_context("spawn"),
         initializer=_worker_init,
-        initargs=(os.getpid(), _threads_per_worker(workers), initializer, initargs),
+        initargs=(os.getpid(), threads, initializer, initargs),
     )
+    with _thread_environment(threads):
+        # the pool spawns a process per task submitted while none is idle: start them all now, in this environment
+        for done in [pool.submit(_started) for _ in range(workers)]:
+            done.result()
+    return pool
 
 
 def dask_client(dask_local: int | None = None, scheduler: str | None = None):
