@@ -67,7 +67,7 @@ def nearest_faces(
 ) -> tuple[np.ndarray, np.ndarray]:
     """The wall face nearest to each point (n, 3) and its distance (m), ``chunk`` points at a time (bounded
     memory). Exact: a triangle of centroid c and circumradius about c at most R is no nearer to p than
-    |p − c| − R, so when the ``candidates``-th nearest centroid is farther than the best distance + R_max the
+    ``|p − c| − R``, so when the ``candidates``-th nearest centroid is farther than the best distance + R_max the
     nearest triangle is among the candidates; otherwise the search is repeated with 4 times more candidates."""
     tri, face_of = wall.triangles
     corners = wall.points[tri]
