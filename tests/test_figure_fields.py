@@ -10,6 +10,7 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
+from figure_capture import capture_figures
 from matplotlib.collections import QuadMesh
 from matplotlib.contour import ContourSet
 
@@ -75,14 +76,7 @@ def test_every_line_of_the_indent_pressure_figure_is_named_in_its_legend():
 @pytest.fixture
 def captured(monkeypatch):
     """The figures the run's plotting functions would save (keyed by file name), instead of saving them."""
-    figures = {}
-
-    def keep(fig, path, *args, **kwargs):
-        figures[str(path).rsplit("/", 1)[-1]] = fig
-        return path
-
-    monkeypatch.setattr(run_figures, "save_figure", keep)
-    return figures
+    return capture_figures(monkeypatch, run_figures)
 
 
 def _section(half_width: float, depth: float, cells: int, seed: int = 3):

@@ -11,6 +11,7 @@ from types import SimpleNamespace
 import meshio
 import numpy as np
 import pytest
+from figure_capture import capture_figures
 from matplotlib.contour import ContourSet
 from matplotlib.ticker import MaxNLocator
 
@@ -28,15 +29,9 @@ from wear.app.outputs.render import default_exaggeration, exaggeration_for, roun
 @pytest.fixture
 def captured(monkeypatch):
     """The figures the plotting functions would save (keyed by file name), instead of saving them."""
-    figures = {}
-
-    def keep(fig, path, *args, **kwargs):
-        figures[str(path).rsplit("/", 1)[-1]] = fig
-        return path
-
-    for module in (erosion_figures, repeat_figures, sweep_figures, run_figures, calibration_figures, paper_figures):
-        monkeypatch.setattr(module, "save_figure", keep)
-    return figures
+    return capture_figures(
+        monkeypatch, erosion_figures, repeat_figures, sweep_figures, run_figures, calibration_figures, paper_figures
+    )
 
 
 # ------------------------------------------------------------------ plastic zone

@@ -94,7 +94,14 @@ stage = "impact"
 
 
 def _args(command: str, tmp_path: Path) -> list[str]:
-    """``command``'s fast arguments (the calibration data written into ``tmp_path``)."""
+    """``command``'s fast arguments (the calibration data and the sweep file written into ``tmp_path``); for
+    ``reproduce`` and ``validate``, which write in place, only the command."""
+    if command == "sweep":
+        spec = tmp_path / "sweep.toml"
+        spec.write_text(SWEEP)
+        return ["sweep", str(spec), "--quiet", "--workers", "1"]
+    if command in ("reproduce", "validate"):
+        return [command, "--quiet"]
     args = list(FAST[command])
     if command == "calibrate":
         data = tmp_path / "data.csv"
@@ -137,12 +144,7 @@ def test_a_folder_of_user_files_is_refused_before_any_work(command, tmp_path, ca
         monkeypatch.setattr(module, name, no_work)
     out = tmp_path / "mine"
     files = _foreign_folder(out)
-    if command == "sweep":
-        spec = tmp_path / "sweep.toml"
-        spec.write_text(SWEEP)
-        args = ["sweep", str(spec), "--quiet", "--workers", "1"]
-    else:
-        args = _args(command, tmp_path)
+    args = _args(command, tmp_path)
     assert main([*args, "--out", str(out)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "--out=" in err[0] and "did not write" in err[0] and "data" in err[0], err
@@ -194,14 +196,7 @@ def test_every_bad_out_is_one_line_exit_2(command, tmp_path, capsys):
     """A file, a path under a file, or a folder that cannot be written (``/proc``): exit 2, one line naming --out,
     for every command (before any work: the runs here would otherwise take minutes)."""
     for out, why in _bad_outs(tmp_path):
-        if command == "sweep":
-            spec = tmp_path / "sweep.toml"
-            spec.write_text(SWEEP)
-            args = ["sweep", str(spec), "--quiet"]
-        elif command in ("reproduce", "validate"):
-            args = [command, "--quiet"]
-        else:
-            args = _args(command, tmp_path)
+        args = _args(command, tmp_path)
         started = time.perf_counter()
         assert main([*args, "--out", out]) == 2, (command, out)
         assert time.perf_counter() - started < 5.0

@@ -280,12 +280,7 @@ def test_a_users_file_under_an_output_name_is_refused_before_any_work(command, t
     manifest = {"command": command, "entries": [], "complete": True}
     (out / MANIFEST).write_text(json.dumps(manifest))
     (out / name).write_text("the user's\n")
-    if command == "sweep":
-        spec = tmp_path / "sweep.toml"
-        spec.write_text(SWEEP)
-        args = ["sweep", str(spec), "--quiet", "--workers", "1"]
-    else:
-        args = _args(command, tmp_path)
+    args = _args(command, tmp_path)
     before = _snapshot(out)
     assert main([*args, "--out", str(out)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
