@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from output_commands import FAST, command_args
 
 import wear.app.commands.calibrate as calibrate_cmd
 import wear.app.commands.erode as erode_cmd
@@ -25,90 +26,6 @@ import wear.app.sweep.execution as sweep_execution
 from wear.app.cli import main
 from wear.app.outputs.folder import MANIFEST, check_output_folder, output_folder, read_manifest
 from wear.app.outputs.writer import write_csv, write_json
-
-#: Each output-folder command with small, fast inputs (a few seconds each).
-FAST = {
-    "run": [
-        "run",
-        "--quiet",
-        "--set",
-        'fem.coupling="none"',
-        "--set",
-        'wear.pressure="hertz"',
-        "--set",
-        "output.figures=false",
-        "--set",
-        "output.render=false",
-    ],
-    "indent": [
-        "indent",
-        "--quiet",
-        "--no-figures",
-        "--load-steps",
-        "3",
-        "--unload-steps",
-        "2",
-        "--set",
-        "fem.mesh_scale=4",
-    ],
-    "erode": [
-        "erode",
-        "--quiet",
-        "--set",
-        "erosion.grid=128",
-        "--set",
-        "erosion.angle_step=10.0",
-        "--set",
-        "erosion.table_speeds=2",
-        "--set",
-        "erosion.points_per_length=6",
-        "--set",
-        "erosion.frames=2",
-        "--set",
-        "erosion.samples=5",
-        "--set",
-        "erosion.exposure_time=60.0",
-    ],
-    "repeat": [
-        "repeat",
-        "--quiet",
-        "--impacts",
-        "1",
-        "--set",
-        "fem.mesh_scale=4",
-        "--set",
-        "plate.yield_strength=inf",
-        "--set",
-        "output.figures=false",
-    ],
-    "calibrate": ["calibrate", "DATA", "--law", "dnv", "--free", "dnv_K", "--quiet"],
-}
-
-SWEEP = """
-[sweep]
-stage = "impact"
-[base]
-[grid]
-"impact.angle" = [0, 30]
-"""
-
-
-def _args(command: str, tmp_path: Path) -> list[str]:
-    """``command``'s fast arguments (the calibration data and the sweep file written into ``tmp_path``); for
-    ``reproduce`` and ``validate``, which write in place, only the command."""
-    if command == "sweep":
-        spec = tmp_path / "sweep.toml"
-        spec.write_text(SWEEP)
-        return ["sweep", str(spec), "--quiet", "--workers", "1"]
-    if command in ("reproduce", "validate"):
-        return [command, "--quiet"]
-    args = list(FAST[command])
-    if command == "calibrate":
-        data = tmp_path / "data.csv"
-        rows = [(a, v, 2e-9 * v**2.6 * (0.5 + np.sin(np.radians(90 - a)))) for a in (15, 45, 75) for v in (20, 40)]
-        data.write_text("angle_deg,speed_m_s,erosion_kg_per_kg\n" + "".join(f"{a},{v},{e:.6g}\n" for a, v, e in rows))
-        args[1] = str(data)
-    return args
 
 
 def _foreign_folder(path: Path) -> dict[str, bytes]:
@@ -144,7 +61,7 @@ def test_a_folder_of_user_files_is_refused_before_any_work(command, tmp_path, ca
         monkeypatch.setattr(module, name, no_work)
     out = tmp_path / "mine"
     files = _foreign_folder(out)
-    args = _args(command, tmp_path)
+    args = command_args(command, tmp_path)
     assert main([*args, "--out", str(out)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "--out=" in err[0] and "did not write" in err[0] and "data" in err[0], err
@@ -156,7 +73,7 @@ def test_a_rerun_replaces_its_own_files_and_keeps_the_users(command, tmp_path, c
     """The files a user puts in an earlier output folder survive a rerun of the command, while the command's own
     files are replaced: no stale output of the earlier run is left; another command refuses the folder."""
     out = tmp_path / "out"
-    args = _args(command, tmp_path)
+    args = command_args(command, tmp_path)
     assert main([*args, "--out", str(out)]) == 0
     first = read_manifest(out)
     assert first["command"] == command and first["complete"] and all((out / n).exists() for n in first["entries"])
@@ -174,7 +91,7 @@ def test_a_rerun_replaces_its_own_files_and_keeps_the_users(command, tmp_path, c
     other = "run" if command != "run" else "calibrate"
     capsys.readouterr()
     before = {p.name: p.stat().st_mtime_ns for p in out.iterdir()}
-    assert main([*_args(other, tmp_path), "--out", str(out)]) == 2
+    assert main([*command_args(other, tmp_path), "--out", str(out)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and f"is the output folder of `impactwear {command}`" in err[0], err
     assert {p.name: p.stat().st_mtime_ns for p in out.iterdir()} == before
@@ -196,7 +113,7 @@ def test_every_bad_out_is_one_line_exit_2(command, tmp_path, capsys):
     """A file, a path under a file, or a folder that cannot be written (``/proc``): exit 2, one line naming --out,
     for every command (before any work: the runs here would otherwise take minutes)."""
     for out, why in _bad_outs(tmp_path):
-        args = _args(command, tmp_path)
+        args = command_args(command, tmp_path)
         started = time.perf_counter()
         assert main([*args, "--out", out]) == 2, (command, out)
         assert time.perf_counter() - started < 5.0

@@ -16,6 +16,7 @@ import time
 from pathlib import Path
 
 import pytest
+from output_commands import FAST, SWEEP, command_args
 
 import wear.app.commands.calibrate as calibrate_cmd
 import wear.app.commands.erode as erode_cmd
@@ -28,7 +29,6 @@ import wear.app.outputs.exchange as exchange
 import wear.app.outputs.folder as folder
 import wear.app.outputs.writer as writer
 import wear.app.sweep.execution as sweep_execution
-from tests.test_output_folder import FAST, SWEEP, _args
 from wear.app.cli import build_parser, main
 from wear.app.outputs import calibration, erosion, indent, repeat, run
 from wear.app.outputs.folder import MANIFEST, output_folder, read_manifest
@@ -280,7 +280,7 @@ def test_a_users_file_under_an_output_name_is_refused_before_any_work(command, t
     manifest = {"command": command, "entries": [], "complete": True}
     (out / MANIFEST).write_text(json.dumps(manifest))
     (out / name).write_text("the user's\n")
-    args = _args(command, tmp_path)
+    args = command_args(command, tmp_path)
     before = _snapshot(out)
     assert main([*args, "--out", str(out)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
