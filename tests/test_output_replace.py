@@ -25,12 +25,13 @@ import wear.app.commands.repeat as repeat_cmd
 import wear.app.commands.reproduce as reproduce_cmd
 import wear.app.commands.run as run_cmd
 import wear.app.commands.validate as validate_cmd
+import wear.app.commands.wall as wall_cmd
 import wear.app.outputs.exchange as exchange
 import wear.app.outputs.folder as folder
 import wear.app.outputs.writer as writer
 import wear.app.sweep.execution as sweep_execution
 from wear.app.cli import build_parser, main
-from wear.app.outputs import calibration, erosion, indent, repeat, run
+from wear.app.outputs import calibration, erosion, indent, repeat, run, wall
 from wear.app.outputs.folder import MANIFEST, output_folder, read_manifest
 from wear.app.reproduce.report import HEADER as REPRODUCE_HEADER
 from wear.app.reproduce.run import check_outputs
@@ -250,6 +251,7 @@ def _no_work(monkeypatch) -> None:
         (erode_cmd, "erode_angles"),
         (repeat_cmd, "repeat"),
         (calibrate_cmd, "calibrate"),
+        (wall_cmd, "erode_component"),
         (sweep_execution, "execute_case"),
         (reproduce_cmd, "reproduce"),
         (validate_cmd, "run_validation"),
@@ -264,6 +266,7 @@ COLLISIONS = {
     "erode": (erosion.ENTRIES, "angle_30"),
     "repeat": (repeat.ENTRIES, "repeat.png"),
     "calibrate": (calibration.ENTRIES, "calibrated.toml"),
+    "wall": (wall.ENTRIES, "hot_spots.csv"),
     "sweep": (SWEEP_ENTRIES, "results.csv"),
 }
 
@@ -286,7 +289,12 @@ def test_a_users_file_under_an_output_name_is_refused_before_any_work(command, t
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and f"--out={str(out)!r}" in err[0] and name in err[0] and "did not write" in err[0], err
     assert _snapshot(out) == before and sorted(p.name for p in tmp_path.iterdir()) == sorted(
-        ["out", *(["data.csv"] if command == "calibrate" else []), *(["sweep.toml"] if command == "sweep" else [])]
+        [
+            "out",
+            *(["data.csv"] if command == "calibrate" else []),
+            *(["sweep.toml"] if command == "sweep" else []),
+            *(["hits.csv", "plate.stl"] if command == "wall" else []),
+        ]
     )
 
 

@@ -1,8 +1,7 @@
 """A uniform stream on a flat wall of triangles: Finnie's closed form per impact × the impacts on each face.
 
-Reference: Finnie (1960), Wear 3: 87–103, the volume cut by one particle of mass m at speed V and angle α from the
-surface, W = c m V² / (p ψ K) (sin 2α − (6/K) sin² α) for tan α ≤ K/6, c m V² / (p ψ K) · K cos² α / 6 above
-(coded here from the paper, not taken from impactwear). Every face receives the same number of identical impacts at
+Reference: Finnie (1960), Wear 3: 87–103, the volume cut by one particle (``wall_cases.finnie_1960``, coded from
+the paper, not taken from impactwear). Every face receives the same number of identical impacts at
 random points inside it, so its volume is exactly that number × W; the sum over faces is the sum over impacts; the
 wall read as two files gives each face the same volume as the wall read as one.
 """
@@ -14,7 +13,7 @@ import math
 import meshio
 import numpy as np
 import pytest
-from wall_cases import flat_mesh, write_csv
+from wall_cases import PSI, C, K, P, finnie_1960, flat_mesh, write_csv
 
 from wear.case import Case
 from wear.wall import (
@@ -28,16 +27,7 @@ from wear.wall import (
     wall_law,
 )
 
-P, PSI, K, C = 3e9, 2.0, 2.0, 0.5
 SPEED, DIAMETER, DENSITY, PER_FACE, PARTICLES = 25.0, 300e-6, 2650.0, 7, 40.0
-
-
-def finnie_1960(mass: float, speed: float, alpha_deg: float) -> float:
-    a = math.radians(alpha_deg)
-    scale = C * mass * speed**2 / (P * PSI * K)
-    if math.tan(a) <= K / 6.0:
-        return scale * (math.sin(2 * a) - 6.0 / K * math.sin(a) ** 2)
-    return scale * K * math.cos(a) ** 2 / 6.0
 
 
 def _stream(wall, theta: float, seed: int = 1) -> ImpactRecords:

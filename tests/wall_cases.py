@@ -1,8 +1,10 @@
-"""Shared inputs of the wall tests: the committed OpenFOAM run and a flat wall of triangles (meshio)."""
+"""Shared inputs of the wall tests: the committed OpenFOAM run, a flat wall of triangles (meshio) and Finnie's
+closed form coded from the paper (Finnie 1960, Wear 3: 87–103)."""
 
 from __future__ import annotations
 
 import csv
+import math
 import re
 from pathlib import Path
 
@@ -31,6 +33,18 @@ def openfoam_finnie_case() -> Case:
         wear={"law": "finnie", "cutting_fraction": 1.0, "force_ratio": c["K"], "depth_ratio": c["psi"]},
         plate={"hardness": c["p"]},
     )
+
+
+#: Finnie's constants of the flat-wall tests: the flow pressure p (Pa), ψ, K and the cutting fraction c.
+P, PSI, K, C = 3e9, 2.0, 2.0, 0.5
+
+
+def finnie_1960(mass: float, speed: float, alpha_deg: float) -> float:
+    a = math.radians(alpha_deg)
+    scale = C * mass * speed**2 / (P * PSI * K)
+    if math.tan(a) <= K / 6.0:
+        return scale * (math.sin(2 * a) - 6.0 / K * math.sin(a) ** 2)
+    return scale * K * math.cos(a) ** 2 / 6.0
 
 
 def flat_mesh(nx: int = 4, ny: int = 3, width: float = 0.04, height: float = 0.03) -> meshio.Mesh:

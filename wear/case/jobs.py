@@ -242,6 +242,15 @@ JOBS: dict[str, Job] = {
             fem_models_why="a fit runs the FE-informed law at every data point and every optimiser step, and one "
             "3-D impact takes about 10 minutes",
         ),
+        Job(
+            "wall",
+            ("ball", "plate", "impact", "wear", "wall"),
+            "silica sand on a carbon steel wall (7850 kg/m³), DNV-RP-O501's law for steel (K 2e-9, n 2.6)",
+            "erode a component's wall from CFD or DEM impact records: per-face rates (mm/year), remaining life, hot "
+            "spots and the worn wall",
+            "wear.app.commands.wall",
+            {**SAND_ON_STEEL, "wear": {**SAND_ON_STEEL["wear"], "law": "dnv"}},
+        ),
     )
 }
 

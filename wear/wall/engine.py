@@ -10,7 +10,9 @@ law, and the chunk's per-face sums are
           N_f = \sum_{f_i = f} N_i, \quad S_f = \sum_{f_i = f} N_i V_i, \quad
           H_{fb} = \sum_{f_i = f,\ \theta_i \in [e_b, e_{b+1})} N_i
 
-(one ``np.bincount`` each; the last angle bin is closed at 90°). Sums of chunks add face by face (:func:`add_sums`),
+(one ``np.bincount`` each; the last angle bin is closed at 90°), and over the whole wall the particles by speed
+:math:`G_c = \sum_{V_i \in [s_c, s_{c+1})} N_i` (:data:`SPEED_EDGES_M_S`; slower and faster particles in the first
+and last bins) and the first and last hit times of the records read. Sums of chunks add face by face (:func:`add_sums`),
 so the chunks may be summed anywhere; they are added in the plan's order, so that the result does not depend on
 the number of workers. The mean speed of a face's particles is :math:`S_f / N_f`.
 
@@ -45,6 +47,7 @@ from wear.wall.sums import face_sum, record_volumes
 __all__ = [
     "BYTES_PER_RECORD",
     "DEFAULT_ANGLE_EDGES_DEG",
+    "SPEED_EDGES_M_S",
     "WallSums",
     "add_sums",
     "chunk_rows_for",
@@ -56,11 +59,14 @@ __all__ = [
 
 #: Edges (deg from the normal) of the angle histogram's bins by default: 10° wide.
 DEFAULT_ANGLE_EDGES_DEG = tuple(float(a) for a in range(0, 91, 10))
+#: Edges (m/s) of the bins of the wall's speed histogram: 10 per decade from 0.01 to 1000 m/s.
+SPEED_EDGES_M_S = tuple(float(v) for v in np.geomspace(0.01, 1000.0, 51))
 #: Peak memory (B) per record of a chunk being read and summed, by format: its text as Python strings (a CSV row,
 #: a 40-column OpenFOAM line) or its Arrow columns, the impact table, the hits and the law's temporaries. Measured
 #: (tracemalloc, 2e5-row chunks on a 1e5-face wall, Finnie): 680 (Parquet), 800 (CSV), 2600 (OpenFOAM v1912's
-#: lines); these bounds add half (and Arrow's own memory, which tracemalloc does not see).
-BYTES_PER_RECORD = {"parquet": 1000.0, "csv": 1200.0, "openfoam": 4000.0}
+#: lines); these bounds add half (and Arrow's own memory, which tracemalloc does not see). Fluent's lines (14
+#: columns) are not measured: bounded as OpenFOAM's.
+BYTES_PER_RECORD = {"parquet": 1000.0, "csv": 1200.0, "openfoam": 4000.0, "fluent": 4000.0}
 #: Largest chunk (rows) :func:`chunk_rows_for` gives: bigger chunks are not faster.
 MAX_CHUNK_ROWS = 1_000_000
 
@@ -70,8 +76,9 @@ class WallSums:
     """Per-face sums of the records on a wall of f faces (see the module docstring): ``volume_m3`` W, ``mass_kg``
     M (particle mass delivered), ``records`` R (int), ``particles`` N, ``speed_sum_m_s`` S, ``angle_histogram``
     (f, b) H (particles) over the bins ``angle_edges_deg`` (b + 1,); ``skipped`` the records left out, by reason
-    (:class:`wear.wall.hits.Hits`), and the totals of every record read: ``records_read``, ``particles_read``,
-    ``mass_read_kg``."""
+    (:class:`wear.wall.hits.Hits`), the particles on the wall by speed ``speed_histogram`` (c,) over the bins
+    ``speed_edges_m_s`` (c + 1,), and of every record read: ``records_read``, ``particles_read``, ``mass_read_kg``
+    and the first and last hit times ``time_first_s``, ``time_last_s`` (±inf: none read)."""
 
     volume_m3: np.ndarray
     mass_kg: np.ndarray
@@ -84,6 +91,10 @@ class WallSums:
     records_read: int = 0
     particles_read: float = 0.0
     mass_read_kg: float = 0.0
+    speed_histogram: np.ndarray = field(default_factory=lambda: np.zeros(len(SPEED_EDGES_M_S) - 1))
+    speed_edges_m_s: np.ndarray = field(default_factory=lambda: np.array(SPEED_EDGES_M_S))
+    time_first_s: float = np.inf
+    time_last_s: float = -np.inf
 
     def __len__(self) -> int:
         return len(self.volume_m3)
@@ -121,6 +132,10 @@ def add_sums(a: WallSums, b: WallSums) -> WallSums:
         records_read=a.records_read + b.records_read,
         particles_read=a.particles_read + b.particles_read,
         mass_read_kg=a.mass_read_kg + b.mass_read_kg,
+        speed_histogram=a.speed_histogram + b.speed_histogram,
+        speed_edges_m_s=a.speed_edges_m_s,
+        time_first_s=min(a.time_first_s, b.time_first_s),
+        time_last_s=max(a.time_last_s, b.time_last_s),
     )
 
 
@@ -148,6 +163,8 @@ def chunk_sums(
     histogram = np.bincount(hits.face[kept] * b + which[kept], weights=records.count[kept], minlength=n * b).reshape(
         n, b
     )
+    speed_edges = np.array(SPEED_EDGES_M_S)
+    speed_bin = np.clip(np.searchsorted(speed_edges, hits.speed[kept], side="right") - 1, 0, len(speed_edges) - 2)
     return WallSums(
         volume_m3=face_sum(n, hits, volume),
         mass_kg=face_sum(n, hits, mass),
@@ -160,6 +177,10 @@ def chunk_sums(
         records_read=len(records),
         particles_read=float(records.count.sum()),
         mass_read_kg=float(mass.sum()),
+        speed_histogram=np.bincount(speed_bin, weights=records.count[kept], minlength=len(speed_edges) - 1),
+        speed_edges_m_s=speed_edges,
+        time_first_s=float(records.time.min()) if len(records) else np.inf,
+        time_last_s=float(records.time.max()) if len(records) else -np.inf,
     )
 
 

@@ -107,6 +107,10 @@ def hits_on_wall(
     return Hits(face=face, normal=n, angle=angle, speed=speed, distance=distance, skipped=skipped)
 
 
+#: How to keep going past such records.
+_SKIP = "; to count and leave out such records instead, give skip_bad (impactwear wall --skip-bad)"
+
+
 def _message(
     records: ImpactRecords,
     wall: Wall,
@@ -128,11 +132,11 @@ def _message(
         which = "its face" if given[i] else "the nearest wall face"
         return (
             f"{records.where(i, 'position')}: ({text}) lies {distance[i]:.3g} m from {which}, {name}, farther than "
-            f"tolerance={tolerance:.6g} m{more}"
+            f"tolerance={tolerance:.6g} m{more}{_SKIP}"
         )
     text = " ".join(f"{v:.6g}" for v in records.velocity[i])
     return (
         f"{records.where(i, 'velocity')}: ({text}) points out of the wall ({angle[i]:.6g} deg from the normal of "
         f"{name}; the wall normals point out of the fluid: if every hit does, the wall is oriented the other way, "
-        f"flip it){more}"
+        f"flip it){more}{_SKIP}"
     )

@@ -30,8 +30,10 @@ from pathlib import Path
 import meshio
 import numpy as np
 
-__all__ = ["Wall", "concat_walls", "read_surface", "SURFACE_CELLS"]
+__all__ = ["Wall", "concat_walls", "read_surface", "SURFACE_CELLS", "THICKNESS_FIELD"]
 
+#: The cell field of a wall file that gives the wall thickness of each face (m).
+THICKNESS_FIELD = "thickness_m"
 #: meshio cell types read as wall faces; lines and points in a file are not part of the wall.
 SURFACE_CELLS = ("triangle", "quad", "polygon")
 _VOLUME_CELLS = ("tetra", "hexahedron", "wedge", "pyramid", "tetra10", "hexahedron20")
@@ -41,8 +43,9 @@ _VOLUME_CELLS = ("tetra", "hexahedron", "wedge", "pyramid", "tetra10", "hexahedr
 class Wall:
     """A wall surface: ``points`` (m, (p, 3)), polygon faces (``face_points`` flat, ``face_offsets`` (f + 1,)), the
     ``patch`` (f,) each face belongs to (an index into ``patch_names``) and each face's ``label`` (f,) in its source
-    (OpenFOAM: the global mesh face label; a surface file: the face's number in the file). See the module docstring
-    for the normal convention."""
+    (OpenFOAM: the global mesh face label; a surface file: the face's number in the file), and the wall thickness of
+    each face ``thickness_m`` (m, (f,); NaN where not given; None: none given). See the module docstring for the
+    normal convention."""
 
     points: np.ndarray
     face_points: np.ndarray
@@ -50,6 +53,7 @@ class Wall:
     patch: np.ndarray
     patch_names: tuple[str, ...]
     labels: np.ndarray
+    thickness_m: np.ndarray | None = None
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__
@@ -66,6 +70,14 @@ class Wall:
             raise ValueError(f"face {int(np.argmin(sizes))} of the wall has {sizes.min()} points: a face needs >= 3")
         if len(self.patch) != len(sizes) or len(self.labels) != len(sizes):
             raise ValueError("patch and labels must give one value per face")
+        if self.thickness_m is not None:
+            set_(self, "thickness_m", np.asarray(self.thickness_m, dtype=float).reshape(len(sizes)))
+            bad = np.flatnonzero(~(self.thickness_m > 0.0) & ~np.isnan(self.thickness_m))
+            if len(bad):
+                raise ValueError(
+                    f"thickness_m={float(self.thickness_m[bad[0]])!r} at face {bad[0]} of patch "
+                    f"{self.patch_names[self.patch[bad[0]]]} is out of range: a wall thickness is > 0 m"
+                )
         bad = np.flatnonzero(self.area <= 0.0)
         if len(bad):
             raise ValueError(
@@ -148,6 +160,8 @@ def concat_walls(walls: Sequence[Wall]) -> Wall:
     """One wall of several (e.g. a wall split into files), faces in order; patches of the same name merge."""
     names: list[str] = []
     points, face_points, offsets, patch, labels = [], [], [np.zeros(1, np.int64)], [], []
+    given = any(wall.thickness_m is not None for wall in walls)
+    thickness = [np.full(len(w), np.nan) if w.thickness_m is None else w.thickness_m for w in walls]
     n_points = n_flat = 0
     for wall in walls:
         for name in wall.patch_names:
@@ -168,13 +182,15 @@ def concat_walls(walls: Sequence[Wall]) -> Wall:
         patch=np.concatenate(patch),
         patch_names=tuple(names),
         labels=np.concatenate(labels),
+        thickness_m=np.concatenate(thickness) if given else None,
     )
 
 
 def read_surface(path: str | Path, flip: bool = False, patch: str | None = None) -> Wall:
     """A wall from a surface file meshio reads (STL, OBJ, VTU, VTP, PLY, ...): its triangles, quads and polygons,
     one patch named ``patch`` (default: the file's stem); ``flip`` reverses the faces' orientation (see the module
-    docstring). A volume mesh is refused (give its boundary surface)."""
+    docstring). A cell field ``thickness_m`` in the file is the wall thickness of each face (m). A volume mesh is
+    refused (give its boundary surface)."""
     p = Path(path)
     try:
         with warnings.catch_warnings():
@@ -185,7 +201,9 @@ def read_surface(path: str | Path, flip: bool = False, patch: str | None = None)
     volume = [c.type for c in mesh.cells if c.type in _VOLUME_CELLS]
     if volume:
         raise ValueError(f"wall={str(p)!r} is a volume mesh ({volume[0]} cells): give the wall's surface")
-    blocks = [c.data for c in mesh.cells if c.type in SURFACE_CELLS or c.type.startswith("polygon")]
+    kept = [i for i, c in enumerate(mesh.cells) if c.type in SURFACE_CELLS or c.type.startswith("polygon")]
+    blocks = [mesh.cells[i].data for i in kept]
+    thickness = mesh.cell_data.get(THICKNESS_FIELD)
     if not blocks:
         raise ValueError(f"wall={str(p)!r} has no triangles, quads or polygons: give the wall's surface")
     blocks = [np.asarray(block, dtype=np.int64) for block in blocks]
@@ -199,4 +217,5 @@ def read_surface(path: str | Path, flip: bool = False, patch: str | None = None)
         patch=np.zeros(len(sizes), np.int64),
         patch_names=(patch or p.stem,),
         labels=np.arange(len(sizes)),
+        thickness_m=None if thickness is None else np.concatenate([np.ravel(thickness[i]) for i in kept]),
     )

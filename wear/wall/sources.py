@@ -30,15 +30,18 @@ from pathlib import Path
 
 import numpy as np
 
+from wear.wall.fluent import count_fluent_rows, read_fluent_dpm
 from wear.wall.mesh import Wall
 from wear.wall.openfoam import post_files, read_patch_post_processing, scan_post_file
 from wear.wall.records import ImpactRecords
 from wear.wall.table import is_parquet, parquet_file, read_table
 
-__all__ = ["Chunk", "FORMATS", "plan_chunks", "read_chunk", "record_format"]
+__all__ = ["Chunk", "FORMATS", "RECORD_SUFFIXES", "plan_chunks", "read_chunk", "record_files", "record_format"]
 
 #: The record formats, by name.
-FORMATS = ("openfoam", "csv", "parquet")
+FORMATS = ("openfoam", "csv", "parquet", "fluent")
+#: The suffixes of the record files of a folder that is not OpenFOAM's.
+RECORD_SUFFIXES = (".csv", ".csv.gz", ".parquet", ".dpm", ".dpm.gz")
 _BLOCK = 1 << 22
 
 
@@ -58,12 +61,14 @@ class Chunk:
 
 
 def record_format(path: str | Path) -> str:
-    """The format of a record file or folder (one of :data:`FORMATS`), by its suffix, or for a file without a known
-    suffix by its first line (OpenFOAM's begins with ``#``; else CSV)."""
+    """The format of a record file or an OpenFOAM folder (one of :data:`FORMATS`), by its suffix, or for a file
+    without a known suffix by its first line (OpenFOAM's begins with ``#``, Fluent's with ``(``; else CSV)."""
     p = Path(path)
     name = p.name.lower()
     if p.is_dir() or name.endswith((".post", ".post.gz")):
         return "openfoam"
+    if name.endswith((".dpm", ".dpm.gz")):
+        return "fluent"
     if name.endswith((".csv", ".csv.gz")):
         return "csv"
     if is_parquet(p):
@@ -73,7 +78,7 @@ def record_format(path: str | Path) -> str:
             start = f.read(1)
     except (OSError, EOFError) as err:
         raise ValueError(f"records={str(p)!r} cannot be read ({err})") from None
-    return "openfoam" if start == b"#" else "csv"
+    return {b"#": "openfoam", b"(": "fluent"}.get(start, "csv")
 
 
 def plan_chunks(paths: str | Path | Sequence[str | Path], chunk_rows: int) -> list[Chunk]:
@@ -81,9 +86,8 @@ def plan_chunks(paths: str | Path | Sequence[str | Path], chunk_rows: int) -> li
     folder, or several) exactly once, in order (a Parquet file: one chunk per row group, whatever its size)."""
     if not (isinstance(chunk_rows, int) and chunk_rows >= 1):
         raise ValueError(f"chunk_rows={chunk_rows!r} is out of range: give an integer >= 1 (rows per chunk)")
-    paths = [paths] if isinstance(paths, (str, Path)) else list(paths)
     chunks: list[Chunk] = []
-    for path in paths:
+    for path in record_files(paths):
         kind = record_format(path)
         if kind == "openfoam":
             files = post_files(path)
@@ -95,6 +99,11 @@ def plan_chunks(paths: str | Path | Sequence[str | Path], chunk_rows: int) -> li
                 ]
         elif kind == "csv":
             chunks += _csv_chunks(Path(path), chunk_rows)
+        elif kind == "fluent":
+            rows = count_fluent_rows(path)
+            if rows == 0:
+                raise ValueError(f"{path} has no rows: give a DPM sample file with one row per parcel")
+            chunks += [Chunk(str(path), kind, s, min(chunk_rows, rows - s)) for s in range(0, rows, chunk_rows)]
         else:
             chunks += _parquet_chunks(Path(path))
     return chunks
@@ -106,7 +115,30 @@ def read_chunk(chunk: Chunk, wall: Wall | None) -> ImpactRecords:
         return read_patch_post_processing(chunk.path, wall, chunk.start_row, chunk.rows, serial=chunk.serial)
     if chunk.format in ("csv", "parquet"):
         return read_table(chunk.path, wall, chunk.start_row, chunk.rows, offset=chunk.offset)
+    if chunk.format == "fluent":
+        return read_fluent_dpm(chunk.path, wall, chunk.start_row, chunk.rows)
     raise ValueError(f"format={chunk.format!r} is not one of {', '.join(FORMATS)}")
+
+
+def record_files(paths: str | Path | Sequence[str | Path]) -> list[Path]:
+    """The record files and OpenFOAM folders of ``paths`` (a file or folder, or several): each file and OpenFOAM
+    folder itself, and of another folder its record files (:data:`RECORD_SUFFIXES`), by name."""
+    paths = [paths] if isinstance(paths, (str, Path)) else list(paths)
+    return [f for path in paths for f in _record_files(Path(path))]
+
+
+def _record_files(p: Path) -> list[Path]:
+    if not p.exists():
+        raise ValueError(f"records={str(p)!r}: no such file or folder")
+    if not p.is_dir() or any(sub.is_dir() for sub in p.iterdir()):
+        return [p]
+    files = sorted(f for f in p.iterdir() if f.is_file() and f.name.lower().endswith(RECORD_SUFFIXES))
+    if not files:
+        raise ValueError(
+            f"records={str(p)!r} holds no record files ({', '.join(RECORD_SUFFIXES)}) and no OpenFOAM "
+            "write-time folders"
+        )
+    return files
 
 
 def _csv_chunks(p: Path, chunk_rows: int) -> list[Chunk]:

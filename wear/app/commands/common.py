@@ -6,6 +6,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import re
 import sys
 import warnings
 from collections.abc import Iterator, Sequence
@@ -18,6 +19,9 @@ from wear.case.progress import progress_bar, show_progress
 __all__ = [
     "add_case_options",
     "add_out_option",
+    "add_workers_options",
+    "check_scheduler_address",
+    "positive_int",
     "case_from_args",
     "case_json",
     "path_option",
@@ -75,6 +79,41 @@ def add_out_option(parser: argparse.ArgumentParser, default: str) -> None:
         "of this command, whose files are replaced while every other file in it is left alone; a "
         "folder holding other files, or another command's output, is refused before any work",
     )
+
+
+#: A Dask scheduler address: ``tcp://host:8786``, ``tls://host:8786``, ``inproc://...`` or ``host:8786``.
+_ADDRESS = re.compile(r"^([a-z][a-z0-9+.-]*://\S+|[\w.-]+:\d+)$")
+
+
+def positive_int(text: str) -> int:
+    """An integer option >= 1 (argparse type)."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not an integer") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"{value} must be >= 1")
+    return value
+
+
+def add_workers_options(parser: argparse.ArgumentParser, default: str) -> None:
+    """Where the work runs, one of: ``--workers N`` local processes (default ``default``), ``--dask-local N`` a new
+    loopback Dask cluster of N processes, ``--scheduler ADDRESS`` an existing Dask cluster."""
+    how = parser.add_mutually_exclusive_group()
+    how.add_argument("--workers", type=positive_int, metavar="N", help=f"local worker processes (default: {default})")
+    how.add_argument(
+        "--dask-local", type=positive_int, metavar="N", help="run on a new loopback dask LocalCluster of N processes"
+    )
+    how.add_argument("--scheduler", metavar="ADDRESS", help="run on an existing Dask cluster, e.g. tcp://host:8786")
+
+
+def check_scheduler_address(address: str | None) -> None:
+    """A one-line ``ValueError`` naming ``--scheduler`` unless ``address`` is None or a Dask scheduler address."""
+    if address is not None and not _ADDRESS.match(address):
+        raise ValueError(
+            f"--scheduler={address!r} is not a Dask scheduler address: give PROTOCOL://HOST:PORT or HOST:PORT, "
+            "e.g. tcp://host:8786"
+        )
 
 
 def case_from_args(args: argparse.Namespace, job: str, options: dict[str, dict[str, object]] | None = None) -> Case:

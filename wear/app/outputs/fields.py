@@ -47,6 +47,8 @@ UNIT_SUFFIXES = {
     "kg/m^3": "kg_m3",
     "kg/(m^2 s)": "kg_m2_s",
     "deg": "deg",
+    "year": "year",
+    "mm/year": "mm_year",
     "SI": "SI",
 }
 
@@ -72,12 +74,19 @@ UNITLESS = frozenset(
         "impact_first",
         "impact_last",
         "impacts_in_row",
+        "particles",
+        "face",
+        "label",
+        "rank",
         # flags (1/0 or true/false)
         "on_surface",
         "sliding",
         "computed",
         "shaken_down",
         "elastic_response",
+        # a unit vector and a name
+        "normal",
+        "patch",
         "fitted",
         "fe3d_sticking",
         # texts

@@ -169,12 +169,17 @@ def write_rows(path: str | os.PathLike, header: list[str], rows: Iterable[Iterab
 
 
 def write_csv(path: str | os.PathLike, columns: Mapping[str, Any]) -> Path:
-    """Write equal-length 1-D numeric ``columns`` (header = keys, which carry units) with 10 significant digits."""
+    """Write equal-length 1-D ``columns`` (header = keys, which carry units): numbers with 10 significant digits,
+    texts (a column of strings) as they are."""
     arrays = {k: np.asarray(v).ravel() for k, v in columns.items()}
     lengths = {v.size for v in arrays.values()}
     if len(lengths) > 1:
         raise ValueError(f"columns have different lengths {sorted(lengths)}: a CSV needs equal-length columns")
-    rows = ([f"{float(v):.10g}" for v in row] for row in zip(*arrays.values(), strict=True))
+    text = [v.dtype.kind in "USO" for v in arrays.values()]
+    rows = (
+        [str(v) if t else f"{float(v):.10g}" for v, t in zip(row, text, strict=True)]
+        for row in zip(*arrays.values(), strict=True)
+    )
     return write_rows(path, list(arrays), rows)
 
 

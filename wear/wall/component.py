@@ -1,0 +1,302 @@
+r"""The erosion of a component's wall, from its impact records to its rates, remaining life and worn wall: what
+``impactwear wall`` runs (SI units; angles in degrees from the wall normal, into the wall).
+
+:func:`erode_component` reads the wall (:func:`read_wall`), builds the case's wear law per record
+(:func:`wear.wall.laws.wall_law`), sums the records face by face in chunks (:func:`wear.wall.engine.erode_wall`)
+and turns the sums into rates over the exposure time (:func:`wear.wall.worn.wall_wear`):
+
+- **Scaling to the real flow.** Each face's eroded volume is multiplied by :math:`\dot m / \dot m_{CFD}`
+  (``wall.sand_rate`` / ``wall.cfd_sand_rate``, 1 when not given): a one-way coupled CFD run's impacts scale with the
+  sand it injected.
+- **Exposure time** T (s): ``wall.exposure``, or else the span of the records' hit times (last minus first), which is
+  right for records taken over a window of a steady flow; for the hits of a finite injection, give the time that
+  injection stands for (its mass over its rate).
+- **Thickness** (remaining life): the wall file's per-face field ``thickness_m`` where it gives one, else
+  ``wall.thickness``; a face with neither has no remaining life (NaN).
+- **The worn wall** after ``wall.service_time`` (:func:`wear.wall.worn.worn_wall`).
+"""
+
+from __future__ import annotations
+
+import time
+import warnings
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+import meshio
+import numpy as np
+
+from wear.case import Case
+from wear.case.jobs import default_case
+from wear.wall.engine import WallSums, chunk_rows_for, erode_wall
+from wear.wall.foam import polymesh_folder, read_polymesh
+from wear.wall.law_keys import check_law_keys
+from wear.wall.laws import wall_law
+from wear.wall.mesh import Wall, concat_walls, read_surface
+from wear.wall.sources import plan_chunks, record_files, record_format
+from wear.wall.worn import SECONDS_PER_YEAR, HotSpots, WallWear, hot_spots, wall_wear, worn_mesh
+
+__all__ = ["ComponentErosion", "SURFACE_SUFFIXES", "erode_component", "read_wall"]
+
+#: The suffixes of the surface files of a wall folder (a wall split into files, one patch each).
+SURFACE_SUFFIXES = (".stl", ".obj", ".vtu", ".vtp", ".vtk", ".ply", ".off")
+
+
+def read_wall(path: str | Path, patches: Sequence[str] | None = None, flip: bool = False) -> Wall:
+    """The wall of ``path``: a surface file meshio reads (one patch, named by the file's stem); an OpenFOAM case, its
+    ``constant`` or its polyMesh folder (the wall patches, or ``patches``); or a folder of surface files (a wall split
+    into parts: each file a patch, by name). ``flip`` reverses the surfaces' orientation
+    (:mod:`wear.wall.mesh`)."""
+    p = Path(path)
+    if not p.exists():
+        raise ValueError(f"wall={str(p)!r}: no such file or folder")
+    if p.is_dir():
+        try:
+            folder = polymesh_folder(p)
+        except ValueError:
+            folder = None
+        if folder is not None:
+            if flip:
+                raise ValueError(f"--flip: an OpenFOAM wall ({folder}) is oriented by the mesh; leave --flip out")
+            return read_polymesh(folder, patches)
+        files = sorted(f for f in p.iterdir() if f.suffix.lower() in SURFACE_SUFFIXES)
+        if not files:
+            raise ValueError(
+                f"wall={str(p)!r} holds no OpenFOAM polyMesh and no surface file ({', '.join(SURFACE_SUFFIXES)})"
+            )
+        parts = [read_surface(f, flip=flip) for f in files]
+        return _only_patches(concat_walls(parts), patches, p)
+    return _only_patches(read_surface(p, flip=flip), patches, p)
+
+
+def _only_patches(wall: Wall, patches: Sequence[str] | None, path: Path) -> Wall:
+    """``wall`` if ``patches`` is None or names all its patches; a surface wall cannot be cut by patch."""
+    if patches is None or set(patches) == set(wall.patch_names):
+        return wall
+    raise ValueError(
+        f"--patches={','.join(patches)}: the wall {path} has the patches {', '.join(wall.patch_names)}; choosing "
+        "patches is for an OpenFOAM case's wall patches"
+    )
+
+
+@dataclass(frozen=True, eq=False)
+class ComponentErosion:
+    """The erosion of a wall (module docstring): the ``case``, the ``wall``, the ``records`` files read, the per-face
+    ``sums`` of the records (unscaled), the ``wear`` (rates, scaled to the real flow), ``rate_scale`` (sand rate
+    over the CFD's), the ``exposure_s`` and where it came from (``exposure_source``), the per-face
+    ``thickness_m`` (NaN where none), the ``service_s`` of the worn wall, the law's ``law_name`` and
+    ``law_description``, and the ``seconds`` each part took."""
+
+    case: Case
+    wall: Wall
+    records: tuple[str, ...]
+    sums: WallSums
+    wear: WallWear
+    rate_scale: float
+    exposure_s: float
+    exposure_source: str
+    thickness_m: np.ndarray
+    service_s: float
+    law_name: str
+    law_description: str
+    seconds: dict[str, float]
+
+    @property
+    def remaining_life_s(self) -> np.ndarray:
+        """Each face's remaining life (s): ``inf`` without wear, NaN without a thickness."""
+        life = np.full(len(self.wall), np.nan)
+        known = np.isfinite(self.thickness_m)
+        if known.any():
+            rate = self.wear.thickness_loss_rate_m_s[known]
+            life[known] = np.where(rate > 0.0, self.thickness_m[known] / np.where(rate > 0.0, rate, 1.0), np.inf)
+        return life
+
+    def hot_spots(self, n: int = 10) -> HotSpots:
+        """The ``n`` faces of fastest thickness loss (:func:`wear.wall.worn.hot_spots`; life NaN without a
+        thickness)."""
+        thickness = np.where(np.isfinite(self.thickness_m), self.thickness_m, 1.0)
+        spots = hot_spots(self.wall, self.wear, thickness, n)
+        life = self.remaining_life_s[spots.face]
+        return HotSpots(
+            face=spots.face,
+            label=spots.label,
+            patch=spots.patch,
+            position_m=spots.position_m,
+            thickness_loss_rate_m_s=spots.thickness_loss_rate_m_s,
+            thickness_loss_mm_year=spots.thickness_loss_mm_year,
+            remaining_life_s=life,
+            remaining_life_year=life / SECONDS_PER_YEAR,
+        )
+
+    def face_fields(self) -> dict[str, np.ndarray]:
+        """The per-face fields of the wall's files, named with their units: impact statistics, eroded volume and
+        mass, rates, remaining life and the depth after the service time."""
+        s, w = self.sums, self.wear
+        fields = {
+            "impacts": s.records,
+            "particles": s.particles,
+            "particle_mass_kg": s.mass_kg * self.rate_scale,
+            "mean_speed_m_s": s.mean_speed_m_s,
+            "eroded_volume_m3": w.volume_m3,
+            "eroded_mass_kg": w.mass_kg,
+            "erosion_rate_kg_m2_s": w.erosion_rate_kg_m2_s,
+            "thickness_loss_rate_m_s": w.thickness_loss_rate_m_s,
+            "thickness_loss_mm_year": w.thickness_loss_mm_year,
+            "thickness_m": self.thickness_m,
+            "remaining_life_s": self.remaining_life_s,
+            "remaining_life_year": self.remaining_life_s / SECONDS_PER_YEAR,
+            "wear_depth_m": w.depth_m(self.service_s),
+        }
+        edges = s.angle_edges_deg
+        for b in range(len(edges) - 1):
+            fields[f"particles_angle_{edges[b]:g}_{edges[b + 1]:g}_deg"] = s.angle_histogram[:, b]
+        return fields
+
+    def worn_mesh(self) -> meshio.Mesh:
+        """The worn wall after the service time (:func:`wear.wall.worn.worn_mesh`), with the face fields."""
+        thickness = np.where(np.isfinite(self.thickness_m), self.thickness_m, 1.0)
+        mesh = worn_mesh(self.wall, self.wear, self.service_s, thickness)
+        cells = {**mesh.cell_data, **_split(self.wall, self.face_fields())}
+        return meshio.Mesh(mesh.points, mesh.cells, point_data=mesh.point_data, cell_data=cells)
+
+    def summary(self) -> dict:
+        """The numbers of ``summary.json`` (SI units)."""
+        s, w = self.sums, self.wear
+        kept = int(s.records.sum())
+        rate = w.thickness_loss_mm_year
+        worst = int(np.argmax(rate))
+        life = self.remaining_life_s
+        shortest = float(np.nanmin(life)) if np.isfinite(life).any() else None
+        return {
+            "records": {
+                "files": list(self.records),
+                "read": s.records_read,
+                "on_wall": kept,
+                "skipped": dict(s.skipped),
+                "particles": float(s.particles.sum()),
+                "particle_mass_kg": float(s.mass_kg.sum()),
+                "time_first_s": s.time_first_s,
+                "time_last_s": s.time_last_s,
+            },
+            "wall": {
+                "faces": len(self.wall),
+                "patches": list(self.wall.patch_names),
+                "area_m2": float(self.wall.area.sum()),
+                "faces_hit": int((s.records > 0).sum()),
+            },
+            "law": {"name": self.law_name, "description": self.law_description},
+            "exposure_s": self.exposure_s,
+            "exposure_source": self.exposure_source,
+            "rate_scale": self.rate_scale,
+            "service_time_s": self.service_s,
+            "results": {
+                "eroded_volume_m3": float(w.volume_m3.sum()),
+                "eroded_mass_kg": float(w.mass_kg.sum()),
+                "erosion_ratio_kg_per_kg": float(w.mass_kg.sum() / (s.mass_kg.sum() * self.rate_scale))
+                if s.mass_kg.sum() > 0
+                else 0.0,
+                "max_thickness_loss_mm_year": float(rate[worst]),
+                "max_thickness_loss_rate_m_s": float(w.thickness_loss_rate_m_s[worst]),
+                "max_thickness_loss_face": worst,
+                "max_thickness_loss_position_m": self.wall.centre[worst].tolist(),
+                "min_remaining_life_s": shortest,
+                "min_remaining_life_year": None if shortest is None else shortest / SECONDS_PER_YEAR,
+                "max_wear_depth_m": float(w.depth_m(self.service_s).max()),
+            },
+            "seconds": dict(self.seconds),
+        }
+
+
+def _split(wall: Wall, fields: dict[str, np.ndarray]) -> dict[str, list[np.ndarray]]:
+    """Per-face ``fields`` as meshio's cell data of :meth:`Wall.to_meshio` (one block per face size)."""
+    blocks = [np.flatnonzero(wall.sizes == k) for k in np.unique(wall.sizes)]
+    return {name: [np.asarray(values)[faces] for faces in blocks] for name, values in fields.items()}
+
+
+def _note_worn_through(depth: np.ndarray, thickness: np.ndarray, service_s: float) -> None:
+    """A warning when the depth after the service time reaches the wall thickness on some face."""
+    through = np.flatnonzero(depth >= thickness)  # NaN thickness: never
+    if len(through):
+        f = through[np.argmax(depth[through] / thickness[through])]
+        warnings.warn(
+            f"the wall is worn through on {len(through)} faces after wall.service_time={service_s:g} s (face {f}: "
+            f"{depth[f]:.3g} m deep in a {thickness[f]:.3g} m wall); the worn wall is moved that far all the same: "
+            "for a worn wall to mesh, give a wall.service_time within the shortest remaining life",
+            stacklevel=3,
+        )
+
+
+def erode_component(
+    case: Case,
+    records: str | Path | Sequence[str | Path],
+    wall: Wall,
+    *,
+    workers: int = 1,
+    scheduler: str | None = None,
+    progress: bool = True,
+    skip_bad: bool = False,
+    normal: str | None = None,
+    tolerance: float | None = None,
+    chunk_rows: int | None = None,
+) -> ComponentErosion:
+    """The erosion of ``wall`` by the impact records of ``records`` (files or folders: :mod:`wear.wall.sources`)
+    with ``case``'s wear law, plate and ``[wall]`` table (module docstring). ``workers``, ``scheduler``,
+    ``progress``, ``skip_bad``, ``normal``, ``tolerance``: as :func:`wear.wall.engine.erode_wall`'s;
+    ``chunk_rows``: records per chunk (default: the largest that fits the memory budget). A key of the case that
+    the law does not read, at a value other than the default of ``impactwear wall``, is refused
+    (:func:`wear.wall.law_keys.check_law_keys`)."""
+    check_law_keys(case, default_case("wall"))
+    paths = record_files(records)
+    if chunk_rows is None:
+        formats = {record_format(p) for p in paths}
+        chunk_rows = min(chunk_rows_for(wall, workers, f) for f in formats)
+    chunks = plan_chunks(paths, chunk_rows)
+    spec = case.wall
+    seconds: dict[str, float] = {}
+    t0 = time.perf_counter()
+    law = wall_law(case)
+    seconds["law"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    sums = erode_wall(
+        chunks,
+        wall,
+        law,
+        workers=workers,
+        scheduler=scheduler,
+        progress=progress,
+        skip_bad=skip_bad,
+        normal=normal,
+        tolerance=tolerance,
+    )
+    seconds["records"] = time.perf_counter() - t0
+    if spec.exposure is not None:
+        exposure, source = spec.exposure, "wall.exposure"
+    else:
+        exposure, source = sums.time_last_s - sums.time_first_s, "the records' time span"
+        if not exposure > 0.0:
+            raise ValueError(
+                f"wall.exposure: the records span {max(exposure, 0.0):g} s (first hit {sums.time_first_s:g} s, last "
+                f"{sums.time_last_s:g} s), so they give no time to turn volumes into rates; give wall.exposure (s)"
+            )
+    scale = spec.rate_scale()
+    wear = wall_wear(wall, sums.volume_m3 * scale, exposure, case.plate.density)
+    thickness = np.full(len(wall), np.nan if spec.thickness is None else spec.thickness)
+    if wall.thickness_m is not None:
+        thickness = np.where(np.isfinite(wall.thickness_m), wall.thickness_m, thickness)
+    _note_worn_through(wear.depth_m(spec.service_time), thickness, spec.service_time)
+    return ComponentErosion(
+        case=case,
+        wall=wall,
+        records=tuple(dict.fromkeys(c.path for c in chunks)),
+        sums=sums,
+        wear=wear,
+        rate_scale=scale,
+        exposure_s=float(exposure),
+        exposure_source=source,
+        thickness_m=thickness,
+        service_s=spec.service_time,
+        law_name=case.wear.law,
+        law_description=getattr(law, "description", case.wear.law),
+        seconds=seconds,
+    )
