@@ -39,7 +39,7 @@ def test_checks_page_states_the_reports_count_and_time():
 
 
 #: The packages whose ``__all__`` the public-API page lists, name by name.
-PUBLIC_PACKAGES = ("contact", "fem", "wear", "wear.case", "wear.chain", "wear.erosion")
+PUBLIC_PACKAGES = ("contact", "fem", "wear", "wear.case", "wear.chain", "wear.erosion", "wear.wall")
 #: A row of the public-API page: the public path, then its one-line description.
 PUBLIC_ROW = re.compile(r"^\| \{py:obj\}`([\w.]+)` \| (.+?) \|$", flags=re.MULTILINE)
 

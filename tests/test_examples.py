@@ -85,6 +85,25 @@ def check_tutorial_case_to_figure(out: Path, stdout: str) -> None:
     assert (out / "glass.toml").is_file() and (out / "run" / "summary.json").is_file()
 
 
+def check_component_wall_bend(out: Path, stdout: str) -> None:
+    """OpenFOAM v1912's own eroded volume Q of the committed bend run (particleErosion, Finnie): the example's
+    ``finnie`` law with the run's constants matches it on every face to 1e-6; the DNV rates of ``dnv/faces.csv``
+    are their definitions (mm/year = m/s × 1e3 × 365.25 days; life = 5 mm over the rate) and the hot spot lies in
+    a band (0.25–4) around DNV-RP-O501's bend model for the flow (123 mm/year at G = 1, coded in
+    tests/test_wall_dnv_bend.py) that a unit slip would leave."""
+    found = re.search(r"finnie against OpenFOAM's Q on (\d+) faces: largest relative difference (\S+)", stdout)
+    assert found and int(found[1]) > 700 and float(found[2]) < 1e-6, stdout
+    rows = _rows(out / "dnv" / "faces.csv")
+    rate = _column(rows, "thickness_loss_rate_m_s")
+    assert _column(rows, "thickness_loss_mm_year") == pytest.approx(rate * 1e3 * 365.25 * 86400.0, rel=1e-9)
+    worn = rate > 0
+    assert _column(rows, "remaining_life_s")[worn] == pytest.approx(5e-3 / rate[worn], rel=1e-9)
+    hot = float(re.search(r"hot spot: (\S+) mm/year", stdout)[1])
+    assert hot == pytest.approx(_column(rows, "thickness_loss_mm_year").max(), rel=1e-3)
+    assert 0.25 < hot / 123.0 < 4.0
+    assert (out / "wall.png").is_file() and (out / "along_the_bend.png").is_file()
+
+
 def check_default_run(out: Path, stdout: str) -> None:
     """Newton's second law on the saved history: the normal impulse ∫F dt equals the ball's change of normal momentum
     m (V_in − V_out) (alumina, R 2.5 mm, 3950 kg/m³; V_in = 3 cos 30° m/s); within 0.5%."""

@@ -135,6 +135,8 @@ def test_a_uniform_stream_on_a_flat_wall_gives_the_closed_forms_on_every_face(fl
         "wall.sand_rate=3.0",
         "--set",
         "wall.cfd_sand_rate=1.5",
+        "--set",
+        "wall.loss_budget=2e-4",
         "--quiet",
         "--out",
         str(out),
@@ -160,6 +162,8 @@ def test_a_uniform_stream_on_a_flat_wall_gives_the_closed_forms_on_every_face(fl
     assert summary["exposure_s"] == pytest.approx(exposure, rel=1e-12)
     assert summary["exposure_source"] == "the records' time span"
     assert summary["results"]["eroded_volume_m3"] == pytest.approx(n * volume, rel=1e-9)
+    # the depths scale with the sand rate: the rate that wears 0.2 mm in the service time
+    assert summary["results"]["allowable_sand_rate_kg_s"] == pytest.approx(3.0 * 2e-4 / (rate * service), rel=1e-9)
     # the worn wall: every point of a flat wall of equal depths moved by that depth into the wall (−z)
     depth = rate * service
     worn = meshio.read(out / "worn_wall.stl")
@@ -199,3 +203,40 @@ def test_every_field_the_command_writes_names_its_unit(flat, tmp_path):
     without = sorted(n for n in names if not unit_of(n) and n not in UNITLESS and not n.startswith("particles_angle"))
     assert without == [], without
     assert {"wall.png", "impacts.png", "worn_wall.stl"} <= {p.name for p in out.iterdir()}
+
+
+def test_the_paths_in_a_case_file_and_a_sweep_of_the_wall_material(flat, tmp_path):
+    """``wall.records`` and ``wall.surface`` in the case: the command needs no arguments, and a sweep over the wall's
+    density gives the same volume (Finnie's closed form) and masses in proportion to the density."""
+    wall_file, records, mesh = flat
+    case = tmp_path / "case.toml"
+    finnie = f'law = "finnie"\ncutting_fraction = {C}\nforce_ratio = {K}\ndepth_ratio = {PSI}\n'
+    case.write_text(
+        f"[wear]\n{finnie}[plate]\nhardness = {P}\n[wall]\nrecords = '{records}'\nsurface = '{wall_file}'\n"
+    )
+    assert (
+        main(
+            ["wall", str(case), "--set", "wall.exposure=1.0", "--quiet", "--no-figures", "--out", str(tmp_path / "one")]
+        )
+        == 0
+    )
+    one = _faces(tmp_path / "one")
+    sweep = tmp_path / "sweep.toml"
+    sweep.write_text(
+        f'[sweep]\nstage = "wall"\n[base]\nwear.law = "finnie"\nwear.cutting_fraction = {C}\n'
+        f"wear.force_ratio = {K}\nwear.depth_ratio = {PSI}\nplate.hardness = {P}\n"
+        f"wall.records = '{records}'\nwall.surface = '{wall_file}'\n"
+        '[grid]\n"plate.density" = [7800.0, 2700.0]\n'
+    )
+    assert main(["sweep", str(sweep), "--out", str(tmp_path / "sweep"), "--workers", "1", "--quiet"]) == 0
+    with (tmp_path / "sweep" / "results.csv").open() as f:
+        rows = list(csv.DictReader(f))
+    mass = DENSITY * math.pi * DIAMETER**3 / 6.0
+    n = len(mesh.cells[0].data)
+    volume = n * PER_FACE * PARTICLES * finnie_1960(mass, SPEED, 90.0 - THETA)
+    assert _floats(one["eroded_volume_m3"]).sum() == pytest.approx(volume, rel=1e-9)
+    assert len(rows) == 2
+    for row in rows:
+        assert float(row["results.eroded_volume_m3"]) == pytest.approx(volume, rel=1e-9)
+        density = float(row["plate.density_kg_m3"])
+        assert float(row["results.eroded_mass_kg"]) == pytest.approx(density * volume, rel=1e-9)

@@ -11,10 +11,11 @@ from pathlib import Path
 import meshio
 import numpy as np
 
+from wear.app.data import OPENFOAM_BEND
 from wear.case import Case
 
 BEND = Path(__file__).resolve().parents[1] / "examples" / "openfoam_bend"
-OUTPUTS = BEND / "outputs"
+OUTPUTS = OPENFOAM_BEND  # installed with the package
 RECORDS = OUTPUTS / "patchPostProcessing1"
 
 

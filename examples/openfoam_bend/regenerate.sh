@@ -1,6 +1,6 @@
 #!/bin/bash
 # Regenerate the OpenFOAM reference run of examples/openfoam_bend from scratch, with Debian's `openfoam` package
-# (v1912, 1912.200626), serial, and copy the small outputs into outputs/ (see README.md).
+# (v1912, 1912.200626), serial, and copy the small outputs into wear/app/data/openfoam_bend/ (see README.md).
 #
 #   ./regenerate.sh [WORK_DIR]      (default: a new temporary directory; the run itself takes well under a minute)
 #
@@ -11,7 +11,7 @@ set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 work="${1:-$(mktemp -d /tmp/openfoam_bend.XXXXXX)}"
-out="$here/outputs"
+out="$(cd "$here/../.." && pwd)/wear/app/data/openfoam_bend"
 
 # Debian's bashrc sets WM_PROJECT_DIR etc. (the solvers need it to find etc/controlDict); it also complains about
 # the missing foamEtcFile/foamCleanPath helpers, which is harmless.
@@ -44,7 +44,7 @@ last="$(ls -d [0-9]* | sort -g | tail -1)"
 echo "particles: end time $last"
 
 # The small outputs, written to a fresh directory and moved into place (earlier outputs are replaced as a whole).
-tmp="$(mktemp -d "$here/.outputs.XXXXXX")"
+tmp="$(mktemp -d "$(dirname "$out")/.openfoam_bend.XXXXXX")"
 chmod 755 "$tmp"
 pp=postProcessing/lagrangian/kinematicCloud/patchPostProcessing1
 for t in $(ls "$pp" | sort -g); do

@@ -250,6 +250,15 @@ JOBS: dict[str, Job] = {
             "spots and the worn wall",
             "wear.app.commands.wall",
             {**SAND_ON_STEEL, "wear": {**SAND_ON_STEEL["wear"], "law": "dnv"}},
+            stages=(
+                Stage(
+                    "wall",
+                    ("ball", "plate", "impact", "wear", "wall"),
+                    "the erosion of a component's wall from CFD or DEM impact records (wear.wall.erode_component)",
+                    f"{_STAGES}:wall_stage",
+                    f"{_STAGES}:WALL_UNITS",
+                ),
+            ),
         ),
     )
 }

@@ -417,13 +417,28 @@ YEAR = 365.25 * 86400.0
 @dataclass(frozen=True)
 class WallSpec(Table):
     """Erosion of a component's wall from CFD or DEM impact records (:mod:`wear.wall`; the particles are the
-    records', the wall material ``[plate]``, the wear law ``[wear]``): the wall ``thickness`` (m; a per-face field of
-    the wall file replaces it), the ``exposure`` (s) the records stand for, the ``service_time`` (s) of the worn
-    wall, the real flow's ``sand_rate`` against the ``cfd_sand_rate`` its run injected (kg/s: every volume is scaled
-    by their ratio), and the response table of an FE-informed law over speed and angle (``table_*``; the closed
-    forms read none of them)."""
+    records', the wall material ``[plate]``, the wear law ``[wear]``): the ``records`` and the wall's ``surface``
+    (paths; the command's arguments win), the wall ``thickness`` (m; a per-face field of the wall file replaces it),
+    the ``exposure`` (s) the records stand for, the ``service_time`` (s) of the worn wall, the real flow's
+    ``sand_rate`` against the ``cfd_sand_rate`` its run injected (kg/s: every volume is scaled by their ratio), the
+    ``loss_budget`` (m) the wall may lose in the service time (for the allowable sand rate), and the response table
+    of an FE-informed law over speed and angle (``table_*``; the closed forms read none of them)."""
 
     table: ClassVar[str] = "wall"
+    records: str | None = key(
+        str,
+        None,
+        "impact records: a file or folder (OpenFOAM, Fluent, CSV, Parquet), relative to the current folder",
+        optional=True,
+        absent="the command's RECORDS (a sweep needs it)",
+    )
+    surface: str | None = key(
+        str,
+        None,
+        "the wall: a surface file, a folder of them or an OpenFOAM case, relative to the current folder",
+        optional=True,
+        absent="the command's WALL (a sweep needs it)",
+    )
     thickness: float | None = key(
         float,
         None,
@@ -476,6 +491,17 @@ class WallSpec(Table):
         high=1e6,
         optional=True,
         absent="none: sand_rate needs it",
+    )
+    loss_budget: float | None = key(
+        float,
+        None,
+        "thickness the wall may lose in the service time, for the allowable sand rate",
+        "m",
+        low=0.0,
+        low_open=True,
+        high=10.0,
+        optional=True,
+        absent="no allowable sand rate",
     )
     table_speed_min: float = key(
         float, 0.1, "response table (FE-informed laws): lowest impact speed", "m/s", low=0.0, low_open=True, high=1000.0

@@ -14,6 +14,9 @@ and turns the sums into rates over the exposure time (:func:`wear.wall.worn.wall
 - **Thickness** (remaining life): the wall file's per-face field ``thickness_m`` where it gives one, else
   ``wall.thickness``; a face with neither has no remaining life (NaN).
 - **The worn wall** after ``wall.service_time`` (:func:`wear.wall.worn.worn_wall`).
+- **The allowable sand rate** for a ``wall.loss_budget`` b (m) over the service time :math:`t_s`: the depths scale
+  with the sand rate, so the rate at which the deepest face loses b is :math:`\dot m\, b / \max_f h_f(t_s)` (with
+  :math:`\dot m` = ``wall.sand_rate``; without it, the factor :math:`b / \max_f h_f` on the records' own rate).
 """
 
 from __future__ import annotations
@@ -168,6 +171,9 @@ class ComponentErosion:
         worst = int(np.argmax(rate))
         life = self.remaining_life_s
         shortest = float(np.nanmin(life)) if np.isfinite(life).any() else None
+        deepest = float(w.depth_m(self.service_s).max())
+        budget, sand_rate = self.case.wall.loss_budget, self.case.wall.sand_rate
+        factor = budget / deepest if budget is not None and deepest > 0.0 else None
         return {
             "records": {
                 "files": list(self.records),
@@ -202,7 +208,9 @@ class ComponentErosion:
                 "max_thickness_loss_position_m": self.wall.centre[worst].tolist(),
                 "min_remaining_life_s": shortest,
                 "min_remaining_life_year": None if shortest is None else shortest / SECONDS_PER_YEAR,
-                "max_wear_depth_m": float(w.depth_m(self.service_s).max()),
+                "max_wear_depth_m": deepest,
+                "allowable_rate_factor": factor,
+                "allowable_sand_rate_kg_s": None if factor is None or sand_rate is None else factor * sand_rate,
             },
             "seconds": dict(self.seconds),
         }

@@ -35,13 +35,14 @@ def keys_read(case: Case) -> dict[str, tuple[str, ...]]:
     """The keys of the ``[ball]``, ``[plate]``, ``[impact]``, ``[wear]`` tables and the table keys of ``[wall]``
     that :func:`wall_law` reads for ``case`` (table → keys): a command refuses the others at a value other than
     its default, so that no key is silently ignored. The closed forms read no particle key (the records carry
-    the particles) and of the plate only what their formula takes (density, hardness or yield strength), whether it
-    is rigid, and its name; the table laws read the
+    the particles) and of the plate what their formula takes (hardness or yield strength), its density (the wall's
+    eroded mass), whether it is rigid, and its name; the table laws read the
     particle's material and the impact's models and integration, but neither its speed nor its angle (the
     records')."""
     law = case.wear.law
     if law in CLOSED_FORM_LAWS:
-        plate = {"finnie": ("rigid", "hardness", "yield_strength", "name"), "dnv": ("rigid", "density", "name")}.get(
+        # the density always: the wall's eroded mass and erosion rate are ρ V (wear.wall.worn)
+        plate = {"dnv": ("rigid", "density", "name")}.get(
             law, ("rigid", "density", "hardness", "yield_strength", "name")
         )
         return {"ball": (), "plate": plate, "impact": (), "wear": ("law", *_WEAR_KEYS[law]), "wall": ()}

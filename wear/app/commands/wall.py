@@ -1,5 +1,5 @@
-"""``impactwear wall RECORDS WALL [CASE.toml] [--out DIR]``: erosion of a component's wall from CFD or DEM impact
-records.
+"""``impactwear wall RECORDS WALL [CASE.toml] [--out DIR]`` (or the paths as ``wall.records``, ``wall.surface``):
+erosion of a component's wall from CFD or DEM impact records.
 
 RECORDS: OpenFOAM's ``patchPostProcessing`` output (a ``.post`` file or its folder of write times), an Ansys
 Fluent DPM sample file, or the plain table (CSV or Parquet; a folder of them: every file, by name) —
@@ -76,18 +76,23 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def main(args: argparse.Namespace) -> int:
+    if args.case is None and args.wall is None and str(args.records).endswith(".toml"):
+        args.case, args.records = args.records, None  # `impactwear wall CASE.toml`: the paths are in the case
     case = case_from_args(args, "wall")
     if args.print_default:
         return print_default(args, "wall", case)
-    for name in ("records", "wall"):
-        if getattr(args, name) is None:
-            raise ValueError(f"{name.upper()} is missing: give impactwear wall RECORDS WALL [CASE.toml]")
-        if not Path(getattr(args, name)).exists():
-            raise ValueError(f"{name}={getattr(args, name)!r}: no such file or folder")
+    given = {"records": args.records, "surface": args.wall}
+    case = case.with_(wall={k: v for k, v in given.items() if v is not None})  # the arguments win, and are recorded
+    for name, key in (("RECORDS", "records"), ("WALL", "surface")):
+        path = getattr(case.wall, key)
+        if path is None:
+            raise ValueError(f"{name} is missing: give impactwear wall RECORDS WALL [CASE.toml] (or wall.{key})")
+        if not Path(path).exists():
+            raise ValueError(f"{'records' if key == 'records' else 'wall'}={path!r}: no such file or folder")
     check_scheduler_address(args.scheduler)
     check_law_keys(case, JOBS["wall"].default_case())
     patches = None if args.patches is None else [p.strip() for p in args.patches.split(",") if p.strip()]
-    wall = read_wall(args.wall, patches, flip=args.flip)
+    wall = read_wall(case.wall.surface, patches, flip=args.flip)
     check_output_folder(args.out, "wall", ENTRIES)
     if args.dask_local is not None:
         workers, scheduler = args.dask_local, "local"
@@ -97,7 +102,7 @@ def main(args: argparse.Namespace) -> int:
     with collect_notes() as notes:
         run = erode_component(
             case,
-            args.records,
+            case.wall.records,
             wall,
             workers=workers,
             scheduler=scheduler,
@@ -126,6 +131,11 @@ def _say(summary: dict, out: str) -> None:
     )
     life = r["min_remaining_life_year"]
     life_text = "" if life is None else f", shortest remaining life {life:.4g} years"
+    allowed = r["allowable_sand_rate_kg_s"]
+    if allowed is not None:
+        life_text += f"; allowable sand rate {allowed:.4g} kg/s"
+    elif r["allowable_rate_factor"] is not None:
+        life_text += f"; allowable sand rate {r['allowable_rate_factor']:.4g} x the records'"
     x, y, z = r["max_thickness_loss_position_m"]
     print(
         f"  eroded mass {r['eroded_mass_kg']:.6g} kg; largest thickness loss {r['max_thickness_loss_mm_year']:.4g} "

@@ -46,6 +46,7 @@ UNIT_SUFFIXES = {
     "kg/m^2": "kg_m2",
     "kg/m^3": "kg_m3",
     "kg/(m^2 s)": "kg_m2_s",
+    "kg/s": "kg_s",
     "deg": "deg",
     "year": "year",
     "mm/year": "mm_year",

@@ -34,10 +34,12 @@ from wear.chain.records import CSV_COLUMNS
 from wear.chain.repeated_impacts import repeat
 from wear.chain.single import run
 from wear.erosion.run import erode_case
+from wear.wall import erode_component, read_wall
 
 __all__ = [
     "CALIBRATE_UNITS",
     "ERODE_UNITS",
+    "WALL_UNITS",
     "INDENT_UNITS",
     "REPEAT_UNITS",
     "RUN_UNITS",
@@ -49,6 +51,7 @@ __all__ = [
     "indent_stage",
     "repeat_stage",
     "run_stage",
+    "wall_stage",
     "stage_case",
 ]
 
@@ -213,6 +216,32 @@ ERODE_UNITS = {
     "patch.size_m": "m",
     "results.mass_loss_kg": "kg",
     "results.max_depth_m": "m",
+}
+
+
+def wall_stage(case: dict) -> dict:
+    """The erosion of a component's wall (:func:`wear.wall.erode_component`; no files written) from the records
+    ``wall.records`` on the wall ``wall.surface`` (e.g. one wall material, law or sand rate per case, on the same CFD
+    run). Results: ``records.*`` (counts, kg, s), ``wall.*`` (faces, m²), ``exposure_s``, ``rate_scale``,
+    ``results.*`` (m³, kg, kg/kg, m/s, mm/year, s, years, m, the allowable sand rate kg/s), without the wall times."""
+    c = stage_case(case, "wall")
+    for key in ("records", "surface"):
+        if getattr(c.wall, key) is None:
+            raise ValueError(f"wall.{key} is missing: a wall sweep reads its records and wall from the case")
+    result = erode_component(c, c.wall.records, read_wall(c.wall.surface), progress=False)
+    return _flat(result.summary(), ("case", "seconds", "law", "exposure_source"))
+
+
+#: The wall stage's results that have a unit (SI).
+WALL_UNITS = {
+    "records.particle_mass_kg": "kg",
+    "exposure_s": "s",
+    "results.eroded_volume_m3": "m^3",
+    "results.eroded_mass_kg": "kg",
+    "results.max_thickness_loss_mm_year": "mm/year",
+    "results.min_remaining_life_year": "year",
+    "results.max_wear_depth_m": "m",
+    "results.allowable_sand_rate_kg_s": "kg/s",
 }
 
 

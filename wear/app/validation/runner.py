@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from wear.app.outputs.writer import write_text
-from wear.app.validation import chung_ooi, contact, fem, laws, wear  # noqa: F401  (importing them registers their groups)
+from wear.app.validation import chung_ooi, contact, fem, laws, wall, wear  # noqa: F401  (importing them registers their groups)
 from wear.app.validation.checks import AREAS, GROUPS, Check
 
 __all__ = ["HEADER", "Validation", "run_validation", "render_report", "write_report"]
