@@ -263,7 +263,7 @@ def erode_component(
     spec = case.wall
     seconds: dict[str, float] = {}
     t0 = time.perf_counter()
-    law = wall_law(case)
+    law = wall_law(case, progress)
     seconds["law"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     sums = erode_wall(

@@ -51,6 +51,7 @@ import numpy as np
 
 from contact.theory import sphere_mass
 from wear.case import Case
+from wear.case.progress import progress_bar
 from wear.erosion.response import Footprint, ImpactResponse
 from wear.erosion.run import impact_response
 from wear.erosion.table import build_response_table, table_entries
@@ -70,6 +71,8 @@ __all__ = [
 
 #: The laws evaluated in closed form per record; the others go through the response table.
 CLOSED_FORM_LAWS = ("finnie", "oka", "dnv")
+#: Impacts of the response table run at a time (the progress bar moves between batches).
+TABLE_BATCH = 32
 #: Relative tolerance of a record's particle density against the table's (a CSV prints ~15 digits).
 DENSITY_TOLERANCE = 1e-9
 
@@ -261,29 +264,38 @@ def table_axes_of(case: Case) -> tuple[np.ndarray, np.ndarray]:
 class _Band:
     """The ``response`` run only where a record of speed ``low`` to ``high`` (m/s) is looked up: within one grid
     step ``ratio`` of the normal speeds V cos θ of that range; elsewhere a footprint of NaN volume, which no lookup
-    reaches (a corner of the rectangular table: a normal speed of 100 m/s at 89° is a speed of 5730 m/s)."""
+    reaches (a corner of the rectangular table: a normal speed of 100 m/s at 89° is a speed of 5730 m/s). The
+    impacts run in batches of :data:`TABLE_BATCH`, with a progress bar unless ``quiet``."""
 
     response: ImpactResponse
     low: float
     high: float
     ratio: float
+    quiet: bool = True
 
     def many(self, normal_speeds, angles) -> list[Footprint]:
-        """The footprints at ``normal_speeds`` (m/s) and ``angles`` (deg), one batched run of those used."""
+        """The footprints at ``normal_speeds`` (m/s) and ``angles`` (deg), batched runs of those used."""
         cosine = np.cos(np.radians(angles))
         used = (normal_speeds <= self.high * cosine * self.ratio) & (normal_speeds >= self.low * cosine / self.ratio)
-        computed = iter(self.response.many(normal_speeds[used], angles[used]))
+        speeds, thetas = normal_speeds[used], angles[used]
+        computed: list[Footprint] = []
+        with progress_bar(len(speeds), "impactwear wall: response table", "impact", self.quiet) as update:
+            for start in range(0, len(speeds), TABLE_BATCH):
+                part = slice(start, start + TABLE_BATCH)
+                computed += self.response.many(speeds[part], thetas[part])
+                update(len(computed))
+        found = iter(computed)
         unit = np.array([-1.0, 0.0, 1.0])
         unused = Footprint(unit, unit, np.zeros((3, 3)), 1.0, cutting_volume_m3=math.nan)
-        return [next(computed) if u else unused for u in used]
+        return [next(found) if u else unused for u in used]
 
 
-def _table_law(case: Case) -> TableLaw:
-    """The case's FE-informed law through its response table (built now)."""
+def _table_law(case: Case, progress: bool) -> TableLaw:
+    """The case's FE-informed law through its response table (built now; ``progress``: a bar on stderr)."""
     response = impact_response(case)
     speeds, angles = table_axes_of(case)
     w = case.wall
-    band = _Band(response, w.table_speed_min, w.table_speed_max, (1.0 + 1e-9) * speeds[1] / speeds[0])
+    band = _Band(response, w.table_speed_min, w.table_speed_max, (1.0 + 1e-9) * speeds[1] / speeds[0], not progress)
     # one impact first: a law that cannot run on this case (no plastic work on an elastic normal law) fails in one
     # impact rather than after the whole table's
     response.many(speeds[-1:], angles[:1])
@@ -321,9 +333,9 @@ def _table_law(case: Case) -> TableLaw:
     )
 
 
-def wall_law(case: Case) -> WallLaw:
+def wall_law(case: Case, progress: bool = False) -> WallLaw:
     """The case's wear law (``wear.law``) per record of a wall (see the module docstring): a closed form, or the
-    response table of an FE-informed law (built now: :attr:`TableLaw.seconds`)."""
+    response table of an FE-informed law (built now: :attr:`TableLaw.seconds`; ``progress``: a bar on stderr)."""
     law, plate = case.wear.law, case.plate
     constants = {**case.wear.values(), "hardness": plate.hardness}
     material = plate.material()
@@ -338,4 +350,4 @@ def wall_law(case: Case) -> WallLaw:
         return OkaLaw(flow_pressure_of(constants, material), plate.density, e90, k2)
     if law == "dnv":
         return DnvLaw(w.dnv_K, w.dnv_n, plate.density)
-    return _table_law(case)
+    return _table_law(case, progress)
