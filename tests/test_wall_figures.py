@@ -1,0 +1,63 @@
+"""The wall's figures show what they say: each face coloured by its own rate on a scale from 0 to the largest, the
+faces without wear in grey, the hot spot marked at its face's centre with its rate, the units on the colour bar and
+the axes; the histograms hold every particle in the bins given."""
+
+from __future__ import annotations
+
+import meshio
+import numpy as np
+import pytest
+from figure_capture import capture_figures
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+from wall_cases import flat_mesh
+
+import wear.app.figures.wall as wall_figures
+from wear.wall import read_surface
+
+
+@pytest.fixture
+def captured(monkeypatch):
+    return capture_figures(monkeypatch, wall_figures)
+
+
+def test_the_wall_is_coloured_face_by_face_with_the_hot_spot_marked(captured, tmp_path):
+    meshio.write(tmp_path / "plate.stl", flat_mesh())
+    wall = read_surface(tmp_path / "plate.stl")
+    rate = np.zeros(len(wall))
+    rate[[3, 7, 11]] = [40.0, 10.0, 80.0]
+    wall_figures.plot_wall_rate(wall, rate, 11, tmp_path / "wall.png", "test")
+    fig = captured["wall.png"]
+    ax = fig.axes[0]
+    faces = next(c for c in ax.collections if isinstance(c, Poly3DCollection))
+    colours = faces.get_facecolor()
+    _, owner = wall.triangles
+    # matplotlib sorts a 3-D collection's faces by depth: compare the colours drawn as a set
+    grey = np.all(np.isclose(colours[:, :3], wall_figures.UNWORN[:3]), axis=1)
+    assert grey.sum() == (rate[owner] == 0.0).sum()  # grey exactly as many as the faces nothing wore
+    bar = fig.axes[1]
+    assert "mm/year" in bar.get_ylabel()
+    assert bar.get_ylim() == pytest.approx((0.0, 80.0))  # the scale runs to the largest rate
+    cmap = wall_figures.colormaps["inferno_r"]
+    worn = {tuple(np.round(c, 6)) for c in colours[~grey]}
+    assert worn == {tuple(np.round(cmap(r / 80.0), 6)) for r in (40.0, 10.0, 80.0)}
+    label = next(t for t in ax.texts if "hot spot" in t.get_text())
+    assert "80 mm/year" in label.get_text()
+    marker = ax.collections[-1]._offsets3d
+    assert np.allclose([m[0] for m in marker], wall.centre[11])
+    assert all(u in ax.get_xlabel() + ax.get_ylabel() + ax.get_zlabel() for u in ("x (m)", "y (m)", "z (m)"))
+
+
+def test_the_histograms_hold_every_particle(captured, tmp_path):
+    speed_edges = np.geomspace(0.01, 1000.0, 51)
+    speed = np.zeros(50)
+    speed[[20, 25, 26]] = [5.0, 10.0, 2.5]
+    angle_edges = np.arange(0.0, 91.0, 10.0)
+    angle = np.array([0, 1, 2, 3, 4, 5, 2.5, 0, 0], float)
+    wall_figures.plot_impact_histograms(speed_edges, speed, angle_edges, angle, tmp_path / "impacts.png", "t")
+    ax1, ax2 = captured["impacts.png"].axes
+    drawn = [p for p in ax1.patches]
+    assert drawn and "m/s" in ax1.get_xlabel() and ax1.get_xscale() == "log"
+    heights = drawn[0].get_path().vertices[:, 1]
+    assert heights.max() == 10.0
+    assert "deg" in ax2.get_xlabel() and ax2.get_xlim() == (0.0, 90.0)
+    assert ax2.patches[0].get_path().vertices[:, 1].max() == 5.0
