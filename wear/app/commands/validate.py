@@ -12,7 +12,7 @@ import shlex
 import sys
 from pathlib import Path
 
-from wear.app.commands.common import path_option
+from wear.app.commands.common import collect_notes, path_option, print_notes
 from wear.app.outputs.folder import check_named_file, check_writable_folder
 from wear.app.validation.checks import GROUPS
 from wear.app.validation.runner import HEADER, render_report, run_validation, write_report
@@ -63,7 +63,9 @@ def main(args: argparse.Namespace) -> int:
     option = "--report" if args.report else "--out"
     check_writable_folder(path.parent, option)
     check_named_file(path, "validate", HEADER, f"{option}={args.report or args.out!r}")
-    result = run_validation(quick=args.quick, only=args.only, progress=progress)
+    with collect_notes() as notes:  # what the libraries warn (an elastic ball on the FE plate) is a note, once
+        result = run_validation(quick=args.quick, only=args.only, progress=progress)
+    print_notes("validate", notes)
     command = "impactwear validate" + (" --quick" if args.quick else "")
     command += "".join(f" --only {shlex.quote(s)}" for s in args.only or ())
     write_report(path, render_report(result, command))
