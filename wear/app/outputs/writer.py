@@ -175,7 +175,7 @@ def write_csv(path: str | os.PathLike, columns: Mapping[str, Any]) -> Path:
     lengths = {v.size for v in arrays.values()}
     if len(lengths) > 1:
         raise ValueError(f"columns have different lengths {sorted(lengths)}: a CSV needs equal-length columns")
-    text = [v.dtype.kind in "USO" for v in arrays.values()]
+    text = [v.dtype.kind in "US" for v in arrays.values()]
     rows = (
         [str(v) if t else f"{float(v):.10g}" for v, t in zip(row, text, strict=True)]
         for row in zip(*arrays.values(), strict=True)
