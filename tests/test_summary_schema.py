@@ -11,6 +11,8 @@ import json
 import re
 from pathlib import Path
 
+import meshio
+import numpy as np
 import pytest
 
 from wear.app.cli import main
@@ -33,6 +35,7 @@ RUNS = {
         " --set erosion.exposure_time=600.0 --out {tmp}/erode"
     ).split(),
     "calibrate": "{tmp}/data.csv --law finnie --set plate.hardness=1.4e9 --out {tmp}/calibrate".split(),
+    "wall": "{tmp}/hits.csv {tmp}/plate.stl --set wall.exposure=1.0 --no-figures --out {tmp}/wall".split(),
 }
 FILES = {name: "calibration.json" if name == "calibrate" else "summary.json" for name in RUNS}
 
@@ -58,6 +61,12 @@ def summaries(tmp_path_factory) -> dict[str, list]:
     # calibrate: Finnie's law fitted to a made-up curve (any positive wear at several angles)
     rows = ["angle_deg,speed_m_s,erosion_kg_per_kg"] + [f"{a},30,{1e-4 * (1 + a / 30):.6g}" for a in range(15, 90, 15)]
     (tmp / "data.csv").write_text("\n".join(rows) + "\n")
+    # wall: one hit on a one-triangle wall (normal -z, into the wall)
+    points = np.array([[0.0, 0.0, 0.0], [0.01, 0.0, 0.0], [0.0, 0.01, 0.0]])
+    meshio.write(tmp / "plate.stl", meshio.Mesh(points, [("triangle", np.array([[0, 2, 1]]))]))
+    (tmp / "hits.csv").write_text(
+        "x_m,y_m,z_m,u_m_s,v_m_s,w_m_s,diameter_m,density_kg_m3\n0.002,0.002,0,5,0,-10,3e-4,2650\n"
+    )
     out = {}
     for name, argv in RUNS.items():
         assert main([name, *(a.format(tmp=tmp) for a in argv), "--quiet"]) == 0, name
