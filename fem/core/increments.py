@@ -47,7 +47,8 @@ class NotConverged(Exception):
 @dataclass
 class WorkCounters:
     """The work of a plate's solver (for the benchmarks): converged ``increments``, ``cuts`` (halvings),
-    Newton ``iterations``, ``factorisations`` and linear ``solves`` (factor applications), seconds spent
+    Newton ``iterations``, ``factorisations`` (of which ``analyses`` analysed a new sparsity pattern: the others
+    reused an analysis) and linear ``solves`` (factor applications), seconds spent
     factorising (``factor_time``) and assembling (``assembly_time``), ``cg_iterations`` (Krylov), ``relaxed``
     (iterations on a relaxed step), ``elastic_retries`` (attempts repeated with the elastic tangent), contact and
     stick ``set_updates``, line-search ``backtracks``; ``history`` a per-increment log."""
@@ -56,6 +57,7 @@ class WorkCounters:
     cuts: int = 0
     iterations: int = 0
     factorisations: int = 0
+    analyses: int = 0
     solves: int = 0
     factor_time: float = 0.0
     assembly_time: float = 0.0

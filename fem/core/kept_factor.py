@@ -5,7 +5,9 @@ A Newton iteration of the 3-D plate solves K x = r with K the tangent whose cons
 iteration to the next (a few plastic points, the slip tractions), so the factor of an earlier K preconditions a
 Krylov method on the new one, and K is factorised again only when the constrained DOFs changed (``key``: a new
 contact or stick node changes K by a rank of a few dozen, which the old factor resolves only in as many
-iterations) or when the Krylov method is slow.
+iterations) or when the Krylov method is slow. A new factor of a matrix of the old one's sparsity pattern (the 3-D
+plate keeps the tangent's pattern whatever the constrained DOFs) reuses the old one's analysis: PARDISO's numerical
+factorisation only.
 """
 
 from __future__ import annotations
@@ -27,6 +29,11 @@ class KeptFactor:
     """The factor of one symmetric positive-definite matrix, kept for the solves of later matrices with the same
     constrained DOFs; counts its work in ``counters``. ``max_krylov`` Krylov iterations at most before it
     refactorises."""
+
+    #: Whether a new factor of a matrix of the kept factor's sparsity pattern reuses its analysis (PARDISO's ordering
+    #: and symbolic factorisation, :meth:`fem.core.linear.Factorisation.refactor`); False: every factorisation
+    #: analyses its matrix anew, as before (benchmarks/bench_solid.py's reference).
+    reuse_analysis = True
 
     def __init__(self, counters: WorkCounters, max_krylov: int = 15) -> None:
         self.counters = counters
@@ -81,9 +88,13 @@ class KeptFactor:
 
     def _refactor(self, matrix: sp.csr_matrix, key: bytes) -> None:
         t0 = time.perf_counter()
-        if self._factor is not None:
-            self._factor.free()
-        self._factor = factorise(matrix)
+        if self.reuse_analysis and self._factor is not None and self._factor.same_pattern(matrix):
+            self._factor.refactor(matrix)  # the pattern's analysis kept: the numerical factorisation only
+        else:
+            if self._factor is not None:
+                self._factor.free()
+            self._factor = factorise(matrix)
+            self.counters.analyses += 1
         self._key = key
         self._data = matrix.data.copy()
         self.counters.factorisations += 1

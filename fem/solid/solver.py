@@ -56,6 +56,18 @@ __all__ = ["SETS_UNSETTLED", "SolidSolver"]
 SETS_UNSETTLED = "contact/stick sets did not settle"
 
 
+def _constrained(K: sp.csr_matrix, free: np.ndarray, diagonal: float) -> sp.csr_matrix:
+    """``K`` with the rows and columns of the constrained DOFs (``free`` false) zeroed and ``diagonal`` on their
+    diagonal, its sparsity pattern kept: the zeros stay stored, so that every such matrix has the tangent's pattern
+    and PARDISO's analysis of it is reused (:meth:`fem.core.linear.Factorisation.refactor`)."""
+    out = K.copy()
+    rows = np.repeat(np.arange(K.shape[0]), np.diff(K.indptr))
+    kept = free[rows] & free[K.indices]
+    out.data[~kept] = 0.0
+    out.data[(rows == K.indices) & ~free[rows]] = diagonal
+    return out
+
+
 class SolidSolver:
     """3-D half plate on ``mesh`` (m) of ``material`` pressed by a rigid sphere of ``radius`` (m) with friction
     coefficient ``friction``, its slip traction limited by the surface's ``shear_strength`` k (Pa; default: Y/√3 of
@@ -197,7 +209,7 @@ class SolidSolver:
             keep = free.astype(float)
             diag = float(np.mean(K.diagonal()[free]))
             rhs[constrained] = diag * du_c
-            K_mod = (sp.diags(keep) @ K @ sp.diags(keep) + sp.diags(diag * (1.0 - keep))).tocsr()
+            K_mod = _constrained(K, free, diag)
             # inexact Newton (Eisenstat & Walker 1996): the linear residual a step may leave, in N, tight only where
             # the equilibrium residual is near its target; the convergence test above stays exact
             target_force = rtol * scale
@@ -293,7 +305,12 @@ class SolidSolver:
         diagonal = float(np.mean(K_mod.diagonal()))
         CtC = (rows.T @ rows).tocsr()
         rho = 1e4 * diagonal / max(float(np.mean(CtC.diagonal()[CtC.diagonal() > 0.0])), 1e-300)
-        augmented = (K_mod + rho * CtC).tocsr()
+        # summed through COO, which keeps K_mod's stored zeros (a sparse "+" drops them): the tangent's pattern and
+        # the stick rows' make the pattern, and a factor of the same rows reuses its analysis
+        a, c = K_mod.tocoo(), CtC.tocoo()
+        augmented = sp.csr_matrix(
+            (np.r_[a.data, rho * c.data], (np.r_[a.row, c.row], np.r_[a.col, c.col])), shape=K_mod.shape
+        )
         full_key = key + row_ids.tobytes() + rows.indices.tobytes()
         du = self.linear.solve(
             augmented, rhs - rows.T @ multipliers + rho * (rows.T @ defect), tolerance, full_key, coupling
