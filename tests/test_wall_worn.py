@@ -134,6 +134,10 @@ def test_life_is_thickness_over_rate_and_inf_without_wear(flat):
     assert np.all(np.isinf(np.delete(life, [2, 7])))
     thickness = np.linspace(0.005, 0.02, len(flat))
     np.testing.assert_array_equal(remaining_life(wear, thickness)[[2, 7]], thickness[[2, 7]] / rate[[2, 7]])
+    unknown = thickness.copy()
+    unknown[[2, 3]] = np.nan  # a face of unknown thickness has an unknown life, worn (2) or not (3)
+    life_unknown = remaining_life(wear, unknown)
+    assert np.isnan(life_unknown[[2, 3]]).all() and life_unknown[7] == thickness[7] / rate[7]
     spots = hot_spots(flat, wear, 0.01, n=5)
     np.testing.assert_array_equal(spots.face, [2, 7] if rate[2] > rate[7] else [7, 2])
     np.testing.assert_array_equal(spots.remaining_life_year, life[spots.face] / (365.25 * 86400))

@@ -38,7 +38,7 @@ from wear.wall.law_keys import check_law_keys
 from wear.wall.laws import wall_law
 from wear.wall.mesh import Wall, concat_walls, read_surface
 from wear.wall.sources import plan_chunks, record_files, record_format
-from wear.wall.worn import SECONDS_PER_YEAR, HotSpots, WallWear, hot_spots, wall_wear, worn_mesh
+from wear.wall.worn import SECONDS_PER_YEAR, HotSpots, WallWear, hot_spots, remaining_life, wall_wear, worn_mesh
 
 __all__ = ["ComponentErosion", "SURFACE_SUFFIXES", "erode_component", "read_wall"]
 
@@ -107,30 +107,14 @@ class ComponentErosion:
 
     @property
     def remaining_life_s(self) -> np.ndarray:
-        """Each face's remaining life (s): ``inf`` without wear, NaN without a thickness."""
-        life = np.full(len(self.wall), np.nan)
-        known = np.isfinite(self.thickness_m)
-        if known.any():
-            rate = self.wear.thickness_loss_rate_m_s[known]
-            life[known] = np.where(rate > 0.0, self.thickness_m[known] / np.where(rate > 0.0, rate, 1.0), np.inf)
-        return life
+        """Each face's remaining life (s): ``inf`` without wear, NaN without a thickness
+        (:func:`wear.wall.worn.remaining_life`)."""
+        return remaining_life(self.wear, self.thickness_m)
 
     def hot_spots(self, n: int = 10) -> HotSpots:
         """The ``n`` faces of fastest thickness loss (:func:`wear.wall.worn.hot_spots`; life NaN without a
         thickness)."""
-        thickness = np.where(np.isfinite(self.thickness_m), self.thickness_m, 1.0)
-        spots = hot_spots(self.wall, self.wear, thickness, n)
-        life = self.remaining_life_s[spots.face]
-        return HotSpots(
-            face=spots.face,
-            label=spots.label,
-            patch=spots.patch,
-            position_m=spots.position_m,
-            thickness_loss_rate_m_s=spots.thickness_loss_rate_m_s,
-            thickness_loss_mm_year=spots.thickness_loss_mm_year,
-            remaining_life_s=life,
-            remaining_life_year=life / SECONDS_PER_YEAR,
-        )
+        return hot_spots(self.wall, self.wear, self.thickness_m, n)
 
     def face_fields(self) -> dict[str, np.ndarray]:
         """The per-face fields of the wall's files, named with their units: impact statistics, eroded volume and
@@ -158,8 +142,7 @@ class ComponentErosion:
 
     def worn_mesh(self) -> meshio.Mesh:
         """The worn wall after the service time (:func:`wear.wall.worn.worn_mesh`), with the face fields."""
-        thickness = np.where(np.isfinite(self.thickness_m), self.thickness_m, 1.0)
-        mesh = worn_mesh(self.wall, self.wear, self.service_s, thickness)
+        mesh = worn_mesh(self.wall, self.wear, self.service_s, self.thickness_m)
         cells = {**mesh.cell_data, **_split(self.wall, self.face_fields())}
         return meshio.Mesh(mesh.points, mesh.cells, point_data=mesh.point_data, cell_data=cells)
 

@@ -116,20 +116,21 @@ def wall_wear(wall: Wall, volume_m3: np.ndarray, exposure_s: float, density_kg_m
 
 def remaining_life(wear: WallWear, thickness_m: float | np.ndarray) -> np.ndarray:
     r"""The time (s) each face takes to lose ``thickness_m`` (m; a value or one per face) at its thickness-loss
-    rate: :math:`t_f / \dot h_f`, ``inf`` on a face without wear."""
+    rate: :math:`t_f / \dot h_f`, ``inf`` on a face without wear, NaN on a face of unknown thickness (NaN)."""
     rate = wear.thickness_loss_rate_m_s
     thickness = np.asarray(thickness_m, dtype=float)
     if thickness.ndim == 0:
         thickness = np.full(rate.shape, float(thickness))
     if thickness.shape != rate.shape:
         raise ValueError(f"thickness_m has shape {thickness.shape}: give one value (m) or one per face ({len(rate)})")
-    bad = np.flatnonzero(~np.isfinite(thickness) | (thickness <= 0.0))
+    bad = np.flatnonzero(np.isinf(thickness) | (thickness <= 0.0))
     if len(bad):
         raise ValueError(
             f"thickness_m={float(thickness[bad[0]])!r} (face {bad[0]}) is out of range: a thickness is > 0 m"
         )
     life = np.full(rate.shape, np.inf)
     np.divide(thickness, rate, out=life, where=rate > 0.0)
+    life[np.isnan(thickness)] = np.nan
     return life
 
 
@@ -230,7 +231,8 @@ class HotSpots:
 
 def hot_spots(wall: Wall, wear: WallWear, thickness_m: float | np.ndarray, n: int = 10) -> HotSpots:
     """The ``n`` faces of ``wall`` with the largest thickness-loss rate (ties: lower face index first) and their
-    remaining life of ``thickness_m`` (m; a value or one per face); faces without wear are left out."""
+    remaining life of ``thickness_m`` (m; a value or one per face, NaN where unknown); faces without wear are left
+    out."""
     if not (isinstance(n, (int, np.integer)) and n >= 1):
         raise ValueError(f"n={n!r} is out of range: the number of hot spots is an integer >= 1")
     rate = wear.thickness_loss_rate_m_s
