@@ -14,7 +14,6 @@ impact models of the table (the records carry the particles' sizes, speeds and a
 from __future__ import annotations
 
 import argparse
-import sys
 from pathlib import Path
 
 from wear.app.commands.common import (
@@ -92,8 +91,8 @@ def main(args: argparse.Namespace) -> int:
     check_scheduler_address(args.scheduler)
     check_law_keys(case, JOBS["wall"].default_case())
     patches = None if args.patches is None else [p.strip() for p in args.patches.split(",") if p.strip()]
-    wall = read_wall(case.wall.surface, patches, flip=args.flip)
     check_output_folder(args.out, "wall", ENTRIES)
+    wall = read_wall(case.wall.surface, patches, flip=args.flip)
     if args.dask_local is not None:
         workers, scheduler = args.dask_local, "local"
     else:
@@ -141,4 +140,3 @@ def _say(summary: dict, out: str) -> None:
         f"  eroded mass {r['eroded_mass_kg']:.6g} kg; largest thickness loss {r['max_thickness_loss_mm_year']:.4g} "
         f"mm/year at face {r['max_thickness_loss_face']} ({x:.4g}, {y:.4g}, {z:.4g}) m{life_text} -> {out}"
     )
-    sys.stdout.flush()
