@@ -142,9 +142,7 @@ class ComponentErosion:
 
     def worn_mesh(self) -> meshio.Mesh:
         """The worn wall after the service time (:func:`wear.wall.worn.worn_mesh`), with the face fields."""
-        mesh = worn_mesh(self.wall, self.wear, self.service_s, self.thickness_m)
-        cells = {**mesh.cell_data, **_split(self.wall, self.face_fields())}
-        return meshio.Mesh(mesh.points, mesh.cells, point_data=mesh.point_data, cell_data=cells)
+        return worn_mesh(self.wall, self.wear, self.service_s, self.thickness_m, self.face_fields())
 
     def summary(self) -> dict:
         """The numbers of ``summary.json`` (SI units)."""
@@ -197,12 +195,6 @@ class ComponentErosion:
             },
             "seconds": dict(self.seconds),
         }
-
-
-def _split(wall: Wall, fields: dict[str, np.ndarray]) -> dict[str, list[np.ndarray]]:
-    """Per-face ``fields`` as meshio's cell data of :meth:`Wall.to_meshio` (one block per face size)."""
-    blocks = [np.flatnonzero(wall.sizes == k) for k in np.unique(wall.sizes)]
-    return {name: [np.asarray(values)[faces] for faces in blocks] for name, values in fields.items()}
 
 
 def _note_worn_through(depth: np.ndarray, thickness: np.ndarray, service_s: float) -> None:

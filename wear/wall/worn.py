@@ -195,11 +195,18 @@ def swept_volume(wall: Wall, worn: Wall) -> float:
     return total + volume(p[a], p[b], q[b]) + volume(p[a], q[b], q[a])
 
 
-def worn_mesh(wall: Wall, wear: WallWear, service_s: float, thickness_m: float | np.ndarray) -> meshio.Mesh:
+def worn_mesh(
+    wall: Wall,
+    wear: WallWear,
+    service_s: float,
+    thickness_m: float | np.ndarray,
+    cell_fields: dict[str, np.ndarray] | None = None,
+) -> meshio.Mesh:
     """The worn wall after ``service_s`` (s) as a meshio mesh (write it as STL or VTU), with the per-face fields
     ``eroded_volume_m3``, ``eroded_mass_kg``, ``erosion_rate_kg_m2_s``, ``thickness_loss_rate_m_s``,
     ``thickness_loss_mm_year``, ``remaining_life_s`` (of ``thickness_m``, m) and ``wear_depth_m`` (the face's depth
-    after ``service_s``), and the point field ``wear_depth_m`` (the depth each point moved)."""
+    after ``service_s``), any more ``cell_fields`` (name → one value per face), and the point field ``wear_depth_m``
+    (the depth each point moved)."""
     depth = wear.depth_m(service_s)
     fields = {
         "eroded_volume_m3": wear.volume_m3,
@@ -209,6 +216,7 @@ def worn_mesh(wall: Wall, wear: WallWear, service_s: float, thickness_m: float |
         "thickness_loss_mm_year": wear.thickness_loss_mm_year,
         "remaining_life_s": remaining_life(wear, thickness_m),
         "wear_depth_m": depth,
+        **(cell_fields or {}),
     }
     return worn_wall(wall, wear, service_s).to_meshio(fields, {"wear_depth_m": vertex_depth(wall, depth)})
 
