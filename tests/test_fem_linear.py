@@ -1,7 +1,8 @@
-"""The sparse direct solves of the 3-D plate (fem.core.linear, fem.core.kept_factor): a factor solves its system, a
-refactorisation of a matrix of the same sparsity pattern (PARDISO's analysis reused) solves the new one to the
-same round-off as a fresh factor, a singular SPD matrix falls back to the indefinite mode, and the kept factor
-analyses a pattern once. Reference: the residual ‖A x − b‖ of each solve and a dense solve (numpy)."""
+"""The sparse direct solves of the 3-D plate (fem.core.linear, fem.core.kept_factor, and the stick system's pattern
+of fem.solid.systems): a factor solves its system, a refactorisation of a matrix of the same sparsity pattern
+(PARDISO's analysis reused) solves the new one to the same round-off as a fresh factor, a singular SPD matrix falls
+back to the indefinite mode, the kept factor analyses a pattern once, and the stick system on its union pattern
+sums as SciPy does. Reference: the residual ‖A x − b‖ of each solve, a dense solve (numpy), SciPy's sparse sum."""
 
 from __future__ import annotations
 
@@ -12,6 +13,7 @@ import scipy.sparse as sp
 from fem.core.increments import WorkCounters
 from fem.core.kept_factor import KeptFactor
 from fem.core.linear import BACKEND, factorise
+from fem.solid.systems import union_pattern
 
 
 def _laplacian(n: int, shift: float = 1.0) -> sp.csr_matrix:
@@ -65,3 +67,24 @@ def test_the_kept_factor_analyses_a_pattern_once():
         assert np.linalg.norm(m @ x - b) < 1e-10
     assert counters.factorisations == 3
     assert counters.analyses == (1 if BACKEND == "pardiso" else 3)
+
+
+def test_the_augmented_pattern_sums_as_scipy_does():
+    """The stick system K + ρCᵀC on the union of the two patterns (fem.solid.systems.union_pattern, found once per
+    set of stick rows) against SciPy's sparse sum, on random patterns with entries in and out of K's and a stick
+    entry past K's last one."""
+    n = 60
+    for seed in range(10):
+        K = (sp.random(n, n, density=0.1, random_state=seed, format="csr") + sp.eye(n)).tocsr()
+        K.sort_indices()
+        C = sp.random(n, n, density=0.05, random_state=seed + 100).tocoo()
+        C = sp.coo_matrix((np.r_[C.data, 1.0], (np.r_[C.row, n - 1], np.r_[C.col, n - 1])), shape=(n, n))
+        rows = np.repeat(np.arange(n), np.diff(K.indptr))
+        indptr, indices, tangent, stick = union_pattern(rows * n + K.indices, C.row.astype(np.int64) * n + C.col, n)
+        data = np.zeros(indices.size)
+        data[tangent] = K.data
+        np.add.at(data, stick, 2.0 * C.data)
+        union = sp.csr_matrix((data, indices, indptr), shape=(n, n))
+        assert union.has_sorted_indices
+        assert union.nnz == (abs(K) + abs(C)).nnz
+        assert abs(union - (K + 2.0 * C)).max() == 0.0

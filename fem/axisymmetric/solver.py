@@ -33,7 +33,7 @@ import scipy.sparse.linalg as spla
 from skfem import MeshTri
 
 from fem.axisymmetric.forms import discretise
-from fem.core.assembly import assemble, element_matrices, internal_force, strain
+from fem.core.assembly import assemble, element_matrices, internal_force, strain, tangent_stiffness
 from fem.core.increments import NotConverged, WorkCounters, advance
 from fem.core.plasticity import J2Material, radial_return
 from fem.core.sphere import sphere_surface
@@ -135,16 +135,10 @@ class PlateSolver:
             self._elastic_K = assemble(self.disc, self.elastic_element_matrices)
         return self._elastic_K
 
-    def _tangent(self, upd) -> np.ndarray:
-        d = self.disc
-        ke = self.elastic_element_matrices
-        if upd.yielding.any():
-            ke = ke.copy()
-            elements = np.flatnonzero(upd.yielding.any(axis=1))
-            D = np.broadcast_to(self.material.elastic_tangent, (elements.size, d.weight.shape[1], 4, 4)).copy()
-            D[upd.yielding[elements]] = upd.tangent
-            ke[elements] = element_matrices(d, D, elements)
-        return assemble(d, ke)
+    def _tangent(self, upd) -> sp.csr_matrix:
+        return tangent_stiffness(
+            self.disc, self.elastic_stiffness(), self.elastic_element_matrices, self.material.elastic_tangent, upd
+        )
 
     def _newton(self, start: PlateState, overlap: float, u0: np.ndarray, active0: np.ndarray) -> PlateState:
         """Equilibrium at ``overlap`` (m) from the converged ``start``: Newton at a fixed contact set, then the

@@ -19,7 +19,15 @@ from typing import Protocol
 import numpy as np
 import scipy.sparse as sp
 
-__all__ = ["Discretised", "assemble", "csr_pattern", "element_matrices", "internal_force", "strain"]
+__all__ = [
+    "Discretised",
+    "assemble",
+    "csr_pattern",
+    "element_matrices",
+    "internal_force",
+    "strain",
+    "tangent_stiffness",
+]
 
 
 class Discretised(Protocol):
@@ -79,3 +87,21 @@ def assemble(disc: Discretised, element_data: np.ndarray) -> sp.csr_matrix:
     """Sum element matrices (elements, k, k) into the fixed CSR pattern."""
     data = np.bincount(disc.entry_index, weights=element_data.ravel(), minlength=disc.indices.size)
     return disc.matrix(data)
+
+
+def tangent_stiffness(
+    disc: Discretised, elastic: sp.csr_matrix, elastic_element_matrices: np.ndarray, elastic_tangent: np.ndarray, upd
+) -> sp.csr_matrix:
+    """The consistent tangent (N/m) of the stress update ``upd`` (:class:`fem.core.plasticity.StressUpdate`): the
+    ``elastic`` stiffness (assembled from ``elastic_element_matrices``, the Mandel ``elastic_tangent`` in Pa) with
+    the change of the elements that have a yielding point, their points' consistent tangents in place of the
+    elastic one; summed into the fixed pattern on those elements only (a new matrix)."""
+    if not upd.yielding.any():
+        return disc.matrix(elastic.data.copy())
+    elements = np.flatnonzero(upd.yielding.any(axis=1))
+    components = elastic_tangent.shape[0]
+    D = np.broadcast_to(elastic_tangent, (elements.size, disc.weight.shape[1], components, components)).copy()
+    D[upd.yielding[elements]] = upd.tangent
+    change = element_matrices(disc, D, elements) - elastic_element_matrices[elements]
+    entries = disc.entry_index.reshape(disc.element_dofs.shape[0], -1)[elements].ravel()
+    return disc.matrix(elastic.data + np.bincount(entries, change.ravel(), elastic.data.size))

@@ -48,13 +48,22 @@ class Factorisation:
     PARDISO's three phases are called one by one: the analysis (11: the fill-reducing ordering and the symbolic
     factorisation, a quarter of a factorisation's time on the 3-D plate), the numerical factorisation (22) and the
     solve (33). A matrix of the pattern already analysed is factorised by phase 22 alone (:meth:`refactor`): the
-    ordering depends on the pattern only."""
+    ordering depends on the pattern only.
+
+    A solve is one forward and backward substitution: MKL's defaults add two steps of iterative refinement to every
+    solve (``iparm[7]`` = 2: three substitutions and two products with the matrix, 37–66 ms against 16–18 ms on the
+    default 3-D plate), which the Krylov method the factor preconditions does anyway (:mod:`fem.core.kept_factor`);
+    refinement is then left to the indefinite mode, whose perturbed pivots MKL refines (``iparm[7]`` = 0)."""
+
+    #: MKL PARDISO's ``iparm[7]``: the iterative refinement steps of a solve; 0: only after perturbed pivots (the
+    #: indefinite fallback), 2: MKL's default, two on every solve (before; benchmarks/bench_solid.py's reference).
+    refinement_steps = 0
 
     def __init__(self, matrix: sp.csr_matrix) -> None:
         self.shape = matrix.shape
         self.analyses = 0
         if pypardiso is not None:
-            self._upper = _upper(matrix)
+            self._pattern, self._upper_entries, self._upper = _upper(matrix)
             self._pardiso = None
             self._mtype = 2
             self._factorise_pardiso(analyse=True)
@@ -85,6 +94,9 @@ class Factorisation:
                 for phase in phases:
                     self._pardiso.set_phase(phase)
                     self._pardiso._call_pardiso(self._upper, rhs)
+                    if phase == 11:
+                        # the analysis filled in MKL's defaults (iparm[0] = 1 from now on): the solves' refinement
+                        self._pardiso.iparm[7] = self.refinement_steps
                 self.analyses += int(11 in phases)
                 return
             except pypardiso.pardiso_wrapper.PyPardisoError as exc:
@@ -98,12 +110,12 @@ class Factorisation:
         """Whether ``matrix``'s upper triangle has this factor's sparsity pattern (PARDISO only)."""
         if pypardiso is None or self._pardiso is None:
             return False
-        upper = _upper(matrix)
-        return np.array_equal(upper.indptr, self._upper.indptr) and np.array_equal(upper.indices, self._upper.indices)
+        indptr, indices = self._pattern
+        return np.array_equal(matrix.indptr, indptr) and np.array_equal(matrix.indices, indices)
 
     def refactor(self, matrix: sp.csr_matrix) -> None:
         """Factorise ``matrix``, of this factor's pattern (:meth:`same_pattern`), reusing the analysis."""
-        self._upper = _upper(matrix)
+        self._upper = sp.csr_matrix((matrix.data[self._upper_entries], self._upper.indices, self._upper.indptr))
         self._factorise_pardiso(analyse=False)
 
     def solve(self, rhs: np.ndarray) -> np.ndarray:
@@ -119,11 +131,17 @@ class Factorisation:
             self._pardiso.free_memory(everything=True)
 
 
-def _upper(matrix: sp.csr_matrix) -> sp.csr_matrix:
-    """The upper triangle of ``matrix`` (CSR, sorted indices), as PARDISO's symmetric modes read it."""
-    upper = sp.triu(matrix, format="csr")
-    upper.sort_indices()
-    return upper
+def _upper(matrix: sp.csr_matrix) -> tuple[tuple[np.ndarray, np.ndarray], np.ndarray, sp.csr_matrix]:
+    """The upper triangle of ``matrix`` (CSR, sorted indices), as PARDISO's symmetric modes read it, and what a
+    matrix of the same pattern needs to be cut the same way without sorting: ``matrix``'s pattern (indptr, indices)
+    and the positions in its ``data`` of the upper triangle's entries, in order."""
+    if not matrix.has_sorted_indices:
+        matrix = matrix.sorted_indices()
+    rows = np.repeat(np.arange(matrix.shape[0]), np.diff(matrix.indptr))
+    entries = np.flatnonzero(matrix.indices >= rows)
+    indptr = np.r_[0, np.cumsum(np.bincount(rows[entries], minlength=matrix.shape[0]))]
+    upper = sp.csr_matrix((matrix.data[entries], matrix.indices[entries], indptr), shape=matrix.shape)
+    return (matrix.indptr.copy(), matrix.indices.copy()), entries, upper
 
 
 def factorise(matrix: sp.csr_matrix) -> Factorisation:

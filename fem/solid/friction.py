@@ -157,9 +157,14 @@ class SurfaceFriction:
         tangent the consistent, nonsymmetric one, K − ∂f_t/∂u: the lagged slip traction made Newton a fixed-point
         iteration of 14–19 iterations per frictional increment."""
         pressed = mu * slip_vertices * (normal_moments > 0.0) * (mu * normal_moments < self.moment_limits(contact))
+        # only the contact nodes' normal rows of K v are needed: K's other rows are not multiplied
+        pressing = np.flatnonzero(contact)
+        normal_rows = K[self.uz[pressing]]
 
         def coupling(v: np.ndarray) -> np.ndarray:
-            moments = np.asarray(self.disc.surface_hats @ (-(K @ v)[self.uz] * contact))
+            normal_forces = np.zeros(contact.size)
+            normal_forces[pressing] = -(normal_rows @ v)
+            moments = np.asarray(self.disc.surface_hats @ normal_forces)
             return self.moment_loads((pressed * moments)[:, None] * direction) * keep
 
         return coupling

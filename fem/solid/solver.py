@@ -21,14 +21,14 @@ impact 17 → 13 iterations, an unloading one 50 → 30; the same sets, displace
 
 Plasticity is the same J2 radial return as the axisymmetric plate (:mod:`fem.core.plasticity`, 6 Mandel components).
 Linear solves: the constrained rows become s·I, the stick rows enter as an augmented Lagrangian (one multiplier
-update a Newton step), and the system is solved by CG (GMRES where slip tractions make it nonsymmetric)
-preconditioned with the PARDISO factor of an earlier symmetric such matrix (:mod:`fem.core.kept_factor`), to an
-inexact-Newton tolerance, refactorised when the Krylov method is slow: a modified-Newton iteration that keeps one
-factorisation over much of an increment.
+update a Newton step; both matrices on the tangent's fixed pattern, :mod:`fem.solid.systems`), and the system is
+solved by CG (GMRES where slip tractions make it nonsymmetric) preconditioned with the PARDISO factor of an earlier
+symmetric such matrix (:mod:`fem.core.kept_factor`), to an inexact-Newton tolerance, refactorised when the Krylov
+method is slow: a modified-Newton iteration that keeps one factorisation over much of an increment.
 
 One module for one algorithm (~430 lines): the Newton loop, the contact and stick set rounds and the line search
-share the solver's state and its counters (the Coulomb law itself is :mod:`fem.solid.friction`, the increment driver
-:mod:`fem.core.increments`).
+share the solver's state and its counters (the Coulomb law itself is :mod:`fem.solid.friction`, the linear systems
+:mod:`fem.solid.systems`, the increment driver :mod:`fem.core.increments`).
 """
 
 from __future__ import annotations
@@ -40,7 +40,7 @@ import scipy.sparse as sp
 from skfem import MeshTet
 
 from fem.core.anderson import anderson_step
-from fem.core.assembly import assemble, element_matrices, internal_force, strain
+from fem.core.assembly import assemble, element_matrices, internal_force, strain, tangent_stiffness
 from fem.core.increments import NotConverged, WorkCounters, advance
 from fem.core.kept_factor import KeptFactor
 from fem.core.linear import SingularMatrixError
@@ -49,23 +49,12 @@ from fem.core.sphere import sphere_surface
 from fem.solid.forms import discretise_solid
 from fem.solid.friction import SurfaceFriction
 from fem.solid.state import SolidState
+from fem.solid.systems import TangentSystems
 
 __all__ = ["SETS_UNSETTLED", "SolidSolver"]
 
 #: Why an attempt failed whose equilibria converged but whose contact and stick sets did not settle.
 SETS_UNSETTLED = "contact/stick sets did not settle"
-
-
-def _constrained(K: sp.csr_matrix, free: np.ndarray, diagonal: float) -> sp.csr_matrix:
-    """``K`` with the rows and columns of the constrained DOFs (``free`` false) zeroed and ``diagonal`` on their
-    diagonal, its sparsity pattern kept: the zeros stay stored, so that every such matrix has the tangent's pattern
-    and PARDISO's analysis of it is reused (:meth:`fem.core.linear.Factorisation.refactor`)."""
-    out = K.copy()
-    rows = np.repeat(np.arange(K.shape[0]), np.diff(K.indptr))
-    kept = free[rows] & free[K.indices]
-    out.data[~kept] = 0.0
-    out.data[(rows == K.indices) & ~free[rows]] = diagonal
-    return out
 
 
 class SolidSolver:
@@ -106,6 +95,8 @@ class SolidSolver:
         self.stats = WorkCounters()
         self.tangent_elastic = material.elastic_tangent_of(6)
         self.elastic_element_matrices = element_matrices(d, self.tangent_elastic)
+        self.elastic_stiffness = assemble(d, self.elastic_element_matrices)
+        self.systems = TangentSystems(d)
         if shear_strength is None:
             shear_strength = material.surface_shear_strength
         self.surface = SurfaceFriction(d, mesh.p.shape[1], material.shear, material.nu, shear_strength)
@@ -174,6 +165,7 @@ class SolidSolver:
         values = values[constrained]
         free = np.ones(d.ndofs, bool)
         free[constrained] = False
+        constraint = self.systems.constraint(free)
         surface = self.surface
         slip_vertices = surface.slip_vertices(stick) if mu > 0.0 else None
         rows, targets, row_ids = surface.stick_rows(start, slide, contact, stick, free) if mu > 0.0 else (None,) * 3
@@ -207,9 +199,9 @@ class SolidSolver:
             step[constrained] = du_c
             rhs = rhs - K @ step
             keep = free.astype(float)
-            diag = float(np.mean(K.diagonal()[free]))
+            diag = float(np.mean(self.systems.diagonal(K)[free]))
             rhs[constrained] = diag * du_c
-            K_mod = _constrained(K, free, diag)
+            K_mod = self.systems.constrained(K, constraint, diag)
             # inexact Newton (Eisenstat & Walker 1996): the linear residual a step may leave, in N, tight only where
             # the equilibrium residual is near its target; the convergence test above stays exact
             target_force = rtol * scale
@@ -302,31 +294,23 @@ class SolidSolver:
         symmetric-indefinite mode) perturbed the multipliers' zero pivots into a residual of 1e12 here; the
         multipliers' exact Schur complement needs a solve per stick row for every new factor. ``row_ids`` name the
         rows (2·vertex + component). Returns (du, λ_{k+1})."""
-        diagonal = float(np.mean(K_mod.diagonal()))
+        diagonal = float(np.mean(self.systems.diagonal(K_mod)))
         CtC = (rows.T @ rows).tocsr()
         rho = 1e4 * diagonal / max(float(np.mean(CtC.diagonal()[CtC.diagonal() > 0.0])), 1e-300)
-        # summed through COO, which keeps K_mod's stored zeros (a sparse "+" drops them): the tangent's pattern and
-        # the stick rows' make the pattern, and a factor of the same rows reuses its analysis
-        a, c = K_mod.tocoo(), CtC.tocoo()
-        augmented = sp.csr_matrix(
-            (np.r_[a.data, rho * c.data], (np.r_[a.row, c.row], np.r_[a.col, c.col])), shape=K_mod.shape
-        )
         full_key = key + row_ids.tobytes() + rows.indices.tobytes()
+        augmented = self.systems.stick_system(K_mod, CtC.tocoo(), rho, full_key)
         du = self.linear.solve(
             augmented, rhs - rows.T @ multipliers + rho * (rows.T @ defect), tolerance, full_key, coupling
         )
         return du, multipliers + rho * (rows @ du - defect)
 
     def _tangent(self, upd, elastic: bool = False) -> sp.csr_matrix:
-        d = self.disc
-        ke = self.elastic_element_matrices
-        if upd.yielding.any() and not elastic:
-            ke = ke.copy()
-            elements = np.flatnonzero(upd.yielding.any(axis=1))
-            D = np.broadcast_to(self.tangent_elastic, (elements.size, d.weight.shape[1], 6, 6)).copy()
-            D[upd.yielding[elements]] = upd.tangent
-            ke[elements] = element_matrices(d, D, elements)
-        return assemble(d, ke)
+        """The consistent tangent (N/m) of the stress update ``upd``; the elastic stiffness if ``elastic``."""
+        if elastic:
+            return self.disc.matrix(self.elastic_stiffness.data.copy())
+        return tangent_stiffness(
+            self.disc, self.elastic_stiffness, self.elastic_element_matrices, self.tangent_elastic, upd
+        )
 
     def _newton(self, start: SolidState, target, u0, contact, stick, direction, mu) -> SolidState:
         """Equilibrium at ``target`` = (δ, c, ξ), correcting the contact and stick sets until neither is violated."""
