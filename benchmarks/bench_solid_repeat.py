@@ -7,7 +7,7 @@ repeated impact (impacts 2..N: the first also builds the plate and runs the axis
 the axisymmetric repeat of the same case in the same run (its frictionless (r, z) plate, every impact computed:
 no elastic shortcut), and their ratio.
 
-Run: ``python benchmarks/bench_solid_repeat.py`` (default mesh, 8 elements across the contact; ``--quick``: 3
+Run: ``python benchmarks/bench_solid_repeat.py`` (default mesh, 4 elements across the contact; ``--quick``: 3
 elements, 4 + 3 increments; ``--impacts N``, ``--mesh-scale S``).
 """
 
