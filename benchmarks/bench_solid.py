@@ -5,16 +5,17 @@ elements across the contact) and on the mesh 4× finer at the surface (8 across:
 Prints, side by side in one run, the code before its speed-ups (main at :data:`BEFORE`, extracted with ``git
 archive``) and this tree with each step added: PARDISO's analysis reused for every factor of a sparsity pattern
 already analysed (:attr:`fem.core.kept_factor.KeptFactor.reuse_analysis`), and the solves without MKL's two steps of
-iterative refinement (:attr:`fem.core.linear.Factorisation.refinement_steps`). This tree's first column has neither
-(MKL's defaults, each factor analysed): against the before column it measures the rest of the work (the tangent
-assembled on the yielding elements only, the constrained and augmented matrices on patterns found once, the slip
-coupling on the contact rows only). Each column runs in a process of its own: its wall time, its work (plate cycles,
-increments, Newton iterations, factorisations and their analyses, factor applications), the cost per increment in
-units of one linear elastic solve on the same mesh (assembly of the stiffness, the clamped DOFs removed, a PARDISO
-factorisation and one solve, measured in this process), its peak memory (resident set), and its results (e_n,
-e_t, F_max, the dent and the local law's wear) with their relative change from the before column. Goals (the
-issue): the default 3-D impact ≤ 4 min and ≤ 5 solve-equivalents per increment on 2 cores, the results within
-0.5%, ≤ 4 GB.
+iterative refinement (:attr:`fem.core.linear.Factorisation.refinement_steps`), and OpenBLAS on one thread beside
+PARDISO's (:data:`fem.core.linear.OPENBLAS_THREADS_BESIDE_PARDISO`). This tree's first column has none of them (MKL's
+defaults, each factor analysed, OpenBLAS's threads as they are): against the before column it measures the rest of the
+work (the tangent assembled on the yielding elements only, the constrained and augmented matrices on patterns found
+once, the slip coupling on the contact rows only). Each column runs in a process of its own: its wall time, its work
+(plate cycles, increments, Newton iterations, factorisations and their analyses, factor applications), the cost per
+increment in units of one linear elastic solve on the same mesh (assembly of the stiffness, the clamped DOFs removed,
+a PARDISO factorisation and one solve, measured in this process as the solver runs it: within
+:func:`fem.core.linear.pardiso_threads`), its peak memory (resident set), and its results (e_n, e_t, F_max, the dent
+and the local law's wear) with their relative change from the before column. Goals (the issue): the default 3-D impact
+≤ 4 min and ≤ 5 solve-equivalents per increment on 2 cores, the results within 0.5%, ≤ 4 GB.
 
 Run: ``python benchmarks/bench_solid.py`` (both meshes, about an hour; ``--mesh default`` or ``--mesh fine`` for
 one; ``--quick``: 3 elements across the contact, 4 + 2 increments, one cycle; ``--no-before``: without the before
@@ -37,6 +38,7 @@ from pathlib import Path
 
 import numpy as np
 
+from fem.core import linear
 from fem.core.assembly import assemble
 from fem.core.kept_factor import KeptFactor
 from fem.core.linear import Factorisation, factorise
@@ -52,11 +54,13 @@ BEFORE = "0c54ec7"
 
 ROOT = Path(__file__).resolve().parent.parent
 
-#: This tree's columns: (title, KeptFactor.reuse_analysis, Factorisation.refinement_steps).
+#: This tree's columns: (title, KeptFactor.reuse_analysis, Factorisation.refinement_steps,
+#: OPENBLAS_THREADS_BESIDE_PARDISO).
 STEPS = (
-    ("this tree, MKL defaults", False, 2),
-    ("+ analysis reused", True, 2),
-    ("+ no refinement", True, 0),
+    ("this tree, MKL defaults", False, 2, None),
+    ("+ analysis reused", True, 2, None),
+    ("+ no refinement", True, 0, None),
+    ("+ OpenBLAS on 1 thread", True, 0, 1),
 )
 
 #: The fine mesh: this tree as it runs by default only (the before column on it too, for the speed-up).
@@ -84,6 +88,8 @@ def measure(settings: dict) -> dict:
         KeptFactor.reuse_analysis = settings["reuse_analysis"]
     if settings.get("refinement_steps") is not None:
         Factorisation.refinement_steps = settings["refinement_steps"]
+    if "openblas_threads" in settings:
+        linear.OPENBLAS_THREADS_BESIDE_PARDISO = settings["openblas_threads"]
     case = case_of(settings["mesh"], settings["quick"], settings["friction"])
     t0 = time.perf_counter()
     start = run(on_plate(case, "axisymmetric")).impact
@@ -140,13 +146,14 @@ def one_elastic_solve(mesh: str, quick: bool, repeats: int = 3) -> float:
     free = np.setdiff1d(np.arange(d.ndofs), d.fixed_dofs)
     rhs = np.ones(free.size)
     best = np.inf
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        K = assemble(d, solver.elastic_element_matrices)
-        factor = factorise(K[free][:, free].tocsr())
-        factor.solve(rhs)
-        factor.free()
-        best = min(best, time.perf_counter() - t0)
+    with linear.pardiso_threads():
+        for _ in range(repeats):
+            t0 = time.perf_counter()
+            K = assemble(d, solver.elastic_element_matrices)
+            factor = factorise(K[free][:, free].tocsr())
+            factor.solve(rhs)
+            factor.free()
+            best = min(best, time.perf_counter() - t0)
     return best
 
 
@@ -245,8 +252,8 @@ def main() -> None:
             columns = {}
             if before is not None:
                 columns[f"before ({BEFORE})"] = run_column(before, common)
-            for title, reuse, refinement in STEPS if mesh == "default" else FINE_STEPS:
-                settings = dict(common, reuse_analysis=reuse, refinement_steps=refinement)
+            for title, reuse, refinement, openblas in STEPS if mesh == "default" else FINE_STEPS:
+                settings = dict(common, reuse_analysis=reuse, refinement_steps=refinement, openblas_threads=openblas)
                 columns[title] = run_column(ROOT, settings)
             for m in columns.values():
                 m["per_increment"] = m["solid_s"] / m["increments"] / solve

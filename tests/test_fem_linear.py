@@ -1,18 +1,19 @@
 """The sparse direct solves of the 3-D plate (fem.core.linear, fem.core.kept_factor, and the stick system's pattern
 of fem.solid.systems): a factor solves its system, a refactorisation of a matrix of the same sparsity pattern
 (PARDISO's analysis reused) solves the new one to the same round-off as a fresh factor, a singular SPD matrix falls
-back to the indefinite mode, the kept factor analyses a pattern once, and the stick system on its union pattern
-sums as SciPy does. Reference: the residual ‖A x − b‖ of each solve, a dense solve (numpy), SciPy's sparse sum."""
+back to the indefinite mode, the kept factor analyses a pattern once, the stick system on its union pattern
+sums as SciPy does, and OpenBLAS runs on one thread beside PARDISO (threadpoolctl's own count). Reference: the residual ‖A x − b‖ of each solve, a dense solve (numpy), SciPy's sparse sum."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 import scipy.sparse as sp
+from threadpoolctl import threadpool_info
 
 from fem.core.increments import WorkCounters
 from fem.core.kept_factor import KeptFactor
-from fem.core.linear import BACKEND, factorise
+from fem.core.linear import BACKEND, factorise, pardiso_threads
 from fem.solid.systems import union_pattern
 
 
@@ -88,3 +89,16 @@ def test_the_augmented_pattern_sums_as_scipy_does():
         assert union.has_sorted_indices
         assert union.nnz == (abs(K) + abs(C)).nnz
         assert abs(union - (K + 2.0 * C)).max() == 0.0
+
+
+def test_openblas_runs_on_one_thread_beside_pardiso_and_gets_its_threads_back():
+    # pardiso_threads leaves PARDISO's cores to it between the Krylov method's vector operations; a user's numpy
+    # gets its threads back after the 3-D plate's increment
+    def openblas_threads() -> list[int]:
+        return [lib["num_threads"] for lib in threadpool_info() if lib["internal_api"] == "openblas"]
+
+    before = openblas_threads()
+    with pardiso_threads():
+        inside = openblas_threads()
+    assert inside and all(n == 1 for n in inside)
+    assert openblas_threads() == before

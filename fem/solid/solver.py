@@ -43,7 +43,7 @@ from fem.core.anderson import anderson_step
 from fem.core.assembly import assemble, element_matrices, internal_force, strain, tangent_stiffness
 from fem.core.increments import NotConverged, WorkCounters, advance
 from fem.core.kept_factor import KeptFactor
-from fem.core.linear import SingularMatrixError
+from fem.core.linear import SingularMatrixError, pardiso_threads
 from fem.core.plasticity import J2Material, radial_return
 from fem.core.sphere import sphere_surface
 from fem.solid.forms import discretise_solid
@@ -432,4 +432,5 @@ class SolidSolver:
         coefficient ``friction`` (default the solver's); cuts the increment in halves if needed
         (:func:`fem.core.increments.advance`)."""
         mu = self.friction if friction is None else friction
-        return advance(self, state, previous, (*target, mu))
+        with pardiso_threads():
+            return advance(self, state, previous, (*target, mu))
