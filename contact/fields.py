@@ -34,7 +34,10 @@ class SurfaceField:
     out of contact), ``sticking`` (bool, (k, n)); per step the contact ``centre`` (m, x, (k,)) and
     ``contact_radius`` (m, (k,)). After the impact the residual surface: ``dent`` (m, positive into the plate,
     pile-up negative) at ``dent_points`` (m, (q, 2)). ``mirrored``: the points cover the half plate y ≥ 0 of a
-    plate symmetric about the plane of incidence y = 0, whose other half is their mirror image.
+    plate symmetric about the plane of incidence y = 0, whose other half is their mirror image. ``triangles``
+    ((t, 3), rows of ``points``) and ``dent_triangles`` (rows of ``dent_points``): the plate's own triangles, over
+    which the fields are linear (None: a Delaunay triangulation of the points, whose choice between cocircular
+    points a structured mesh leaves to round-off).
     """
 
     time: np.ndarray
@@ -48,6 +51,8 @@ class SurfaceField:
     dent_points: np.ndarray
     dent: np.ndarray
     mirrored: bool = False
+    triangles: np.ndarray | None = None
+    dent_triangles: np.ndarray | None = None
 
     @property
     def steps(self) -> int:

@@ -1,8 +1,9 @@
-"""The sparse direct solves of the 3-D plate (fem.core.linear, fem.core.kept_factor, and the stick system's pattern
-of fem.solid.systems): a factor solves its system, a refactorisation of a matrix of the same sparsity pattern
-(PARDISO's analysis reused) solves the new one to the same round-off as a fresh factor, a singular SPD matrix falls
-back to the indefinite mode, the kept factor analyses a pattern once, the stick system on its union pattern
-sums as SciPy does, and OpenBLAS runs on one thread beside PARDISO (threadpoolctl's own count). Reference: the residual ‖A x − b‖ of each solve, a dense solve (numpy), SciPy's sparse sum."""
+"""The sparse direct solves of the 3-D plate (fem.core.linear, fem.core.kept_factor, and the stick system's pattern of
+fem.solid.systems): a factor solves its system, a refactorisation of a matrix of the same sparsity pattern (PARDISO's
+analysis reused) solves the new one to the same round-off as a fresh factor, a singular SPD matrix falls back to the
+indefinite mode, the kept factor analyses a pattern once, the stick system on its union pattern sums as SciPy does,
+and OpenBLAS runs on one thread beside PARDISO (threadpoolctl's own count). Reference: the residual ‖A x − b‖ of each
+solve, a dense solve (numpy), SciPy's sparse sum."""
 
 from __future__ import annotations
 

@@ -32,7 +32,7 @@ steps.
 from __future__ import annotations
 
 import numpy as np
-from scipy.interpolate import LinearNDInterpolator
+from matplotlib.tri import Triangulation
 from scipy.spatial import Delaunay
 
 from contact.fields import SurfaceField
@@ -42,16 +42,34 @@ from wear.pressure import SlidingSpeed
 __all__ = ["on_half_surface", "solid_grid", "step_weights", "solid_wear_depth", "solid_dent_depth"]
 
 
-def on_half_surface(points: np.ndarray, values: np.ndarray, px: np.ndarray, py: np.ndarray) -> np.ndarray:
+def on_half_surface(
+    points: np.ndarray, values: np.ndarray, px: np.ndarray, py: np.ndarray, triangles: np.ndarray | None = None
+) -> np.ndarray:
     """The whole plate's field at (``px``, ``py``) (m, any shape) from its ``values`` (n, ...) at the half plate's
-    surface ``points`` (m, (n, 2), y ≥ 0): linear over a triangulation of the half plate's points, evaluated at
-    :math:`(x, |y|)`, so that the field is symmetric about the plane of incidence y = 0 by construction (a triangulation
-    of the points and their mirror images is not: a structured mesh's cocircular points leave Delaunay a choice
-    on each side, and the two halves' choices differ); 0 outside the surface. Shape ``px.shape + values.shape[1:]``."""
+    surface ``points`` (m, (n, 2), y ≥ 0): linear over the half plate's ``triangles`` ((t, 3) rows of ``points``: the
+    mesh's own, over which its fields are linear; default a Delaunay triangulation of the points), evaluated at
+    :math:`(x, |y|)`, so that the field is symmetric about the plane of incidence y = 0 by construction; 0 outside
+    the surface. The mesh's triangles, not Delaunay's: a structured mesh's cocircular points leave Delaunay a choice
+    of diagonal, which round-off then makes (the default 3-D impact's worn volume on the grid changed by 2.3% between
+    two runs whose meshes differed by 10⁻¹¹ m, with its vertex values the same to 10⁻⁶), and a triangulation of the
+    points and their mirror images makes it differently on each side. Shape ``px.shape + values.shape[1:]``."""
     px, py = np.broadcast_arrays(np.asarray(px, float), np.asarray(py, float))
-    field = LinearNDInterpolator(Delaunay(points), values, fill_value=0.0)
-    out = field(np.column_stack([px.ravel(), np.abs(py.ravel())]))
-    return out.reshape(*px.shape, *np.shape(values)[1:])
+    x, y = px.ravel(), np.abs(py.ravel())
+    if triangles is None:
+        found_in = Delaunay(points)
+        triangles, found = found_in.simplices, found_in.find_simplex(np.column_stack([x, y]))
+    else:
+        found = Triangulation(points[:, 0], points[:, 1], triangles).get_trifinder()(x, y)
+    inside = found >= 0
+    corners = triangles[found[inside]]
+    origin = points[corners[:, 0]]
+    sides = np.stack([points[corners[:, 1]] - origin, points[corners[:, 2]] - origin], axis=2)
+    local = np.linalg.solve(sides, (np.column_stack([x, y])[inside] - origin)[..., None])[..., 0]
+    weights = np.column_stack([1.0 - local.sum(axis=1), local])
+    values = np.asarray(values, float)
+    out = np.zeros((x.size, *values.shape[1:]))
+    out[inside] = np.einsum("mk,mk...->m...", weights, values[corners])
+    return out.reshape(px.shape + values.shape[1:])
 
 
 def solid_grid(field: SurfaceField, points_across: int, reach: float = 2.0) -> tuple[np.ndarray, np.ndarray]:
@@ -80,11 +98,11 @@ def step_weights(times: np.ndarray, speed: SlidingSpeed, law: WearLaw) -> np.nda
     return weights
 
 
-def _on_grid(points: np.ndarray, values: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+def _on_grid(points: np.ndarray, values: np.ndarray, x: np.ndarray, y: np.ndarray, triangles) -> np.ndarray:
     """Vertex ``values`` (m, ...) of the half plate at ``points`` (m) on the grid ``x``, ``y`` (m): (..., ny, nx),
-    symmetric about y = 0 (:func:`on_half_surface`), 0 outside the surface."""
+    linear over ``triangles`` and symmetric about y = 0 (:func:`on_half_surface`), 0 outside the surface."""
     gx, gy = np.meshgrid(x, y)
-    return np.moveaxis(on_half_surface(points, values, gx, gy), (0, 1), (-2, -1))
+    return np.moveaxis(on_half_surface(points, values, gx, gy, triangles), (0, 1), (-2, -1))
 
 
 def solid_wear_depth(
@@ -104,7 +122,7 @@ def solid_wear_depth(
         worn = law.K * 0.5 * (before + pressed) * step[:, None] * rate**law.beta
     else:
         worn = pressed * step_weights(times, speed, law)[:, None]
-    return np.maximum(_on_grid(field.points, worn.sum(axis=0), x, y), 0.0)
+    return np.maximum(_on_grid(field.points, worn.sum(axis=0), x, y, field.triangles), 0.0)
 
 
 def solid_dent_depth(field: SurfaceField, x: np.ndarray, y: np.ndarray) -> np.ndarray:
@@ -112,4 +130,4 @@ def solid_dent_depth(field: SurfaceField, x: np.ndarray, y: np.ndarray) -> np.nd
     ``field.dent`` at ``field.dent_points`` interpolated linearly (on the 3-D plate its quadratic surface nodes,
     vertices and mid-edge nodes, which halves the distance over which the curved dent bottom is cut short against
     the vertices alone)."""
-    return _on_grid(field.dent_points, field.dent, x, y).T
+    return _on_grid(field.dent_points, field.dent, x, y, field.dent_triangles).T

@@ -51,7 +51,9 @@ class SolidDiscretisation:
     vertices' scalar nodes, ``surface_hats`` (surface vertices × surface nodes) ψ_j(x_i), ``surface_hat_mass``
     (surface vertices²) M (m²), ``surface_loads`` (surface nodes × surface vertices) G (m²), ``surface_dual_loads``
     G̃ (m², the dual functions'), ``surface_area``
-    (surface vertices) each hat's integral ∫ ψ_j dA over the half plate (m²).
+    (surface vertices) each hat's integral ∫ ψ_j dA over the half plate (m²), ``surface_triangles`` (triangles, 3)
+    the surface triangles as rows of the surface vertices, ``surface_node_triangles`` (4 × triangles, 3) each split
+    at its mid-edge nodes into four, as rows of the surface nodes.
     """
 
     mesh: MeshTet
@@ -73,6 +75,8 @@ class SolidDiscretisation:
     surface_loads: sp.csr_matrix
     surface_dual_loads: sp.csr_matrix
     surface_area: np.ndarray
+    surface_triangles: np.ndarray
+    surface_node_triangles: np.ndarray
 
     def matrix(self, data: np.ndarray) -> sp.csr_matrix:
         """CSR matrix with the fixed pattern and the given ``data``."""
@@ -103,7 +107,8 @@ def _strain_operator(basis: Basis) -> np.ndarray:
 
 
 def _surface_operators(mesh: MeshTet, basis: Basis, surface_nodes: np.ndarray):
-    """Hats, hat mass and consistent loads of the surface triangles (see the module docstring)."""
+    """Hats, hat mass and consistent loads of the surface triangles (see the module docstring), and the triangles
+    as rows of the surface vertices and split into four as rows of the surface nodes."""
     nvert = mesh.p.shape[1]
     vertex_nodes = surface_nodes[surface_nodes < nvert]
     vertex_row = np.full(basis.N, -1, dtype=np.int64)
@@ -126,8 +131,11 @@ def _surface_operators(mesh: MeshTet, basis: Basis, surface_nodes: np.ndarray):
             load_cols.append(vertex_row[triangles[m]])
             load_values.append(area * (1.0 / 30.0 if k == m else -1.0 / 60.0))
             dual_values.append(area * (2.0 / 15.0 if k == m else -1.0 / 15.0))
-    for a, b in ((0, 1), (1, 2), (0, 2)):
-        edge_nodes = np.array([edge_of[(int(x), int(y))] for x, y in zip(triangles[a], triangles[b], strict=True)])
+    sides = ((0, 1), (1, 2), (0, 2))
+    mid_nodes = [
+        np.array([edge_of[(int(x), int(y))] for x, y in zip(triangles[a], triangles[b], strict=True)]) for a, b in sides
+    ]
+    for (a, b), edge_nodes in zip(sides, mid_nodes, strict=True):
         for m in range(3):
             load_rows.append(node_row[edge_nodes])
             load_cols.append(vertex_row[triangles[m]])
@@ -136,6 +144,11 @@ def _surface_operators(mesh: MeshTet, basis: Basis, surface_nodes: np.ndarray):
         for end in (a, b):
             for node, vertex in zip(edge_nodes, triangles[end], strict=True):
                 hat_entries[(vertex_row[vertex], node_row[node])] = 0.5
+    # each triangle split at its mid-edge nodes (of the sides 0-1, 1-2, 0-2) into four, as rows of the surface nodes
+    mids = [node_row[m] for m in mid_nodes]
+    corners = [node_row[t] for t in triangles]
+    quarters = [(corners[0], mids[0], mids[2]), (corners[1], mids[1], mids[0]), (corners[2], mids[2], mids[1])]
+    node_triangles = np.vstack([np.column_stack(q) for q in (*quarters, tuple(mids))])
     nv, ns = vertex_nodes.size, surface_nodes.size
     if np.any(np.concatenate(load_rows) < 0) or np.any(np.concatenate(mass_rows) < 0):
         raise ValueError("mesh: a surface triangle has a node off the surface z = 0")
@@ -150,7 +163,7 @@ def _surface_operators(mesh: MeshTet, basis: Basis, surface_nodes: np.ndarray):
     )
     (rows, cols), values = zip(*hat_entries.keys(), strict=True), list(hat_entries.values())
     hats = sp.csr_matrix((values, (rows, cols)), shape=(nv, ns))
-    return vertex_nodes, hats, mass, loads, dual_loads
+    return vertex_nodes, hats, mass, loads, dual_loads, vertex_row[triangles].T, node_triangles
 
 
 def discretise_solid(mesh: MeshTet) -> SolidDiscretisation:
@@ -173,7 +186,9 @@ def discretise_solid(mesh: MeshTet) -> SolidDiscretisation:
     symmetry = basis.get_dofs(mesh.boundaries["symmetry"]).flatten()
     fixed = np.unique(np.concatenate([3 * bottom, 3 * bottom + 1, 3 * bottom + 2, 3 * symmetry + 1]))
     surface_nodes = np.unique(basis.get_dofs(mesh.boundaries["surface"]).flatten())
-    vertex_nodes, hats, mass, loads, dual_loads = _surface_operators(mesh, basis, surface_nodes)
+    vertex_nodes, hats, mass, loads, dual_loads, triangles, node_triangles = _surface_operators(
+        mesh, basis, surface_nodes
+    )
     return SolidDiscretisation(
         mesh=mesh,
         basis=basis,
@@ -194,4 +209,6 @@ def discretise_solid(mesh: MeshTet) -> SolidDiscretisation:
         surface_loads=loads,
         surface_dual_loads=dual_loads,
         surface_area=np.asarray(mass.sum(axis=0)).ravel(),
+        surface_triangles=triangles,
+        surface_node_triangles=node_triangles,
     )

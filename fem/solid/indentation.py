@@ -90,7 +90,8 @@ class SolidIndentation:
     def surface_field(self, times: np.ndarray) -> SurfaceField:
         """The plate's surface fields with its steps placed at impact ``times`` (s), as the wear law reads them:
         the reported tractions, stick and slip at the half plate's surface vertices, and the residual surface at
-        its quadratic surface nodes (vertices and mid-edge nodes) after the last step (mirrored about y = 0)."""
+        its quadratic surface nodes (vertices and mid-edge nodes) after the last step (mirrored about y = 0), each on
+        the mesh's surface triangles (the nodes' on the triangles split at their mid-edge nodes)."""
         d = self.solver.disc
         return SurfaceField(
             time=np.asarray(times, float),
@@ -104,6 +105,8 @@ class SolidIndentation:
             dent_points=d.surface_xy,
             dent=-self.final.u[d.surface_dofs(2)],
             mirrored=True,
+            triangles=d.surface_triangles,
+            dent_triangles=d.surface_node_triangles,
         )
 
     def to_meshio(self) -> meshio.Mesh:

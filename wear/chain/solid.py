@@ -115,7 +115,7 @@ def _across_profile(coupled: SolidCoupledImpact, samples: int = 81) -> PressureH
     pressure history for the summary, ``pressure.npz`` and the figures)."""
     field = coupled.field
     radii = np.linspace(0.0, 1.5 * float(np.max(field.contact_radius)), samples)
-    across = on_half_surface(field.points, field.pressure.T, field.centre[:, None], radii)
+    across = on_half_surface(field.points, field.pressure.T, field.centre[:, None], radii, field.triangles)
     rows = np.array([across[k, :, k] for k in range(field.centre.size)])
     ph = fe_pressure_history(field.time, radii, rows, field.centre)
     return PressureHistory(ph.time, ph.contact_x, ph.extent, ph.pressure, source="fe-3d (across the track)")
