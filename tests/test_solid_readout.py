@@ -1,6 +1,9 @@
 """The 3-D plate's surface fields read on the wear grid (wear.solid_wear.on_half_surface over the mesh's own surface
 triangles, fem.solid.forms): linear between the mesh's points, symmetric about the plane of incidence, and continuous
 in round-off. References: a field linear in x and |y| is reproduced exactly by linear interpolation (closed form);
+a field's grid integral over the whole plate is the FE's own, 2 Σ v_j A_j over the half plate's hats (A_j = ∫ψ_j dA,
+fem.solid.forms; the default 3-D impact's worn volume on its grid is within 0.02% of it, a Delaunay reading of the
+same vertex values was 3.6–7.4% above it);
 the same field on a mesh moved by 10⁻⁹ of its size integrates to the same number to round-off (a Delaunay
 triangulation of this structured mesh's cocircular points changes its diagonals there: the grid integral of the
 Hertz-like peak below moved by 1.3% with it, the default 3-D impact's worn volume by 2.3% between two runs)."""
@@ -59,3 +62,13 @@ def test_the_grid_reading_is_continuous_in_round_off(disc):
     reference = integral(1.0)
     for scale in (1.0 + 1.5e-9, 1.0 - 2.3e-9, 1.0 + 7e-10):
         assert integral(scale) == pytest.approx(reference, rel=1e-7)
+
+
+def test_the_grid_integral_is_the_meshs_own(disc):
+    # the whole plate's integral of the vertex values' linear field is 2 Σ v_j A_j (mirrored half plate)
+    vertices = _vertices(disc)
+    peak = np.sqrt(np.maximum(1.0 - ((vertices[:, 0] - 0.3 * SIZE) ** 2 + vertices[:, 1] ** 2) / SIZE**2, 0.0))
+    x, y = np.linspace(-2 * SIZE, 2.5 * SIZE, 451), np.linspace(-2 * SIZE, 2 * SIZE, 401)
+    gx, gy = np.meshgrid(x, y)
+    on_grid = on_half_surface(vertices, peak, gx, gy, disc.surface_triangles).sum() * (x[1] - x[0]) * (y[1] - y[0])
+    assert on_grid == pytest.approx(2.0 * peak @ disc.surface_area, rel=2e-4)  # a Delaunay reading: 1.2e-3 off
