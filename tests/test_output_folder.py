@@ -175,6 +175,14 @@ def test_outputs_get_the_permissions_of_the_users_umask(umask, tmp_path):
         assert _mode(p) == (dir_mode if p.is_dir() else file_mode), (p.name, oct(_mode(p)))
 
 
+def _has_entries(folder: Path) -> bool:
+    """Whether ``folder`` holds anything; False once it is gone (renamed into place between two looks at it)."""
+    try:
+        return folder.is_dir() and any(folder.iterdir())
+    except FileNotFoundError:
+        return False
+
+
 def _kill_while_writing(args: list[str], parent: Path, name: str) -> None:
     """Start ``impactwear args`` and ``kill -9`` it as soon as its output is being built (its temporary folder
     ``.NAME.partial-*`` in ``parent``, or ``.impactwear.partial-*`` inside an existing ``NAME``)."""
@@ -185,7 +193,7 @@ def _kill_while_writing(args: list[str], parent: Path, name: str) -> None:
     try:
         while time.monotonic() < deadline:
             partial = list(parent.glob(f".{name}.partial-*")) + list((parent / name).glob(".impactwear.partial-*"))
-            if any(p.is_dir() and any(p.iterdir()) for p in partial if p.exists()):
+            if any(_has_entries(p) for p in partial):
                 break
             if proc.poll() is not None:
                 pytest.fail(f"impactwear {args[0]} ended before it could be killed while writing")
