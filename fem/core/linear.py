@@ -10,13 +10,14 @@ re-used for many right-hand sides (the modified-Newton iterations and the precon
 PARDISO's OpenMP threads and the OpenBLAS threads of numpy and SciPy (the Krylov method's dot products between two
 solves) take turns at the same cores, and each pool spins a while after its work before it sleeps: on 2 cores a
 solve followed by a dot product of 42,000 numbers took 25 ms where the solve alone takes 14. Within
-:func:`pardiso_threads` OpenBLAS runs on one thread and PARDISO has the cores (the default 3-D impact 166 → 130 s).
+:func:`pardiso_threads` OpenBLAS runs on one thread and PARDISO has the cores (the default 3-D impact 161 → 121 s,
+benchmarks/bench_solid.py).
 """
 
 from __future__ import annotations
 
 import os
-from contextlib import nullcontext
+from contextlib import AbstractContextManager, nullcontext
 from functools import cache
 
 import numpy as np
@@ -56,7 +57,7 @@ def _openblas() -> ThreadpoolController:
     return ThreadpoolController().select(internal_api="openblas")
 
 
-def pardiso_threads():
+def pardiso_threads() -> AbstractContextManager:
     """A context (``with pardiso_threads(): ...``) in which OpenBLAS runs on :data:`OPENBLAS_THREADS_BESIDE_PARDISO`
     threads (one), so that PARDISO's threads have the cores between the vector operations of a Krylov method (module
     docstring); OpenBLAS's thread count is restored after it."""
