@@ -54,20 +54,20 @@ def on_half_surface(
     two runs whose meshes differed by 10⁻¹¹ m, with its vertex values the same to 10⁻⁶), and a triangulation of the
     points and their mirror images makes it differently on each side. Shape ``px.shape + values.shape[1:]``."""
     px, py = np.broadcast_arrays(np.asarray(px, float), np.asarray(py, float))
-    x, y = px.ravel(), np.abs(py.ravel())
+    query = np.column_stack([px.ravel(), np.abs(py.ravel())])
     if triangles is None:
         found_in = Delaunay(points)
-        triangles, found = found_in.simplices, found_in.find_simplex(np.column_stack([x, y]))
+        triangles, found = found_in.simplices, found_in.find_simplex(query)
     else:
-        found = Triangulation(points[:, 0], points[:, 1], triangles).get_trifinder()(x, y)
+        found = Triangulation(points[:, 0], points[:, 1], triangles).get_trifinder()(query[:, 0], query[:, 1])
     inside = found >= 0
     corners = triangles[found[inside]]
     origin = points[corners[:, 0]]
     sides = np.stack([points[corners[:, 1]] - origin, points[corners[:, 2]] - origin], axis=2)
-    local = np.linalg.solve(sides, (np.column_stack([x, y])[inside] - origin)[..., None])[..., 0]
+    local = np.linalg.solve(sides, (query[inside] - origin)[..., None])[..., 0]
     weights = np.column_stack([1.0 - local.sum(axis=1), local])
     values = np.asarray(values, float)
-    out = np.zeros((x.size, *values.shape[1:]))
+    out = np.zeros((query.shape[0], *values.shape[1:]))
     out[inside] = np.einsum("mk,mk...->m...", weights, values[corners])
     return out.reshape(px.shape + values.shape[1:])
 
@@ -98,7 +98,9 @@ def step_weights(times: np.ndarray, speed: SlidingSpeed, law: WearLaw) -> np.nda
     return weights
 
 
-def _on_grid(points: np.ndarray, values: np.ndarray, x: np.ndarray, y: np.ndarray, triangles) -> np.ndarray:
+def _on_grid(
+    points: np.ndarray, values: np.ndarray, x: np.ndarray, y: np.ndarray, triangles: np.ndarray | None
+) -> np.ndarray:
     """Vertex ``values`` (m, ...) of the half plate at ``points`` (m) on the grid ``x``, ``y`` (m): (..., ny, nx),
     linear over ``triangles`` and symmetric about y = 0 (:func:`on_half_surface`), 0 outside the surface."""
     gx, gy = np.meshgrid(x, y)
