@@ -1,5 +1,7 @@
 r"""The force law of a plate's indentation: its loading branch and the unloading curve from its top, overlaps from first
-contact (SI units); the impact on a plate (:mod:`fem.coupling`, :mod:`fem.solid_coupling`) runs on it.
+contact (SI units); the impact on a plate (:mod:`fem.coupling`, :mod:`fem.solid_coupling`) runs on it. Two laws
+derived from one: a second unloading curve from a deeper overlap (:func:`with_unloading_from`), and the law of the
+dented plate reloaded at the same site (:func:`reloading_law`), the start of the next impact's coupling.
 """
 
 from __future__ import annotations
@@ -11,7 +13,7 @@ import numpy as np
 from contact import TabulatedLaw
 from fem.axisymmetric.result import IndentationResult, loading_branch, unloading_curve
 
-__all__ = ["force_law"]
+__all__ = ["force_law", "reloading_law", "with_unloading_from"]
 
 
 def force_law(
@@ -54,3 +56,62 @@ def force_law(
         radius = np.interp(new[::-1], grid[::-1], radius[::-1])[::-1]
         grid, force[-1], radius[-1] = new, 0.0, 0.0
     return TabulatedLaw(d, f, a, np.array([top]), grid[None, :], force[None, :], radius[None, :], shear_strength)
+
+
+def with_unloading_from(law: TabulatedLaw, overlap: float, force: float, radius: float) -> TabulatedLaw:
+    """``law`` with one more unloading curve, from ``overlap`` (m, beyond its last δ_max): its last curve moved up by
+    the extra overlap and scaled to ``force`` (N) and ``radius`` (m) at its top. An impact that goes past the last
+    δ_max unloads between the two curves, where the engine interpolates (:func:`contact.laws.tabulated_arrays`)."""
+    top = float(law.unloading_max_overlap[-1])
+    grid, f, a = law.unloading_overlap[-1], law.unloading_force[-1], law.unloading_contact_radius[-1]
+    return TabulatedLaw(
+        law.loading_overlap,
+        law.loading_force,
+        law.loading_contact_radius,
+        np.r_[law.unloading_max_overlap, overlap],
+        np.vstack([law.unloading_overlap, grid + (overlap - top)]),
+        np.vstack([law.unloading_force, f * (force / f[0])]),
+        np.vstack([law.unloading_contact_radius, a * (radius / max(a[0], 1e-300))]),
+        law.shear_strength,
+    )
+
+
+def reloading_law(law: TabulatedLaw, reach: float = 3.0) -> TabulatedLaw:
+    r"""The law of the plate that ``law``'s impact has dented, for the next impact at the same site: overlaps from the
+    new first contact, at the old residual overlap δ_p (m; the dent the ball meets).
+
+    Up to the old δ_max the plate reloads elastically along its last unloading curve (the first curve of ``law``,
+    from δ_max to δ_p, reversed): :math:`F_{\mathrm{re}}(\delta') = F_{\mathrm{un}}(\delta_p + \delta')`. Beyond
+    it the plate yields again on its loading branch (the points of ``law`` past δ_max), continued at that branch's
+    last slope dF/dδ and da/dδ to ``reach`` × the reloading curve's length (the ball brings more energy than the
+    elastic reloading stores: by the rebound's e_n², it goes past the old δ_max). Unloading from the old δ_max is
+    the reloading curve itself (elastic); from the end of the table the last unloading curve of ``law`` moved there
+    (:func:`with_unloading_from`), and between the two the engine interpolates. An approximation of the dented
+    plate's law, not the plate's answer: the coupling's first cycle presses the plate along the impact run on it,
+    nearer the dented plate's path than the previous impact's (docs/repeat.md)."""
+    down, force, radius = law.unloading_overlap[0], law.unloading_force[0], law.unloading_contact_radius[0]
+    top, residual = float(down[0]), float(down[-1])
+    past = law.loading_overlap > top
+    overlap = np.r_[down[::-1] - residual, law.loading_overlap[past] - residual]
+    f = np.r_[force[::-1], law.loading_force[past]]
+    a = np.r_[radius[::-1], law.loading_contact_radius[past]]
+    step = np.diff(law.loading_overlap[-2:])[0]
+    slope_f, slope_a = (np.diff(law.loading_force[-2:])[0] / step, np.diff(law.loading_contact_radius[-2:])[0] / step)
+    further = np.linspace(0.0, (reach - 1.0) * overlap[-1], 41)[1:]
+    overlap = np.r_[overlap, overlap[-1] + further]
+    f = np.r_[f, f[-1] + slope_f * further]
+    a = np.r_[a, a[-1] + slope_a * further]
+    keep = np.r_[True, np.diff(overlap) > 0.0]  # a reversed curve may repeat its end point
+    overlap, f, a = overlap[keep], f[keep], a[keep]
+    overlap[0], f[0] = 0.0, 0.0
+    elastic = TabulatedLaw(
+        overlap,
+        f,
+        a,
+        np.array([top - residual]),
+        (down - residual)[None, :],
+        force[None, :],
+        radius[None, :],
+        law.shear_strength,
+    )
+    return with_unloading_from(elastic, float(overlap[-1]), float(f[-1]), float(a[-1]))

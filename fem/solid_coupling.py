@@ -51,7 +51,7 @@ from contact import ImpactResult, Material, TabulatedLaw
 from contact.fields import SurfaceField
 from fem.core.increments import WorkCounters
 from fem.coupling import fixed_point
-from fem.force_law import force_law
+from fem.force_law import force_law, with_unloading_from
 from fem.solid.indentation import MAX_FRICTION, SolidIndentation, solid_solver
 from fem.solid.plate import SolidPlate, press_path, solid_plastic_work
 from fem.solid.solver import SolidSolver
@@ -248,26 +248,9 @@ def plate_cycle(
     )
     unloading = _Branch(solid.overlap[path.peak :], solid.normal_force[path.peak :], solid.contact_radius[path.peak :])
     law = force_law(loading, unloading, first_contact, shear_strength=solver.surface.shear_strength)
-    return solid, _with_probe_unloading(law, probe_overlap, measured["P"], measured["a"])
-
-
-def _with_probe_unloading(law: TabulatedLaw, overlap: float, force: float, radius: float) -> TabulatedLaw:
-    """``law`` with a second unloading curve from the probe's ``overlap`` (m): the computed curve moved up by the
-    probe's extra overlap and scaled to its ``force`` (N) and ``radius`` (m). An impact that goes past the path's
-    δ_max (by less than the coupling's tolerance once converged) unloads between the two, where the engine
-    interpolates; the next cycle computes its own."""
-    top = float(law.unloading_max_overlap[-1])
-    grid, f, a = law.unloading_overlap[-1], law.unloading_force[-1], law.unloading_contact_radius[-1]
-    return TabulatedLaw(
-        law.loading_overlap,
-        law.loading_force,
-        law.loading_contact_radius,
-        np.r_[law.unloading_max_overlap, overlap],
-        np.vstack([law.unloading_overlap, grid + (overlap - top)]),
-        np.vstack([law.unloading_force, f * (force / f[0])]),
-        np.vstack([law.unloading_contact_radius, a * (radius / max(a[0], 1e-300))]),
-        law.shear_strength,
-    )
+    # an impact a little past the path's δ_max (by less than the coupling's tolerance once converged) unloads
+    # between the computed curve and the probe's; the next cycle computes its own
+    return solid, with_unloading_from(law, probe_overlap, measured["P"], measured["a"])
 
 
 def couple_solid(
@@ -311,7 +294,7 @@ def couple_solid_plate(
     the converged impact's final, lifted-off state is committed to the plate. The impact's first contact is at
     x = ``centre_offset`` (m) in the plate's frame and at δ₀ = :meth:`~fem.solid.plate.SolidPlate.first_contact_overlap`
     there (the impact runs on the plate's law shifted by δ₀, :func:`plate_cycle`). ``first``: the starting impact
-    (e.g. the previous impact at this site)."""
+    (e.g. the impact on the dented plate's reloading law, :func:`fem.force_law.reloading_law`)."""
     settings = settings or SolidCouplingSettings()
     first_contact = plate.first_contact_overlap(centre_offset)
     start = plate.start_state(first_contact, centre_offset)
