@@ -95,15 +95,14 @@ def reloading_law(law: TabulatedLaw, reach: float = 3.0) -> TabulatedLaw:
     overlap = np.r_[down[::-1] - residual, law.loading_overlap[past] - residual]
     f = np.r_[force[::-1], law.loading_force[past]]
     a = np.r_[radius[::-1], law.loading_contact_radius[past]]
-    step = np.diff(law.loading_overlap[-2:])[0]
-    slope_f, slope_a = (np.diff(law.loading_force[-2:])[0] / step, np.diff(law.loading_contact_radius[-2:])[0] / step)
+    step = law.loading_overlap[-1] - law.loading_overlap[-2]
+    slope_f = (law.loading_force[-1] - law.loading_force[-2]) / step
+    slope_a = (law.loading_contact_radius[-1] - law.loading_contact_radius[-2]) / step
     further = np.linspace(0.0, (reach - 1.0) * overlap[-1], 41)[1:]
     overlap = np.r_[overlap, overlap[-1] + further]
     f = np.r_[f, f[-1] + slope_f * further]
     a = np.r_[a, a[-1] + slope_a * further]
-    keep = np.r_[True, np.diff(overlap) > 0.0]  # a reversed curve may repeat its end point
-    overlap, f, a = overlap[keep], f[keep], a[keep]
-    overlap[0], f[0] = 0.0, 0.0
+    f[0] = 0.0  # first contact: the engine's Hertz-like start needs an exact zero
     elastic = TabulatedLaw(
         overlap,
         f,
