@@ -15,6 +15,9 @@ from fem.axisymmetric.result import IndentationResult, loading_branch, unloading
 
 __all__ = ["force_law", "reloading_law", "with_unloading_from"]
 
+#: Relative difference below which two overlaps of a law are the same point (round-off of sums of overlaps in m).
+_SAME_OVERLAP = 1e-9
+
 
 def force_law(
     loading: IndentationResult,
@@ -91,7 +94,9 @@ def reloading_law(law: TabulatedLaw, reach: float = 3.0) -> TabulatedLaw:
     nearer the dented plate's path than the previous impact's (docs/repeat.md)."""
     down, force, radius = law.unloading_overlap[0], law.unloading_force[0], law.unloading_contact_radius[0]
     top, residual = float(down[0]), float(down[-1])
-    past = law.loading_overlap > top
+    # the loading points past the top; one within round-off of it is the top itself, where the curve starts (the
+    # plate's δ* reached by two sums), and kept twice it would repeat an overlap of the reloading branch
+    past = law.loading_overlap > top * (1.0 + _SAME_OVERLAP)
     overlap = np.r_[down[::-1] - residual, law.loading_overlap[past] - residual]
     f = np.r_[force[::-1], law.loading_force[past]]
     a = np.r_[radius[::-1], law.loading_contact_radius[past]]

@@ -97,3 +97,65 @@ def test_impact_on_the_reloading_law_rebounds_elastically_below_the_dents_energy
     assert second.normal_restitution == pytest.approx(1.0, abs=0.01)
     assert second.max_overlap == pytest.approx(reach, rel=0.01)
     assert second.max_overlap <= (first.max_overlap - residual) * 1.01
+
+
+def test_reloading_law_of_a_branch_whose_peak_is_the_curves_top_within_round_off():
+    """The plate's law holds its δ* twice, from two sums: the loading branch's last point and the unloading curve's
+    top. Here the branch's point lies one ulp past the top, and both minus δ_p round (ties to even) to the same
+    overlap: the numbers of a law from a plate's path that the earlier code refused ("loading_overlap must ... increase
+    strictly"). The reloading law is valid, its elastic part the unloading curve reversed (exactly), the virgin
+    branch beyond it."""
+    top, peak, residual = (
+        float.fromhex(h) for h in ("0x1.90c04d1319861p-21", "0x1.90c04d1319862p-21", "0x1.1f60b342d4a4bp-22")
+    )
+    assert peak > top and peak - residual == top - residual  # the case: the two sums tie after the shift
+    loading = np.r_[np.linspace(0.0, top, 21)[:-1], peak, 1.1 * top]
+    down = np.linspace(top, residual, 41)
+    force = 1e3 * ((down - residual) / (top - residual)) ** 1.5
+    law = TabulatedLaw(
+        loading,
+        1e3 * (loading / top) ** 1.2,
+        np.sqrt(RADIUS * loading),
+        np.array([top]),
+        down[None, :],
+        force[None, :],
+        np.sqrt(RADIUS * (down - residual))[None, :],
+    )
+    reloaded = reloading_law(law)
+    d, f = reloaded.loading_overlap, reloaded.loading_force
+    assert d[0] == 0.0 and np.all(np.diff(d) > 0.0)
+    np.testing.assert_array_equal(d[:41], down[::-1] - residual)
+    np.testing.assert_array_equal(f[1:41], force[::-1][1:])
+    assert d[41] == 1.1 * top - residual and f[41] == law.loading_force[-1]
+
+
+def test_reloading_law_is_valid_for_laws_built_from_many_plate_paths():
+    """Laws built as the plates build them (:func:`fem.force_law.force_law` from a loading path with a probe point and
+    an unloading path, overlaps from a first contact δ₀ ≥ 0: on a dented plate), over 3000 random dents: every
+    reloading law is a valid law whose elastic part starts at 0 and ends at exactly the old δ* − δ_p. Before the
+    unloading curve's ends were pinned, 1 path in 2000 gave a loading point past the top by round-off."""
+    from types import SimpleNamespace
+
+    from fem.force_law import force_law
+
+    rng = np.random.default_rng(1)
+    for _ in range(3000):
+        top = rng.uniform(1e-7, 1e-5)
+        first_contact, dent = rng.uniform(0.0, 3.0) * top, top * rng.uniform(0.2, 0.95)
+        down = first_contact + np.linspace(0.05, 1.0, 10) ** 1.5 * top
+        force = 1e6 * (down - first_contact) ** 1.2
+        up = np.r_[down, first_contact + 1.1 * top]
+        loading = SimpleNamespace(
+            overlap=up, force=np.r_[force, 1.1 * force[-1]], contact_radius=np.sqrt(RADIUS * (up - first_contact))
+        )
+        back = first_contact + np.linspace(top, dent - 0.05 * top, 7)
+        unload_force = force[-1] * np.clip((back - first_contact - dent) / (top - dent), 0.0, None) ** 1.5
+        unloading = SimpleNamespace(
+            overlap=back,
+            force=unload_force,
+            contact_radius=np.sqrt(RADIUS * np.clip(back - first_contact - dent, 0, None)),
+        )
+        law = force_law(loading, unloading, first_contact)
+        assert law.unloading_overlap[0, 0] == law.unloading_max_overlap[0]
+        reloaded = reloading_law(law)  # raises if its overlaps do not increase strictly
+        assert reloaded.unloading_max_overlap[0] == law.unloading_max_overlap[0] - law.unloading_overlap[0, -1]

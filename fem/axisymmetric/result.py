@@ -167,8 +167,7 @@ def unloading_curve(overlap, force, contact_radius, samples: int):
     od = np.r_[ud[: last + 1], dp]
     of = np.r_[uf[: last + 1], 0.0]
     oa = np.r_[ua[: last + 1], 0.0]
-    s = np.linspace(1.0, 0.0, samples)
-    grid = dp + s * (od[0] - dp)
+    grid = np.linspace(od[0], dp, samples)  # its ends exactly δ* and δ_p: a reloading joins the branch at δ*
     order = np.argsort(od)
     curve_force = np.interp(grid, od[order], of[order] ** (2 / 3)) ** 1.5
     radius = np.interp(grid, od[order], oa[order])

@@ -31,6 +31,12 @@ def _panel(ax, x, group, measured, predicted, xlabel: str, label: str) -> None:
         only = sel & ~np.isfinite(measured)  # rows to predict: the prediction alone
         ax.plot(x[only], predicted[only], "x", color=colour, ms=6)
     ax.set_xlabel(xlabel)
+    shown = np.r_[measured, predicted]
+    shown = shown[np.isfinite(shown) & (shown > 0.0)]
+    if shown.size and shown.max() <= shown.min() * (1.0 + 1e-9):
+        # one value (one row, or a prediction equal to it to round-off): a decade about it, where autoscaling
+        # would make the log axis singular (matplotlib's warning to the user)
+        ax.set_ylim(shown[0] / 10**0.5, shown[0] * 10**0.5)
     ax.set_yscale("log")
 
 
