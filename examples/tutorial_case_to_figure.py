@@ -56,6 +56,7 @@ coupling = "none"     # no FE plate: the impact's own Hertz law
 
 [wear]
 pressure = "hertz"
+speed = "sliding"     # the contact point's slip: without the FE plate there is no surface slip of its own
 
 [output]
 figures = false       # this tutorial draws its own

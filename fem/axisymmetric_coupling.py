@@ -42,7 +42,7 @@ from fem.core.increments import ConvergenceError
 from fem.coupling import FixedPoint, ImpactOnLaw, fixed_point
 from fem.force_law import force_law
 from fem.plate_cycle import PlateCycle
-from fem.pressure_table import contact_pressure, pressure_table
+from fem.pressure_table import contact_pressure, pressure_table, radial_table
 
 __all__ = [
     "UNLOAD_MARGIN",
@@ -71,6 +71,8 @@ class CoupledPlate(Protocol):
     def first_contact_overlap(self) -> float: ...
 
     def plastic_work(self, since: PlateState) -> float: ...
+
+    def surface_radial_displacement(self) -> np.ndarray: ...
 
     def first_yield_overlap(self) -> float | None: ...
 
@@ -112,7 +114,8 @@ class CoupledImpact:
     above the impact's δ_max), ``elastic`` (solved on the plate's elastic response, the plate's state
     unchanged) and ``trial_increment`` (the largest Δᾱ a return mapping of that elastic response gives; 0 for a
     plastic solve), ``plastic_work`` (J, the plate's plastic dissipation over the cycle: 0 on the elastic
-    response), ``pressure_table`` ((time s, surface_r m, pressure Pa) of :func:`pressure_table`)."""
+    response), ``pressure_table`` ((time s, surface_r m, pressure Pa) of :func:`pressure_table`), ``radial_table``
+    ((time s, surface_r m, u_r m) of :func:`radial_table`: the surface's radial slip)."""
 
     impact: ImpactResult
     law: TabulatedLaw
@@ -122,6 +125,7 @@ class CoupledImpact:
     change: float
     converged: bool
     pressure_table: tuple[np.ndarray, np.ndarray, np.ndarray]
+    radial_table: tuple[np.ndarray, np.ndarray, np.ndarray]
     unload_overlap: float
     elastic: bool = False
     trial_increment: float = 0.0
@@ -215,8 +219,9 @@ class UnloadingCycles:
         return abs(after.max_overlap - before.max_overlap) / before.max_overlap
 
 
-def _coupled(point: FixedPoint[PlateCycle], first_contact: float) -> CoupledImpact:
-    """The coupled impact of the axisymmetric plate's fixed point."""
+def _coupled(point: FixedPoint[PlateCycle], first_contact: float, radial_before: np.ndarray) -> CoupledImpact:
+    """The coupled impact of the axisymmetric plate's fixed point; ``radial_before`` (m) the surface nodes' u_r before
+    the impact."""
     return CoupledImpact(
         point.impact,
         point.law,
@@ -226,6 +231,7 @@ def _coupled(point: FixedPoint[PlateCycle], first_contact: float) -> CoupledImpa
         point.change,
         point.converged,
         pressure_table(point.cycle, point.impact),
+        radial_table(point.cycle, point.impact, radial_before),
         point.impacts[-2].max_overlap * (1.0 + UNLOAD_MARGIN),
     )
 
@@ -241,7 +247,7 @@ def couple(plate: CoupledPlate, impact_on: ImpactOnLaw, estimate: float, setting
         )
     first_contact = plate.first_contact_overlap()
     first_yield = plate.first_yield_overlap()
-    before = plate.state
+    before, radial_before = plate.state, plate.surface_radial_displacement()
 
     def load(target: float) -> IndentationResult:
         return plate.load(first_contact + loading_path(target, settings.load_steps, first_yield))
@@ -263,7 +269,7 @@ def couple(plate: CoupledPlate, impact_on: ImpactOnLaw, estimate: float, setting
 
     cycles = UnloadingCycles(loading, unload, first_contact)
     point = fixed_point(cycles, impact_on, impact, settings.tolerance, settings.max_iterations - 1)
-    return replace(_coupled(point, first_contact), plastic_work=plate.plastic_work(before))
+    return replace(_coupled(point, first_contact, radial_before), plastic_work=plate.plastic_work(before))
 
 
 def couple_elastic(
@@ -297,4 +303,6 @@ def couple_elastic(
         return elastic_reload(plate, down, check_yield=False).result
 
     point = fixed_point(UnloadingCycles(loading, unload, first_contact), impact_on, impact, settings.tolerance, 1)
-    return replace(_coupled(point, first_contact), elastic=True, trial_increment=trial)
+    return replace(
+        _coupled(point, first_contact, plate.surface_radial_displacement()), elastic=True, trial_increment=trial
+    )

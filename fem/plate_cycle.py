@@ -18,7 +18,8 @@ __all__ = ["PlateCycle"]
 class PlateCycle:
     """The plate's cycle of a coupled impact: the kept loading steps below δ* followed by the unloading from δ*
     (per step: ``overlap`` m from first contact, ``force`` N, ``contact_radius`` m, ``pressure`` Pa (steps, surface
-    nodes), ``regime``, ``max_equivalent_plastic_strain``), ``surface_r`` (m), ``residual_depth`` (m, after the
+    nodes), ``radial_displacement`` m (steps, surface nodes: u_r), ``regime``, ``max_equivalent_plastic_strain``),
+    ``surface_r`` (m), ``residual_depth`` (m, after the
     unloading, positive into the plate), ``first_yield`` (reached in this cycle, or None), ``loading`` and
     ``unloading`` (the plate's results, overlaps from the original plane)."""
 
@@ -26,6 +27,7 @@ class PlateCycle:
     force: np.ndarray
     contact_radius: np.ndarray
     pressure: np.ndarray
+    radial_displacement: np.ndarray
     regime: list[str]
     max_equivalent_plastic_strain: np.ndarray
     surface_r: np.ndarray
@@ -50,6 +52,7 @@ class PlateCycle:
             force=c.force,
             contact_radius=c.contact_radius,
             pressure=c.pressure,
+            radial_displacement=c.radial_displacement,
             regime=c.regime,
             max_equivalent_plastic_strain=c.max_equivalent_plastic_strain,
             surface_r=c.surface_r,

@@ -17,6 +17,8 @@ FAST = {
         "--set",
         'wear.pressure="hertz"',
         "--set",
+        'wear.speed="sliding"',
+        "--set",
         "output.figures=false",
         "--set",
         "output.render=false",

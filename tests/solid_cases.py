@@ -8,16 +8,17 @@ from wear.case import JOBS
 REDUCED_3D = {"model": "3d", "mesh_scale": 2.0, "solid_load_steps": 5, "solid_unload_steps": 3, "solid_iterations": 2}
 
 
-def repeat_case(angle: float, friction: float, impacts: int, **fem):
+def repeat_case(angle: float, friction: float, impacts: int, geometry_update: bool = False, **fem):
     """``impactwear repeat``'s default case on the reduced 3-D plate (``fem`` keys laid over it): ``impacts`` at
-    ``angle`` (degrees from the normal) with Coulomb ``friction``, no geometry update, no figures or rendering."""
+    ``angle`` (degrees from the normal) with Coulomb ``friction``, the wear moving the surface or not
+    (``geometry_update``), no figures or rendering."""
     return (
         JOBS["repeat"]
         .default_case()
         .with_(
             impact={"angle": angle, "friction": friction},
             fem={**REDUCED_3D, **fem},
-            repeat={"impacts": impacts, "geometry_update": False},
+            repeat={"impacts": impacts, "geometry_update": geometry_update},
             output={"render": False, "figures": False},
         )
     )

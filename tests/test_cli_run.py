@@ -62,6 +62,7 @@ def test_default_case_file_matches_python_default(capsys):
 
 def test_run_case_without_fe_from_cli(tmp_path, capsys):
     text = _replace('pressure = "fe"', 'pressure = "thornton"').replace('coupling = "two-way"', 'coupling = "none"')
+    text = text.replace('speed = "local"', 'speed = "sliding"')
     text = text.replace("render = true", "render = false").replace("figures = true", "figures = false")
     case_file = tmp_path / "case.toml"
     case_file.write_text(text)

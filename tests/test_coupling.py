@@ -81,6 +81,7 @@ def closed_form_indent(radius, e_star, p_y=None):
             p0 * 2 / 3,
             r,
             p,
+            np.zeros_like(p),  # the surface's radial displacement: not read by the coupling
             None,
             np.zeros_like(r),
             np.zeros(n),
@@ -104,6 +105,9 @@ class ClosedFormPlate:
 
     def plastic_work(self, since) -> float:
         return 0.0
+
+    def surface_radial_displacement(self):
+        return np.zeros(121)  # the closed forms' surface (121 radii) does not move radially
 
     def first_contact_overlap(self) -> float:
         return 0.0

@@ -14,7 +14,9 @@ from wear.app.cli import main
 from wear.integrate import WearMap, implausible_wear
 
 # the default case's impact (alumina R 2.5 mm on Ti-6Al-4V, 3 m/s at 30 deg), Thornton pressure, no FE: quick
-QUICK = Case.default().with_(fem={"coupling": "none"}, wear={"pressure": "thornton"}, output={"render": False})
+QUICK = Case.default().with_(
+    fem={"coupling": "none"}, wear={"pressure": "thornton", "speed": "sliding"}, output={"render": False}
+)
 pytestmark = pytest.mark.filterwarnings("ignore:elastic ball")
 
 
@@ -52,6 +54,7 @@ def test_run_with_the_largest_wear_coefficient_says_so_in_its_notes_and_summary(
     """wear.K = 1e-3 (the top of its range): metres of wear from one 0.26 g ball; stderr and summary.json say so."""
     out = tmp_path / "out"
     argv = ["run", "--set", "wear.K=1e-3", "--set", "fem.coupling='none'", "--set", "wear.pressure='thornton'"]
+    argv += ["--set", "wear.speed='sliding'"]
     assert main([*argv, "--set", "output.render=false", "--out", str(out), "--quiet"]) == 0
     err = capsys.readouterr().err
     notes = json.loads((out / "summary.json").read_text())["notes"]

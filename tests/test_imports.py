@@ -3,7 +3,8 @@
 Rooms, lowest first (a module may import from its own room and the rooms below it, never above): ``contact`` ←
 the FE core (``fem.core``: knows no plate) ← the plates (``fem.axisymmetric``, ``fem.solid``: neither imports the
 other) ← the plates' face and couplings (``fem``) ← the wear law (``wear.law``, ``wear.laws``, ``wear.pressure``,
-``wear.pressure_profiles``, ``wear.integrate``, ``wear.accumulate``, ``wear.solid_wear``, ``wear.surface``) ← the case
+``wear.slip``, ``wear.pressure_profiles``, ``wear.integrate``, ``wear.accumulate``, ``wear.solid_wear``,
+``wear.surface``) ← the case
 (``wear.case``) ← erosion (``wear.erosion``) ← a component's wall (``wear.wall``: impact records, the wall, per-face
 sums; never the chains nor the command line) ← the chains (``wear.chain``) ← the command line (``wear.app``).
 ``meshes`` is data: only its ``__main__`` (which regenerates the mesh) imports ``fem``. No import cycle between the
@@ -35,6 +36,7 @@ ROOMS = (
         "wear.law",
         "wear.laws",
         "wear.pressure",
+        "wear.slip",
         "wear.pressure_profiles",
         "wear.integrate",
         "wear.accumulate",
@@ -208,7 +210,10 @@ def test_the_case_names_the_commands_and_stages_of_its_jobs_without_importing_th
     importing the case loads none of that room, and every name resolves to what its user calls."""
     code = "import sys, wear.case; print(sorted({m.split('.')[1] for m in sys.modules if m.startswith('wear.')}))"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
-    assert out.stdout.strip() == "['accumulate', 'case', 'integrate', 'law', 'laws', 'pressure', 'pressure_profiles']"
+    assert (
+        out.stdout.strip()
+        == "['accumulate', 'case', 'integrate', 'law', 'laws', 'pressure', 'pressure_profiles', 'slip']"
+    )
     for job in JOBS.values():
         command = job.command_module()
         assert callable(command.configure) and callable(command.main), job.command

@@ -222,6 +222,8 @@ def test_kill_9_while_writing_leaves_no_complete_looking_output(command, tmp_pat
             "--set",
             'wear.pressure="hertz"',
             "--set",
+            'wear.speed="sliding"',
+            "--set",
             "output.render=false",
             "--out",
             str(out),

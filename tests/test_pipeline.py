@@ -12,7 +12,9 @@ from wear.app.outputs.run import write_run
 from wear.surface import integrate_point_data
 
 # a quick case: alumina on Ti-6Al-4V, 3 m/s at 30 deg (the default case's impact), Thornton pressure, no FE
-QUICK = Case.default().with_(fem={"coupling": "none"}, wear={"pressure": "thornton"}, output={"render": False})
+QUICK = Case.default().with_(
+    fem={"coupling": "none"}, wear={"pressure": "thornton", "speed": "sliding"}, output={"render": False}
+)
 
 
 def _check_folder(out, summary):

@@ -51,7 +51,9 @@ def test_run_without_rendering_libraries_still_succeeds(tmp_path, monkeypatch, c
 
     monkeypatch.setattr(render, "_loadable", lambda *names: False)
     monkeypatch.delenv("DISPLAY", raising=False)
-    case = Case().with_(wear={"pressure": "thornton"}, fem={"coupling": "none"}, output={"figures": False})
+    case = Case().with_(
+        wear={"pressure": "thornton", "speed": "sliding"}, fem={"coupling": "none"}, output={"figures": False}
+    )
     text = dump_case(case, JOBS["run"].tables)
     case = tmp_path / "case.toml"
     case.write_text(text)

@@ -46,7 +46,9 @@ def summaries(tmp_path_factory) -> dict[str, list]:
     tmp = tmp_path_factory.mktemp("summaries")
     # run: no FE plate, no figures (the chain's plumbing only)
     quick = Case().with_(
-        wear={"pressure": "thornton"}, fem={"coupling": "none"}, output={"render": False, "figures": False}
+        wear={"pressure": "thornton", "speed": "sliding"},
+        fem={"coupling": "none"},
+        output={"render": False, "figures": False},
     )
     (tmp / "run.toml").write_text(dump_case(quick, JOBS["run"].tables))
     # repeat: one elastic impact on a coarse plate

@@ -30,7 +30,7 @@ from wear import (
     wear_from_impact,
 )
 from wear.integrate import integrate_wear_numpy
-from wear.pressure import SlidingSpeed
+from wear.slip import SlidingSpeed
 
 BALL = Material(E=380e9, nu=0.23, density=4000.0, name="alumina")
 PLATE = Material(E=70e9, nu=0.25, density=2700.0, yield_strength=100e6, name="aluminium")

@@ -11,7 +11,7 @@ Wear of one impact (errata Eq. 15, w a depth)::
     from wear import WearLaw, pressure_history, sliding_speed, integrate_wear
     law = WearLaw(K=1e-12, alpha=1.0, beta=0.3)            # K in m^(0.7) s^(-0.7) Pa^(-1)
     p = pressure_history(impact, "hertz")                  # or "fe" (fe=...), "paper", "thornton"
-    v = sliding_speed(impact, "sliding")                   # or "kinematic"
+    v = sliding_speed(impact, "sliding")                   # or "kinematic"; "local" with an FE plate's radial=
     wm = integrate_wear(p, v, law, density=impact.plate.density)
     wm = wear_from_impact(impact, law, pressure="hertz")   # the same in one call
 
@@ -61,14 +61,15 @@ _EXPORTS = {
     "WearLaw": "wear.law",
     "wear_coefficient_units": "wear.law",
     "PRESSURE_SOURCES": "wear.pressure",
-    "SPEED_MODELS": "wear.pressure",
+    "SPEED_MODELS": "wear.slip",
     "PressureHistory": "wear.pressure",
-    "SlidingSpeed": "wear.pressure",
+    "RadialSlip": "wear.slip",
+    "SlidingSpeed": "wear.slip",
     "fe_pressure_history": "wear.pressure",
     "hertz_pressure_history": "wear.pressure",
     "paper_pressure_history": "wear.pressure",
     "pressure_history": "wear.pressure",
-    "sliding_speed": "wear.pressure",
+    "sliding_speed": "wear.slip",
 }
 
 __all__ = sorted(_EXPORTS)

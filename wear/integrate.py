@@ -22,11 +22,19 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.interpolate import RegularGridInterpolator
 
 from contact.checks import check_number
-from wear.accumulate import accumulate_depth, accumulate_depth_numpy, powered_table
+from wear.accumulate import (
+    accumulate_depth,
+    accumulate_depth_numpy,
+    accumulate_local_depth,
+    local_speed,
+    powered_table,
+)
 from wear.law import WearLaw
-from wear.pressure import PressureHistory, SlidingSpeed, pressure_history, sliding_speed
+from wear.pressure import PressureHistory, pressure_history
+from wear.slip import SlidingSpeed, sliding_speed
 
 __all__ = [
     "wear_map",
@@ -95,6 +103,12 @@ class WearMap:
         """Depth (m) along y = 0, shape (nx,)."""
         return self.depth[int(np.argmin(np.abs(self.y)))]
 
+    def depth_at(self, x, y) -> np.ndarray:
+        """Depth (m) at the points (``x``, ``y``) (m, arrays of one shape), bilinear on the grid, 0 off it."""
+        x, y = np.broadcast_arrays(np.asarray(x, float), np.asarray(y, float))
+        on = RegularGridInterpolator((self.y, self.x), self.depth, bounds_error=False, fill_value=0.0)
+        return on(np.column_stack([y.ravel(), x.ravel()])).reshape(x.shape)
+
 
 def implausible_wear(wm: WearMap, contact_radius: float, ball_mass: float) -> list[str]:
     """One line per way in which ``wm``, the wear of one impact, cannot be what one impact does: a depth beyond the
@@ -119,12 +133,17 @@ def implausible_wear(wm: WearMap, contact_radius: float, ball_mass: float) -> li
 class SubSteps:
     """The time quadrature of one impact: per sub-step the contact centre ``contact_x`` (m), the pressure
     sample ``step`` and time weight ``fraction`` (p = (1−f)·p[step] + f·p[step+1]), and ``weight`` = trapezoid
-    Δt × K v^β (units of K × s × (m/s)^β, so that weight × p^α is a depth in m)."""
+    Δt × K v^β (units of K × s × (m/s)^β, so that weight × p^α is a depth in m). With the local slip
+    (:attr:`wear.slip.SlidingSpeed.is_local`) the sub-steps are the midpoints of the intervals, ``weight`` = Δt × K,
+    ``slip`` the contact-point slip velocity (m/s) and ``row`` the interval of the surface's radial motion
+    (:meth:`wear.slip.RadialSlip.rates`) at each; each node's own speed is then taken in the kernel."""
 
     contact_x: np.ndarray
     step: np.ndarray
     fraction: np.ndarray
     weight: np.ndarray
+    slip: np.ndarray | None = None
+    row: np.ndarray | None = None
 
 
 def surface_grid(
@@ -162,6 +181,9 @@ def wear_substeps(
     spacing = check_number("spacing", spacing, low=0.0, low_open=True, units="m")
     tp = pressure.time
     nodes = np.union1d(tp, speed.time[(speed.time > tp[0]) & (speed.time < tp[-1])])
+    if speed.is_local:
+        tr = speed.radial.time
+        nodes = np.union1d(nodes, tr[(tr > tp[0]) & (tr < tp[-1])])
     xc = np.interp(nodes, tp, pressure.contact_x)
     pieces = np.maximum(np.ceil(np.abs(np.diff(xc)) / (cell_fraction * spacing)), 1).astype(np.int64)
     # sub-step times: each interval [t_k, t_k+1] cut into pieces[k] equal parts
@@ -170,20 +192,36 @@ def wear_substeps(
     offsets = np.arange(starts.size) - np.repeat(np.cumsum(pieces) - pieces, pieces)
     tau = np.append(starts + offsets * widths, nodes[-1])
     dt = np.diff(tau)
-    trap = np.zeros_like(tau)
-    trap[:-1] += 0.5 * dt
-    trap[1:] += 0.5 * dt
-    v = np.interp(tau, speed.time, speed.speed, left=0.0, right=0.0)
-    weight = trap * law.K * v**law.beta
+    slip = row = None
+    if speed.is_local:
+        # the surface's radial rate is constant between its times: the midpoint rule on each sub-interval (one of
+        # them, not the two a trapezoid node between them would straddle)
+        tau = tau[:-1] + 0.5 * dt
+        weight = dt * law.K
+        slip = np.interp(tau, speed.time, speed.slip_velocity, left=0.0, right=0.0)
+        times = speed.radial.time
+        row = np.clip(np.searchsorted(times, tau, side="right") - 1, 0, times.size - 2)
+    else:
+        trap = np.zeros_like(tau)
+        trap[:-1] += 0.5 * dt
+        trap[1:] += 0.5 * dt
+        v = np.interp(tau, speed.time, speed.speed, left=0.0, right=0.0)
+        weight = trap * law.K * v**law.beta
     step = np.clip(np.searchsorted(tp, tau, side="right") - 1, 0, tp.size - 2)
     fraction = np.clip((tau - tp[step]) / (tp[step + 1] - tp[step]), 0.0, 1.0)
     loaded = (pressure.extent[step] > 0.0) | (pressure.extent[step + 1] > 0.0)
     keep = (weight > 0.0) & loaded
+
+    def kept(values: np.ndarray | None) -> np.ndarray | None:
+        return None if values is None else np.ascontiguousarray(values[keep])
+
     return SubSteps(
-        contact_x=np.ascontiguousarray(np.interp(tau, tp, pressure.contact_x)[keep]),
-        step=np.ascontiguousarray(step[keep]),
-        fraction=np.ascontiguousarray(fraction[keep]),
-        weight=np.ascontiguousarray(weight[keep]),
+        contact_x=kept(np.interp(tau, tp, pressure.contact_x)),
+        step=kept(step),
+        fraction=kept(fraction),
+        weight=kept(weight),
+        slip=kept(slip),
+        row=kept(row),
     )
 
 
@@ -268,14 +306,44 @@ def integrate_wear(
     dx = float(x[1] - x[0])
     sub = wear_substeps(pressure, speed, law, dx)
     table = powered_table(pressure, law.alpha)
-    if sub.weight.size:
+    if not sub.weight.size:
+        return wear_map(x, y, depth, density, scar_threshold)
+    x0, extent = float(x[0]), pressure.extent
+    if speed.is_local:
+        rates, dr = _rate_table(speed, pressure)
         if engine == "numba":
-            accumulate_depth(
-                depth, float(x[0]), dx, y, sub.contact_x, sub.step, sub.fraction, sub.weight, pressure.extent, table
+            accumulate_local_depth(
+                depth,
+                x0,
+                dx,
+                y,
+                sub.contact_x,
+                sub.step,
+                sub.fraction,
+                sub.weight,
+                sub.slip,
+                sub.row,
+                extent,
+                table,
+                rates,
+                dr,
+                law.beta,
             )
         else:
-            accumulate_depth_numpy(depth, float(x[0]), dx, y, sub, pressure.extent, table)
+            accumulate_depth_numpy(depth, x0, dx, y, sub, extent, table, rates, dr, law.beta)
+    elif engine == "numba":
+        accumulate_depth(depth, x0, dx, y, sub.contact_x, sub.step, sub.fraction, sub.weight, extent, table)
+    else:
+        accumulate_depth_numpy(depth, x0, dx, y, sub, extent, table)
     return wear_map(x, y, depth, density, scar_threshold)
+
+
+def _rate_table(speed: SlidingSpeed, pressure: PressureHistory) -> tuple[np.ndarray, float]:
+    """The surface's radial rates (m/s, (intervals, 513)) on radii 0 … the largest loaded radius of ``pressure`` (where
+    the pressure wears), and their spacing (m)."""
+    reach = pressure.max_extent
+    rates = speed.radial.rate_table(reach)
+    return np.ascontiguousarray(rates), reach / (rates.shape[1] - 1)
 
 
 def integrate_wear_numpy(pressure: PressureHistory, speed: SlidingSpeed, law: WearLaw, **kwargs) -> WearMap:
@@ -300,8 +368,17 @@ def axisymmetric_wear_depth(pressure: PressureHistory, speed: SlidingSpeed, law:
     sub = wear_substeps(pressure, speed, law, max(reach, 1e-300))
     powered = PressureHistory(pressure.time, pressure.contact_x, pressure.extent, powered_table(pressure, law.alpha))
     h = np.zeros_like(r)
-    for i0, w1, weight in zip(sub.step, sub.fraction, sub.weight, strict=True):
-        h += weight * ((1.0 - w1) * powered.at(i0, r) + w1 * powered.at(i0 + 1, r))
+    if speed.is_local:
+        # each radius's speed over the circle about the centre: |v_s e_x − u̇_r e_r|^β averaged over its angle
+        rates, dr = _rate_table(speed, pressure)
+        angle = np.linspace(0.0, 2.0 * np.pi, 64, endpoint=False)
+        offsets = r[:, None] * np.cos(angle)[None, :], r[:, None] * np.sin(angle)[None, :]
+    for k, (i0, w1, weight) in enumerate(zip(sub.step, sub.fraction, sub.weight, strict=True)):
+        p = (1.0 - w1) * powered.at(i0, r) + w1 * powered.at(i0 + 1, r)
+        if speed.is_local:
+            rate = np.interp(r, dr * np.arange(rates.shape[1]), rates[sub.row[k]])
+            p = p * np.mean(local_speed(sub.slip[k], rate[:, None], *offsets) ** law.beta, axis=1)
+        h += weight * p
     return h
 
 

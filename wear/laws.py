@@ -46,7 +46,8 @@ from contact import ImpactResult, Material, effective_modulus
 from contact.theory import sphere_mass
 from wear.integrate import WearMap, integrate_wear, surface_grid, wear_map
 from wear.law import WearLaw
-from wear.pressure import PressureHistory, SlidingSpeed
+from wear.pressure import PressureHistory
+from wear.slip import SlidingSpeed
 
 __all__ = [
     "LAWS",

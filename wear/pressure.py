@@ -1,4 +1,5 @@
-r"""Contact pressure p(r, t) and sliding speed v(t) along one impact: the inputs of the wear law (equation 15).
+r"""Contact pressure p(r, t) along one impact: an input of the wear law (equation 15), with the sliding speed of
+:mod:`wear.slip`.
 
 Every pressure source produces the same small representation, :class:`PressureHistory`: at each time
 t_i the pressure is axisymmetric about the contact centre ``contact_x[i]`` (m, along the impact
@@ -35,9 +36,7 @@ Sources (``source=`` of :func:`pressure_history`):
     field is piecewise linear on the surface) onto the table in s with extent = the first node
     beyond the last loaded one; negative nodal values (FE noise) are set to zero.
 
-Sliding speed (``model=`` of :func:`sliding_speed`): ``"sliding"`` is ``|v_t − Rω|`` while the contact is in
-gross sliding and 0 while it sticks; ``"kinematic"`` is ``|v_t − Rω|`` whether stuck or not (the rigid-body
-slip of the contact centre; while stuck it is the small micro-slip speed of the tangential spring).
+The sliding speed, the other input of the wear law, is :mod:`wear.slip`.
 
 SI units throughout: time s, lengths m, forces N, pressures Pa, speeds m/s.
 """
@@ -56,20 +55,15 @@ from wear.pressure_profiles import mesarovic_johnson_radius_fraction, truncated_
 
 __all__ = [
     "PRESSURE_SOURCES",
-    "SPEED_MODELS",
     "PressureHistory",
-    "SlidingSpeed",
     "hertz_pressure_history",
     "paper_pressure_history",
     "fe_pressure_history",
     "pressure_history",
-    "sliding_speed",
 ]
 
 #: The pressure sources of :func:`pressure_history`.
 PRESSURE_SOURCES = ("fe", "hertz", "paper", "thornton")
-#: The sliding-speed models of :func:`sliding_speed`.
-SPEED_MODELS = ("sliding", "kinematic")
 DEFAULT_POINTS = 257
 
 
@@ -140,23 +134,6 @@ class PressureHistory:
         """Normal force ∫ p dA = 2πa² ∫₀¹ p s ds (N) at each sample, trapezoidal rule in s (shape (n,))."""
         s = self.s
         return 2.0 * math.pi * self.extent**2 * np.trapezoid(self.pressure * s, s, axis=1)
-
-
-@dataclass(frozen=True, eq=False)
-class SlidingSpeed:
-    """Sliding speed of the contact points (m/s, ≥ 0) at ``time`` (s); ``model`` names how it was built."""
-
-    time: np.ndarray
-    speed: np.ndarray
-    model: str = ""
-
-    def __post_init__(self) -> None:
-        t = check_array("time", self.time, units="s", min_size=2)
-        v = check_array("speed", self.speed, low=0.0, units="m/s")
-        if v.shape != t.shape or np.any(np.diff(t) <= 0.0):
-            raise ValueError(f"time {t.shape} and speed {v.shape} must have equal shapes; time strictly increasing")
-        object.__setattr__(self, "time", np.ascontiguousarray(t))
-        object.__setattr__(self, "speed", np.ascontiguousarray(v))
 
 
 def _checked_impact_arrays(time, contact_x, contact_radius, normal_force):
@@ -354,17 +331,3 @@ def pressure_history(
         loading_after_yield=loading_after_yield,
         points=points,
     )
-
-
-def sliding_speed(impact, model: str = "sliding") -> SlidingSpeed:
-    """Sliding speed of the contact points along ``impact`` (an ImpactResult or its History), m/s.
-
-    ``model="sliding"``: ``|v_t − Rω|`` while ``sliding`` (gross sliding), 0 while stuck;
-    ``model="kinematic"``: ``|v_t − Rω|`` throughout.
-    """
-    check_choice("model", model, SPEED_MODELS)
-    h = _history_of(impact)
-    slip = np.abs(np.asarray(h.slip_velocity, dtype=float))
-    if model == "sliding":
-        slip = np.where(np.asarray(h.sliding, dtype=bool), slip, 0.0)
-    return SlidingSpeed(np.asarray(h.t, dtype=float), slip, model=model)

@@ -2,9 +2,10 @@ r"""Wear and dent of the 3-D plate: equation 15 integrated with the 3-D plate's 
 its residual surface on the wear grid (SI units: m, s, Pa).
 
 The 3-D plate (:func:`fem.indent_solid`, :func:`fem.couple_solid`) gives, at each of its steps k placed at impact
-time t_k, the contact pressure p_k at its surface vertices and the ball's slip s_k over each of them in the step
-(zero where the vertex sticks; half plate, mirrored about the plane of incidence y = 0). With the sliding speed
-``"sliding"`` (the default) each point wears at its own slip rate, the plate's:
+time t_k, the contact pressure p_k at its quadratic surface nodes (linear between the vertices) and the ball's slip
+s_k over each of them in the step (the quadratic displacement's own; zero where the node sticks; half plate,
+mirrored about the plane of incidence y = 0). With the local slip
+(``wear.speed = "local"``, the default; :mod:`wear.slip`) each point wears at its own slip rate, the plate's:
 
 .. math::
 
@@ -15,8 +16,9 @@ time t_k, the contact pressure p_k at its surface vertices and the ball's slip s
 p^α linear in time over a step and the slip at a constant rate through it (t before the first step: the impact's
 first contact, p = 0). A point in the stick zone does not slide and does not wear (β > 0); where the whole contact
 slides the slip rate is the ball's slip speed less the rate of the plate's own shear displacement
-(``tests/test_fem_solid.py`` checks the slip against Cerruti's). With ``"kinematic"`` every point in contact
-moves at the impact's rigid-body slip speed ``|v_t − Rω|`` (:func:`wear.sliding_speed`) instead, stuck or not:
+(``tests/test_fem_solid.py`` checks the slip against Cerruti's). With the impact's contact-point slip
+(``"sliding"``, the paper's, or ``"kinematic"``) every point in contact moves at its speed ``|v_t − Rω|``
+(:func:`wear.sliding_speed`) instead, stuck or not:
 
 .. math::
 
@@ -37,7 +39,7 @@ from scipy.spatial import Delaunay
 
 from contact.fields import SurfaceField
 from wear.law import WearLaw
-from wear.pressure import SlidingSpeed
+from wear.slip import SlidingSpeed
 
 __all__ = ["on_half_surface", "solid_grid", "step_weights", "solid_wear_depth", "solid_dent_depth"]
 
@@ -108,16 +110,16 @@ def _on_grid(
 
 
 def solid_wear_depth(
-    field: SurfaceField, speed: SlidingSpeed, law: WearLaw, x: np.ndarray, y: np.ndarray
+    field: SurfaceField, speed: SlidingSpeed | None, law: WearLaw, x: np.ndarray, y: np.ndarray, start: float = 0.0
 ) -> np.ndarray:
     """Wear depth (m, (ny, nx), positive into the plate) on the grid ``x``, ``y`` (m) of a plate's surface
-    ``field`` (its steps placed at impact times), with the local wear ``law``: at each point's own slip rate on the
-    plate where ``speed.model`` is ``"sliding"``, at the impact's rigid-body slip ``speed`` (m/s) where it is
-    ``"kinematic"`` (module docstring)."""
+    ``field`` (its steps placed at impact times, the impact's first contact at ``start``, s), with the local wear
+    ``law``: at each point's own slip rate on the plate (the local slip) where ``speed`` is None, else at the
+    impact's contact-point slip ``speed`` (m/s; module docstring)."""
     times = np.asarray(field.time, float)
     pressed = np.maximum(field.pressure, 0.0) ** law.alpha
-    if speed.model == "sliding":
-        start = min(float(speed.time[0]), float(times[0]))
+    if speed is None:
+        start = min(start, float(times[0]))
         step = np.diff(np.r_[start, times])
         before = np.vstack([np.zeros_like(pressed[:1]), pressed[:-1]])
         rate = np.linalg.norm(field.slip, axis=2) / np.maximum(step, 1e-300)[:, None]

@@ -126,6 +126,10 @@ class Plate:
         the wear."""
         return -self.state.u[self.solver.surface_uz]
 
+    def surface_radial_displacement(self) -> np.ndarray:
+        """The surface nodes' radial displacement u_r now (m, positive away from the axis; at :attr:`surface_r`)."""
+        return self.state.u[self.solver.surface_ur].copy()
+
     @property
     def is_virgin(self) -> bool:
         """True until a state is committed (no indentation has left its state yet)."""

@@ -181,6 +181,7 @@ def elastic_reload(plate, overlaps, check_yield: bool = True) -> ElasticReload:
         mean_pressure=np.divide(force, area, out=np.zeros_like(force), where=area > 0.0),
         surface_r=disc.surface_r.copy(),
         pressure=np.array(pressure),
+        radial_displacement=np.array([new.u[solver.surface_ur] for new, *_ in steps]),
         first_yield=None,
         residual_depth=-state.u[solver.surface_uz].copy(),
         max_equivalent_plastic_strain=float(state.alpha.max(initial=0.0)) + increments,

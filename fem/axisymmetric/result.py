@@ -49,7 +49,9 @@ class IndentationResult:
 
     ``overlap`` δ (m), ``force`` F (N), ``contact_radius`` a (m), ``max_pressure`` (Pa),
     ``mean_pressure`` F/(πa²) (Pa), ``surface_r`` (m), ``pressure`` (steps, surface nodes) (Pa, linear between
-    the surface vertices: :func:`fem.core.sphere.pressure_from_reactions`), ``first_yield``
+    the surface vertices: :func:`fem.core.sphere.pressure_from_reactions`), ``radial_displacement`` (steps, surface
+    nodes) the surface nodes' u_r (m, positive away from the axis: the plate surface's slip under the ball is its
+    change), ``first_yield``
     (:class:`FirstYieldPoint` or None), ``residual_depth`` (m, surface u_z after the last step, positive = into
     the plate), ``max_equivalent_plastic_strain`` (per step), ``regime`` (per step), ``newton_iterations`` (per
     step), ``time`` (s, per step, only from :func:`fem.indent_impact`), ``radius`` R (m), ``effective_modulus``
@@ -64,6 +66,7 @@ class IndentationResult:
     mean_pressure: np.ndarray
     surface_r: np.ndarray
     pressure: np.ndarray
+    radial_displacement: np.ndarray
     first_yield: FirstYieldPoint | None
     residual_depth: np.ndarray
     max_equivalent_plastic_strain: np.ndarray
@@ -199,6 +202,7 @@ def join(first: IndentationResult, second: IndentationResult, below: float | Non
         max_pressure=cat("max_pressure"),
         mean_pressure=cat("mean_pressure"),
         pressure=np.vstack([np.asarray(first.pressure)[:k], np.asarray(second.pressure)]),
+        radial_displacement=np.vstack([first.radial_displacement[:k], second.radial_displacement]),
         first_yield=fy,
         max_equivalent_plastic_strain=cat("max_equivalent_plastic_strain"),
         regime=list(first.regime[:k]) + list(second.regime),

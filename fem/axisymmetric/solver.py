@@ -97,6 +97,7 @@ class PlateSolver:
         d = self.disc
         self.elastic_element_matrices = element_matrices(d, material.elastic_tangent)
         self.fixed_dofs = np.unique(np.concatenate([d.axis_dofs, d.bottom_dofs]))
+        self.surface_ur = 2 * d.surface_nodes
         self.surface_uz = 2 * d.surface_nodes + 1
         self.stats = WorkCounters()
         self._elastic_K = None

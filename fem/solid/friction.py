@@ -87,9 +87,14 @@ class SurfaceFriction:
 
     def vertex_mask(self, node_mask: np.ndarray) -> np.ndarray:
         """A mask of the surface nodes taken at the surface vertices (a mask of the vertices)."""
-        mask = np.zeros(self.disc.surface_vertex_nodes.size, bool)
-        mask[self.node_vertices[self.is_vertex, 0]] = node_mask[self.is_vertex]
-        return mask
+        return self.vertex_values(node_mask)
+
+    def vertex_values(self, node_values: np.ndarray) -> np.ndarray:
+        """Values of the surface nodes (surface nodes, ...) taken at the surface vertices (surface vertices, ...)."""
+        values = np.asarray(node_values)
+        out = np.zeros((self.disc.surface_vertex_nodes.size, *values.shape[1:]), values.dtype)
+        out[self.node_vertices[self.is_vertex, 0]] = values[self.is_vertex]
+        return out
 
     def vertex_field(self, nodal: np.ndarray) -> np.ndarray:
         """The linear field (per surface vertex) whose hat moments are those of the nodal forces ``nodal``

@@ -20,8 +20,10 @@ kept state's u is the reference, and the slide ξ of a new impact counts from 0 
 (:meth:`start_state` sets ξ = 0, the contact and stick sets empty): the residual tangential displacement of the
 last impact is kept, but no vertex is stuck to the new ball before it touches.
 
-**Wear is not moved into the 3-D surface**: the mesh keeps its reference surface and the chain records the
-accumulated wear beside it (nm per impact against µm elements; :mod:`wear.chain.solid_repeat`).
+**Wear moves the surface the ball meets** (:meth:`SolidPlate.move_surface`): each surface node's worn depth lowers its
+height in the contact gap (:attr:`fem.solid.solver.SolidSolver.worn_depth`), as the axisymmetric plate's moved nodes
+do; the mesh keeps its reference surface (nm of wear per impact against µm elements), and the plate written to a
+file has its surface lowered by the wear.
 
 Forces and plastic work are those of the whole plate (twice the half model's).
 """
@@ -33,7 +35,7 @@ from dataclasses import fields, replace
 import meshio
 import numpy as np
 
-from contact.checks import check_number
+from contact.checks import check_array, check_number
 from contact.materials import Material
 from fem.core.increments import WorkCounters
 from fem.core.plasticity import plastic_work
@@ -155,6 +157,27 @@ class SolidPlate:
         gap0 = self.solver.obstacle(0.0, centre) - self.surface_displacement
         return max(float(np.min(gap0)), 0.0)
 
+    @property
+    def surface_xy(self) -> np.ndarray:
+        """(x, y) (m, (n, 2), y ≥ 0) of the surface nodes (vertices and mid-edge nodes), as :meth:`move_surface`
+        takes them."""
+        return self.solver.disc.surface_xy
+
+    @property
+    def wear_depth(self) -> np.ndarray:
+        """The depth (m, ≥ 0) worn off each surface node by the impacts so far (:meth:`move_surface`)."""
+        return self.solver.worn_depth.copy()
+
+    def move_surface(self, depth) -> None:
+        """Remove material: lower the surface at each surface node (:attr:`surface_xy`) by ``depth`` (m, ≥ 0, one
+        value per node); the next impact's contact gap is measured to the worn surface."""
+        depth = check_array("depth", depth, low=0.0, units="m", what="wear depth")
+        if depth.shape != self.solver.worn_depth.shape:
+            raise ValueError(
+                f"depth has shape {depth.shape}: one value per surface node {self.solver.worn_depth.shape}"
+            )
+        self.solver.worn_depth = self.solver.worn_depth + depth
+
     def plastic_work(self, since: SolidState) -> float:
         """Plastic work (J, whole plate) dissipated from the state ``since`` to the current state."""
         return solid_plastic_work(self.solver, since, self.state)
@@ -181,7 +204,21 @@ class SolidPlate:
         self._virgin = False
 
     def to_meshio(self) -> meshio.Mesh:
-        """The plate after the last committed impact (:meth:`fem.solid.indentation.SolidIndentation.to_meshio`)."""
+        """The plate after the last committed impact (:meth:`fem.solid.indentation.SolidIndentation.to_meshio`), its
+        surface lowered by the wear: point data ``wear_depth`` (m, the surface vertices' worn depth, 0 inside) and
+        ``surface`` (1 on the surface vertices, 0 inside)."""
         if self.last is None:
             raise ValueError("the plate has no committed impact yet: nothing to write")
-        return self.last.to_meshio()
+        mesh = self.last.to_meshio()
+        d = self.solver.disc
+        half = d.mesh.p.shape[1]  # the half block's vertices, then their mirror images
+        vertices = d.surface_nodes < half  # the surface nodes that are vertices (the first nodes of the mesh)
+        worn = np.zeros(half)
+        worn[d.surface_nodes[vertices]] = self.solver.worn_depth[vertices]
+        surface = np.zeros(half)
+        surface[d.surface_nodes[vertices]] = 1.0
+        worn, surface = np.r_[worn, worn], np.r_[surface, surface]
+        points = np.array(mesh.points, float)
+        points[:, 2] -= worn
+        point_data = {**mesh.point_data, "wear_depth": worn, "surface": surface}
+        return meshio.Mesh(points, mesh.cells, point_data=point_data, cell_data=mesh.cell_data)

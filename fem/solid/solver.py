@@ -105,6 +105,9 @@ class SolidSolver:
         nel, nq = d.weight.shape
         self._zero_plastic = np.zeros((nel, nq, 6))
         self._zero_alpha = np.zeros((nel, nq))
+        #: depth (m, ≥ 0) worn off each surface node: the contact gap is measured to the worn surface (the mesh keeps
+        #: its reference surface: nm of wear against µm elements)
+        self.worn_depth = np.zeros(d.surface_nodes.size)
 
     # -- the contact geometry and the surface fields
     def initial_state(self) -> SolidState:
@@ -123,10 +126,12 @@ class SolidSolver:
         )
 
     def obstacle(self, overlap: float, centre: float) -> np.ndarray:
-        """Largest u_z (m) of each surface node with the sphere at ``overlap`` and axis x = ``centre`` (m)."""
+        """Largest u_z (m) of each surface node with the sphere at ``overlap`` and axis x = ``centre`` (m): the
+        sphere's surface less the node's height, which wear lowered by :attr:`worn_depth`."""
         xy = self.disc.surface_xy
         rho = np.hypot(xy[:, 0] - centre, xy[:, 1])
-        return sphere_surface(rho, overlap, self.radius) - self.disc.nodes[2, self.disc.surface_nodes]
+        height = self.disc.nodes[2, self.disc.surface_nodes] - self.worn_depth
+        return sphere_surface(rho, overlap, self.radius) - height
 
     def surface_forces(self, state: SolidState) -> tuple[np.ndarray, np.ndarray]:
         """The ball's forces on the surface nodes (N): normal (positive pressing) and tangential (x, y)."""
@@ -394,8 +399,11 @@ class SolidSolver:
             u0 = state.u + factor * (state.u - previous.u)
         contact = state.contact | (obstacle - u0[self.uz] <= self.gap_tol)
         if state.overlap == 0.0 and not state.contact.any():
+            # Hertz's contact radius of the approach from the surface the sphere first touches (a worn one lies
+            # below the plane the overlap counts from)
+            worn = float(np.min(self.obstacle(0.0, centre))) if self.worn_depth.any() else 0.0
             rho = np.hypot(self.disc.surface_xy[:, 0] - centre, self.disc.surface_xy[:, 1])
-            contact = rho < np.sqrt(self.radius * max(overlap, 0.0))
+            contact = rho < np.sqrt(self.radius * max(overlap - worn, 0.0))
         last_step = 0.0 if previous is None else state.slide - previous.slide
         return u0, contact, self.surface.stick_guess(state, target, contact, mu, last_step), state.direction
 

@@ -39,7 +39,7 @@ SAND_ON_STEEL = {
     "ball": {"radius": 150e-6, "E": 94e9, "nu": 0.17, "density": 2650.0, "name": "silica sand"},
     "plate": {"E": 200e9, "nu": 0.3, "density": 7850.0, "yield_strength": 350e6, "name": "carbon steel"},
     "impact": {"speed": 20.0, "friction": 0.3, "normal_model": "thornton"},
-    "wear": {"pressure": "thornton"},
+    "wear": {"pressure": "thornton", "speed": "sliding"},
     "fem": {"coupling": "none"},
 }
 
@@ -210,7 +210,7 @@ JOBS: dict[str, Job] = {
             "erode a plate patch by a stream of particles (surface feedback); mass loss and erosion rate vs time or "
             "angle",
             "wear.app.commands.erode",
-            {**KHARAZ_2001, "wear": {"pressure": "hertz"}},
+            {**KHARAZ_2001, "wear": {"pressure": "hertz", "speed": "sliding"}},
             stages=(
                 Stage(
                     "erode",

@@ -23,7 +23,8 @@ from contact.impact import TANGENTIAL_MODELS as ENGINE_TANGENTIAL_MODELS
 from wear.case.schema import Table, key
 from wear.law import WearLaw
 from wear.laws import CUTTING_LAWS, LAWS
-from wear.pressure import PRESSURE_SOURCES, SPEED_MODELS
+from wear.pressure import PRESSURE_SOURCES
+from wear.slip import SPEED_MODELS
 
 __all__ = [
     "BallSpec",
@@ -166,7 +167,9 @@ class WearSpec(Table):
     alpha: float = key(float, 1.0, "pressure exponent of Eq. 15", low=0.0, high=4.0)
     beta: float = key(float, 0.3, "sliding-speed exponent of Eq. 15", low=0.0, high=4.0)
     pressure: str = key(str, "fe", "contact pressure source", choices=PRESSURE_SOURCES)
-    speed: str = key(str, "sliding", "sliding speed of the contact points", choices=SPEED_MODELS)
+    speed: str = key(
+        str, "local", "sliding speed: the FE surface's local slip, or the contact point's", choices=SPEED_MODELS
+    )
     points_across: int = key(int, 64, "wear grid points across the largest contact diameter", low=40, high=2000)
     cutting: str = key(str, "local", "the cutting law of the combined law", choices=CUTTING_LAWS)
     cutting_fraction: float = key(
@@ -207,6 +210,12 @@ class WearSpec(Table):
 
     def check(self) -> None:
         self.wear_law()
+        if self.speed == "local" and self.pressure != "fe":
+            raise ValueError(
+                f"wear.speed='local' is the FE plate surface's slip, read with the plate's pressure: it needs "
+                f"wear.pressure='fe' (got {self.pressure!r}); with a closed-form pressure set wear.speed='sliding' "
+                "(the impact's contact-point slip, the paper's) or 'kinematic'"
+            )
 
     def check_deformation_factor(self, fitted: bool) -> None:
         """A one-line ``ValueError`` if the law needs Bitter's ε and the case gives none, unless a calibration

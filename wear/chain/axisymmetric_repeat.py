@@ -144,7 +144,7 @@ def impact_on_plate(
         coupled = fem.couple_elastic(*args, yield_tolerance)
         if coupled is None:
             return None
-    wm = impact_wear(case, coupled.impact, coupled.pressure_table, coupled.plastic_work)[1]
+    wm = impact_wear(case, coupled.impact, coupled.pressure_table, coupled.plastic_work, coupled.radial_table)[1]
     # the ball flies d0·V_t/V_n along x before it touches the dented surface: same spot, shifted first contact
     v_n, v_t = speed_components(case.impact.speed, case.impact.angle)
     wm = replace(wm, x=wm.x + coupled.first_contact * v_t / v_n)

@@ -13,10 +13,10 @@ from contact import ImpactResult
 from fem import CoupledImpact, IndentationResult, PlateCycle, worst_regime
 from fem.solid_coupling import SolidCoupledImpact
 from wear.case import Case
-from wear.chain.plate import case_mesh, check_impact_overlap, wear_constants
+from wear.chain.plate import case_mesh, check_impact_overlap, plate_sliding_speed, wear_constants
 from wear.integrate import WearMap, axisymmetric_wear_depth
 from wear.laws import ImpactWear, wear_of_impact
-from wear.pressure import PressureHistory, pressure_history, sliding_speed
+from wear.pressure import PressureHistory, pressure_history
 from wear.surface import DeformedSurface
 
 __all__ = ["AxisymmetricRun", "NoPlateRun", "Wear", "impact_wear", "one_way"]
@@ -25,10 +25,13 @@ __all__ = ["AxisymmetricRun", "NoPlateRun", "Wear", "impact_wear", "one_way"]
 Wear = tuple[PressureHistory, WearMap, ImpactWear]
 
 
-def impact_wear(case: Case, impact: ImpactResult, fe_table=None, plate_work: float | None = None) -> Wear:
+def impact_wear(
+    case: Case, impact: ImpactResult, fe_table=None, plate_work: float | None = None, radial_table=None
+) -> Wear:
     """Stage ``wear``: the pressure history p(r, t) of ``impact`` (``case.wear.pressure``; ``fe_table`` the FE
-    (time s, r m, pressure Pa) table where it is "fe"), the wear map (m) and the worn volumes of the case's wear law
-    (:func:`wear.laws.wear_of_impact`; ``plate_work`` the FE plate's plastic dissipation, J)."""
+    (time s, r m, pressure Pa) table where it is "fe"), the sliding speed (``case.wear.speed``; ``radial_table`` the
+    FE surface's (time s, r m, u_r m) where it is "local"), the wear map (m) and the worn volumes of the case's wear
+    law (:func:`wear.laws.wear_of_impact`; ``plate_work`` the FE plate's plastic dissipation, J)."""
     w = case.wear
     ph = pressure_history(impact, w.pressure, fe=fe_table, limiting_pressure=case.impact.limiting_pressure)
     wm, worn = wear_of_impact(
@@ -37,7 +40,7 @@ def impact_wear(case: Case, impact: ImpactResult, fe_table=None, plate_work: flo
         w.wear_law(),
         impact,
         ph,
-        sliding_speed(impact, w.speed),
+        plate_sliding_speed(case, impact, radial_table),
         density=case.plate.material().density,
         points_across=w.points_across,
         plate_work=plate_work,
@@ -116,12 +119,14 @@ class NoPlateRun:
 class AxisymmetricRun:
     """The axisymmetric FE plate: ``fe`` its cycle (two-way, :class:`fem.PlateCycle`) or its indentation along the
     impact (one-way, :class:`fem.IndentationResult`), ``coupled`` the coupled impact (two-way, else None),
-    ``fe_table`` its (time s, r m, pressure Pa) table on the impact's time axis."""
+    ``fe_table`` its (time s, r m, pressure Pa) and ``radial_table`` its (time s, r m, u_r m) table on the impact's
+    time axis."""
 
     impact: ImpactResult
     fe: PlateCycle | IndentationResult
     coupled: CoupledImpact | None
     fe_table: tuple[np.ndarray, np.ndarray, np.ndarray]
+    radial_table: tuple[np.ndarray, np.ndarray, np.ndarray]
     model: str | None = "axisymmetric"
     solid: SolidCoupledImpact | None = None
 
@@ -131,7 +136,7 @@ class AxisymmetricRun:
 
     def wear(self, case: Case) -> Wear:
         work = None if self.coupled is None else self.coupled.plastic_work
-        return impact_wear(case, self.impact, self.fe_table, work)
+        return impact_wear(case, self.impact, self.fe_table, work, self.radial_table)
 
     def surface(self, wm: WearMap) -> DeformedSurface:
         return _flat_surface(self.impact, wm, self.fe.surface_r, self.fe.residual_depth)
@@ -194,7 +199,7 @@ class AxisymmetricRun:
         peak = np.interp(undeformed_r, fe.surface_r[order], np.max(fe.pressure, axis=0)[order], right=0.0)
         point_data["max_pressure"] = np.where(on_surface, peak, 0.0)
         if np.ptp(np.asarray(self.impact.history.contact_x, float)) == 0.0:
-            speed = sliding_speed(self.impact, case.wear.speed)
+            speed = plate_sliding_speed(case, self.impact, self.radial_table)
             h = axisymmetric_wear_depth(pressure, speed, case.wear.wear_law(), undeformed_r)
             wear = np.where(on_surface & (undeformed_r >= 0), h, 0.0)
             pts[:, 1] -= wear

@@ -22,11 +22,12 @@ from contact.theory import sphere_mass
 from wear.case import Case
 from wear.case.budget import check_budget
 from wear.chain.calibration_data import CalibrationData
-from wear.chain.plate import case_plate, coupling_settings, impact_on_law, wear_constants
+from wear.chain.plate import case_plate, coupling_settings, impact_on_law, plate_sliding_speed, wear_constants
 from wear.chain.single import estimate_arguments, estimate_impact
 from wear.law import WearLaw
 from wear.laws import impact_wear, local_volume, pressed_area
-from wear.pressure import PressureHistory, SlidingSpeed, pressure_history, sliding_speed
+from wear.pressure import PressureHistory, pressure_history
+from wear.slip import SlidingSpeed
 
 __all__ = ["ForwardModel", "BYTES_PER_ROW", "SECONDS_PER_ROW", "check_rows", "fe_coupled"]
 
@@ -96,11 +97,12 @@ class ForwardModel:
         cases = [_row_case(case, data, i) for i in range(data.angle.size)]
         impacts = self._coupled(cases) if coupled else self._batched(cases)
         rows = []
-        for c, (impact, table, work) in zip(cases, impacts, strict=True):
+        for c, (impact, tables, work) in zip(cases, impacts, strict=True):
             ph = sp = None
             if uses_local:
+                table, radial = tables or (None, None)
                 ph = pressure_history(impact, c.wear.pressure, fe=table, limiting_pressure=c.impact.limiting_pressure)
-                sp = sliding_speed(impact, c.wear.speed)
+                sp = plate_sliding_speed(c, impact, radial)
             density = c.plate.material().density
             per_volume = {
                 "volume_per_impact_m3": 1.0,
@@ -136,7 +138,7 @@ class ForwardModel:
             estimate = estimate_impact(c)
             plate = case_plate(c, (1.0 + c.fem.overshoot) * estimate.max_overlap)
             coupled = fem.couple(plate, impact_on_law(c), estimate.max_overlap, coupling_settings(c))
-            out.append((coupled.impact, coupled.pressure_table, coupled.plastic_work))
+            out.append((coupled.impact, (coupled.pressure_table, coupled.radial_table), coupled.plastic_work))
         return out
 
     def predict(self, values: dict[str, float]) -> np.ndarray:

@@ -1,5 +1,6 @@
 """The FE plate of a case: its mesh, the :class:`fem.Plate`, the coupling's settings, the impact run on a force
-law and the wear law's constants (SI units). Every chain that couples an impact to the plate builds them here."""
+law, the sliding speed on its surface and the wear law's constants (SI units). Every chain that couples an impact
+to the plate builds them here."""
 
 from __future__ import annotations
 
@@ -11,8 +12,17 @@ import fem
 from contact import ImpactResult, TabulatedLaw, simulate_impact
 from fem.axisymmetric.mesh import DEFAULT_PARAMETERS
 from wear.case import Case
+from wear.slip import RadialSlip, SlidingSpeed, sliding_speed
 
-__all__ = ["case_mesh", "case_plate", "check_impact_overlap", "coupling_settings", "impact_on_law", "wear_constants"]
+__all__ = [
+    "case_mesh",
+    "case_plate",
+    "check_impact_overlap",
+    "coupling_settings",
+    "impact_on_law",
+    "plate_sliding_speed",
+    "wear_constants",
+]
 
 #: Hertz's maximum overlap grows as the normal speed to the power 4/5 (Johnson 1985, Eq. 11.24); a yielding plate's
 #: grows faster, so the speed scaled by this power's inverse is one the FE plate can take.
@@ -95,3 +105,10 @@ def impact_on_law(case: Case) -> Callable[[TabulatedLaw], ImpactResult]:
 def wear_constants(case: Case) -> dict[str, float | str | None]:
     """The constants of the case's wear law (:mod:`wear.laws`): the ``[wear]`` table and the plate's hardness."""
     return {**case.wear.values(), "hardness": case.plate.hardness}
+
+
+def plate_sliding_speed(case: Case, impact: ImpactResult, radial_table=None) -> SlidingSpeed:
+    """The sliding speed of ``case.wear.speed`` along ``impact``; the local slip with the FE surface's
+    ``radial_table`` (time s, r m, u_r m)."""
+    radial = None if radial_table is None or case.wear.speed != "local" else RadialSlip(*radial_table)
+    return sliding_speed(impact, case.wear.speed, radial)

@@ -110,7 +110,7 @@ def _axisymmetric(case: Case, estimate: ImpactResult, timed: Timed) -> PlateRun:
         plate = timed("fem", case_plate, case, (1.0 + case.fem.overshoot) * estimate.max_overlap)
         settings = coupling_settings(case)
         coupled = timed("coupling", fem.couple, plate, impact_on_law(case), estimate.max_overlap, settings)
-        return AxisymmetricRun(coupled.impact, coupled.cycle, coupled, coupled.pressure_table)
+        return AxisymmetricRun(coupled.impact, coupled.cycle, coupled, coupled.pressure_table, coupled.radial_table)
     if mode == "one-way":
         fe = timed("fem", one_way, case, estimate)
         timed("coupling", lambda: None)
@@ -119,8 +119,10 @@ def _axisymmetric(case: Case, estimate: ImpactResult, timed: Timed) -> PlateRun:
         # a plastic rebound separates at an overlap above 0: the plate's steps below it (its recovery once the ball
         # has left, for the residual dent) all sit at the separation time and carry no impact pressure
         during = np.r_[True, np.diff(time) > 0.0]
-        table = (time[during], np.asarray(fe.surface_r, float), rows[during])
-        return AxisymmetricRun(estimate, fe, None, table)
+        r = np.asarray(fe.surface_r, float)
+        table = (time[during], r, rows[during])
+        radial = (time[during], r, np.asarray(fe.radial_displacement, float)[during])
+        return AxisymmetricRun(estimate, fe, None, table, radial)
     return NoPlateRun(estimate)
 
 

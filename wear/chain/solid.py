@@ -25,7 +25,8 @@ from wear.case import Case
 from wear.chain.plate import impact_on_law, wear_constants
 from wear.integrate import WearMap, wear_map
 from wear.laws import ImpactWear, impact_wear, wear_of_impact
-from wear.pressure import PressureHistory, fe_pressure_history, sliding_speed
+from wear.pressure import PressureHistory, fe_pressure_history
+from wear.slip import sliding_speed
 from wear.solid_wear import on_half_surface, solid_dent_depth, solid_grid, solid_wear_depth
 from wear.surface import DeformedSurface
 
@@ -127,17 +128,20 @@ def solid_wear(case: Case, coupled: SolidCoupledImpact) -> tuple[PressureHistory
     laid out by the across-track pressure profile. Returns (pressure history, wear map, worn volumes)."""
     w, impact = case.wear, coupled.impact
     ph = _across_profile(coupled)
-    speed = sliding_speed(impact, w.speed)
+    # the local slip is the plate's own, vertex by vertex (:mod:`wear.solid_wear`); the contact-point slips are the
+    # impact's
+    speed = None if w.speed == "local" else sliding_speed(impact, w.speed)
     constants = wear_constants(case)
     density = case.plate.material().density
     if w.law != "local":
+        contact_point = speed or sliding_speed(impact, "sliding")
         wm, worn = wear_of_impact(
-            w.law, constants, w.wear_law(), impact, ph, speed, density=density, points_across=w.points_across
+            w.law, constants, w.wear_law(), impact, ph, contact_point, density=density, points_across=w.points_across
         )
         return ph, wm, worn
     field = coupled.field
     x, y = solid_grid(field, w.points_across)
-    depth = solid_wear_depth(field, speed, w.wear_law(), x, y)
+    depth = solid_wear_depth(field, speed, w.wear_law(), x, y, float(impact.history.t[0]))
     wm = wear_map(x, y, depth, density)
     return ph, wm, impact_wear("local", constants, impact, local=wm.volume_m3)
 

@@ -29,10 +29,11 @@ plate, so ``repeat.surface_fraction``, ``max_plastic_impacts``, ``elastic_after_
 are refused at other than their defaults (:func:`check_solid_repeat`); shakedown (Δᾱ below
 ``repeat.shakedown_tolerance`` × Y/E) is reported, not used.
 
-**Wear does not move the 3-D surface** (``repeat.geometry_update`` must be false): the wear of each impact
-(:func:`wear.chain.solid.solid_wear`, the 3-D pressure and slip fields) is accumulated on a 2-D map beside the plate,
-and ``surface_depth`` reports the dent plus that accumulated wear; the plate's contact sees the dent only (the wear
-is nm per impact against a dent of µm).
+**Wear moves the 3-D surface** (``repeat.geometry_update``, as on the axisymmetric plate): the wear of each impact
+(:func:`wear.chain.solid.solid_wear`, the 3-D pressure and slip fields, on a 2-D map) lowers the plate's surface at
+its surface nodes (:meth:`fem.solid.plate.SolidPlate.move_surface`, the map read bilinearly at the nodes) before the
+next impact, whose contact gap is measured to the dented and worn surface; ``surface_depth`` reports the dent plus
+the accumulated wear. With ``repeat.geometry_update = false`` the wear is accumulated beside the plate only.
 """
 
 from __future__ import annotations
@@ -69,19 +70,14 @@ MAX_SOLID_IMPACTS = 20
 
 def check_solid_repeat(case: Case) -> None:
     """One-line ``ValueError`` for a repeat the 3-D plate cannot run: the 3-D plate's checks
-    (:func:`wear.chain.solid.check_solid_case`), ``repeat.geometry_update`` true, or a cycle-jump key at other than its
-    default (module docstring)."""
+    (:func:`wear.chain.solid.check_solid_case`), too many impacts, or a cycle-jump key at other than its default
+    (module docstring)."""
     check_solid_case(case)
     spec, default = case.repeat, RepeatSpec()
     if spec.impacts > MAX_SOLID_IMPACTS:
         raise ValueError(
             f"repeat.impacts={spec.impacts}: with fem.model='3d' every impact is a 3-D coupling of minutes on 2 cores "
             f"(docs/repeat.md); at most {MAX_SOLID_IMPACTS} impacts"
-        )
-    if spec.geometry_update:
-        raise ValueError(
-            "repeat.geometry_update=true: with fem.model='3d' the wear does not move the 3-D plate's "
-            "surface (it is accumulated beside it); set repeat.geometry_update=false"
         )
     for key in _AXISYMMETRIC_ONLY:
         value, kept = getattr(spec, key), getattr(default, key)
@@ -155,6 +151,9 @@ def solid_repeat(
         if n < case.repeat.impacts:
             start = _next_start(on_law, coupled)
         wm = solid_wear(case, coupled)[1]
+        if case.repeat.geometry_update:
+            xy = plate.surface_xy
+            plate.move_surface(wm.depth_at(xy[:, 0], xy[:, 1]))
         if acc is None:
             acc = WearAccumulator(wm)
             axis_x = float(coupled.solid.centre[coupled.path.peak])
@@ -201,10 +200,8 @@ def solid_repeat(
             on_computed(n, plate)
         if progress is not None:
             progress(n, case.repeat.impacts)
-    notes = [
-        "fem.model='3d': every impact computed on the 3-D plate (no cycle jump); the wear is accumulated beside "
-        "the plate, its surface is not moved"
-    ]
+    moved = "moves the plate's surface" if case.repeat.geometry_update else "is accumulated beside the plate"
+    notes = [f"fem.model='3d': every impact computed on the 3-D plate (no cycle jump); the wear {moved}"]
     if shakedown is None:
         notes.append(f"no impact without new plastic strain (tolerance Δᾱ <= {tolerance:.3g})")
     return RepeatResult(

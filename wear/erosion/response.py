@@ -32,7 +32,8 @@ from contact.checks import check_array, check_choice, check_number
 from contact.theory import sphere_mass
 from wear.law import WearLaw
 from wear.laws import LAWS, wear_of_impact
-from wear.pressure import pressure_history, sliding_speed
+from wear.pressure import pressure_history
+from wear.slip import sliding_speed
 
 __all__ = ["Footprint", "ImpactResponse"]
 

@@ -118,13 +118,20 @@ def _check_budget(case: Case, angles: list[float]) -> None:
 def impact_response(case: Case) -> ImpactResponse:
     """The per-impact model of the case's particles (:class:`wear.erosion.ImpactResponse`): ``[ball]``, ``[plate]``,
     the contact models of ``[impact]`` and the wear law of ``[wear]`` (its pressure source ``"fe"`` replaced, with a
-    warning, by the closed form of ``impact.normal_model``: the batched impacts run no FE plate)."""
-    pressure = case.wear.pressure
+    warning, by the closed form of ``impact.normal_model``, and the FE surface's local slip by the contact point's:
+    the batched impacts run no FE plate)."""
+    pressure, speed = case.wear.pressure, case.wear.speed
     if pressure == "fe":  # e.g. a run case given to erode: it holds everything the stream needs but this
         pressure = "thornton" if case.impact.normal_model == "thornton" else "hertz"
+        speed = "sliding" if speed == "local" else speed
         warnings.warn(
             f"wear.pressure='fe' needs the FE plate, which the stream's batched impacts do not run: the "
-            f"erosion uses {pressure!r}, the closed form of impact.normal_model",
+            f"erosion uses {pressure!r}, the closed form of impact.normal_model"
+            + (
+                ", and the contact-point slip (wear.speed='sliding') for the FE surface's"
+                if speed != case.wear.speed
+                else ""
+            ),
             stacklevel=2,
         )
     ball = case.ball.material()
@@ -138,7 +145,7 @@ def impact_response(case: Case) -> ImpactResponse:
         friction=imp.friction,
         law=w.wear_law(),
         pressure=pressure,
-        speed_model=w.speed,
+        speed_model=speed,
         restitution=imp.restitution,
         normal_model=imp.normal_model,
         tangential_model=imp.tangential_model,

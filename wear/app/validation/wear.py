@@ -30,7 +30,7 @@ from wear.case import Case
 from wear.chain.restitution import restitution_sweep
 from wear.chain.single import run
 from wear.erosion import ImpactResponse, Stream, build_response_table, erode, table_axes
-from wear.pressure import SlidingSpeed
+from wear.slip import SlidingSpeed
 
 BALL = Material(E=380e9, nu=0.23, density=4000.0, name="alumina")
 PLATE = Material(E=70e9, nu=0.25, density=2700.0, yield_strength=100e6, name="aluminium")
