@@ -40,7 +40,11 @@ WORK = {
     "erode": ("wear.erosion.run.build_response_table",),
     "indent": ("wear.app.commands.indent.indent_case",),
     "impact": ("wear.app.commands.impact.simulate_impact",),
-    "calibrate": ("wear.chain.forward_model.ForwardModel._batched", "wear.chain.forward_model.ForwardModel._coupled"),
+    "calibrate": (
+        "wear.chain.forward_model.ForwardModel._batched",
+        "wear.chain.forward_model.ForwardModel._coupled",
+        "wear.chain.forward_model.ForwardModel._closed_form",
+    ),
     "sweep": ("wear.app.commands.sweep.run_sweep",),
     "reproduce": ("wear.app.commands.reproduce.reproduce",),
     "validate": ("wear.app.commands.validate.run_validation",),

@@ -96,15 +96,17 @@ def test_the_triangle_normal_is_within_a_degree_of_the_face_normal(bend):
 
 
 def test_the_face_normal_misses_q_by_tens_of_percent_on_single_faces(bend):
-    """What the face normal gives instead (README's check): 6 grazing hits leave the wall, the total
+    """What the face normal gives instead (README's check): 5 grazing hits leave the wall (a sixth, 1.4e-4 deg past
+    90, is round-off of a grazing hit: taken at 90 deg, where Finnie's volume is 0), the total
     moves by 4.1e-4, the median face by 0.2 % (bend) and 0.8 % (wallOut), the worst faces by 20 % (bend) and 55 %
     (wallOut). Measured here: worst 0.196 (bend), 0.546 (wallOut), 1.0 on wallIn (a face whose hits all leave)."""
     wall, records, q_openfoam = bend
     with pytest.raises(ValueError, match=r"wallIn\.post\.gz, row \d+, columns U0 U1 U2: .* points out of the wall"):
         _volumes(bend, "face")
     hits, _, q = _volumes(bend, "face", skip_bad=True)
-    assert hits.skipped == {"leaving_wall": 6}
-    assert np.all(hits.angle[~hits.kept] < 90.5)  # grazing hits (3 on wallIn, 3 on wallOut)
+    assert hits.skipped == {"leaving_wall": 5}
+    assert np.all(hits.angle[~hits.kept] < 90.5)  # grazing hits
+    assert np.count_nonzero(hits.kept & (hits.angle == 90.0)) == 1  # 90.00014 deg: round-off, taken as 90
     hit = q_openfoam > 0
     relative = np.abs(q[hit] / q_openfoam[hit] - 1.0)
     patch = wall.patch[hit]

@@ -50,6 +50,8 @@ from wear.pressure import PressureHistory
 from wear.slip import SlidingSpeed
 
 __all__ = [
+    "CLOSED_FORM_LAWS",
+    "closed_form_volume",
     "LAWS",
     "LAW_CONSTANTS",
     "CUTTING_LAWS",
@@ -82,6 +84,9 @@ LAWS = {
     "dnv": "DNV-RP-O501 (2015) erosion ratio correlation",
 }
 CUTTING_LAWS = ("local", "finnie")
+#: The laws whose volume is a formula of the particle's mass, speed and angle and the plate's properties: they need
+#: no simulated impact (:func:`closed_form_volume`).
+CLOSED_FORM_LAWS = ("finnie", "oka", "dnv")
 #: The constants of each law (keys of the case's ``[wear]`` table; Finnie's and Oka's also read the plate's hardness;
 #: ``combined`` has those of its cutting law and of ``deformation``).
 LAW_CONSTANTS = {
@@ -291,7 +296,6 @@ def impact_wear(
     uses it; ``plate_work``: the FE plate's plastic dissipation (J), if the plate is the FE."""
     if law not in LAWS:
         raise ValueError(f"wear.law={law!r} is not a valid choice: must be one of {', '.join(map(repr, LAWS))}")
-    mass = sphere_mass(impact.radius, impact.ball.density)
     speed, angle = impact.speed, impact.angle
 
     def cutting(name: str) -> float:
@@ -299,8 +303,8 @@ def impact_wear(
             if local is None:
                 raise ValueError("the local law needs the impact's Eq. 15 volume (wear.local_volume)")
             return local
-        c, k, psi = _need(constants, "finnie", "cutting_fraction", "force_ratio", "depth_ratio")
-        return float(finnie_volume(mass, speed, angle, flow_pressure_of(constants, impact.plate), k, psi, c))
+        ball, plate = impact.ball, impact.plate
+        return float(closed_form_volume("finnie", constants, impact.radius, ball.density, plate, speed, angle))
 
     def deformation() -> float:
         (epsilon,) = _need(constants, law, "deformation_factor")
@@ -317,14 +321,35 @@ def impact_wear(
         return ImpactWear(law, {"deformation": deformation()})
     if law == "combined":
         return ImpactWear(law, {"cutting": cutting(str(constants.get("cutting"))), "deformation": deformation()})
-    density = impact.plate.density
+    volume = closed_form_volume(law, constants, impact.radius, impact.ball.density, impact.plate, speed, angle)
+    return ImpactWear(law, {law: float(volume)})
+
+
+def closed_form_volume(
+    law: str,
+    constants: Mapping[str, float | str | None],
+    radius: float,
+    ball_density: float,
+    plate: Material,
+    speed,
+    angle,
+) -> np.ndarray:
+    """The worn volume (m³) of one impact of a ball of ``radius`` (m) and ``ball_density`` (kg/m³) on ``plate`` at
+    each ``speed`` (m/s) and ``angle`` (deg from the normal) by a law of :data:`CLOSED_FORM_LAWS` with ``constants``
+    (as :func:`impact_wear`): a formula of the particle's kinematics alone, so that no impact need be simulated."""
+    mass = sphere_mass(radius, ball_density)
+    if law == "finnie":
+        c, k, psi = _need(constants, "finnie", "cutting_fraction", "force_ratio", "depth_ratio")
+        return finnie_volume(mass, speed, angle, flow_pressure_of(constants, plate), k, psi, c)
     if law == "oka":
-        e90, k2 = oka_constants(constants, impact.plate)
-        ratio = oka_erosion_ratio(speed, angle, flow_pressure_of(constants, impact.plate), 2.0 * impact.radius, e90, k2)
-    else:
+        e90, k2 = oka_constants(constants, plate)
+        ratio = oka_erosion_ratio(speed, angle, flow_pressure_of(constants, plate), 2.0 * radius, e90, k2)
+    elif law == "dnv":
         K, n = _need(constants, law, "dnv_K", "dnv_n")
         ratio = dnv_erosion_ratio(speed, angle, K, n)
-    return ImpactWear(law, {law: float(ratio) * mass / density})
+    else:
+        raise ValueError(f"wear.law={law!r} has no closed form: one of {', '.join(map(repr, CLOSED_FORM_LAWS))} has")
+    return ratio * mass / plate.density
 
 
 #: The unit-K local laws whose maps give each mechanism's footprint: cutting follows the sliding (α = β = 1: where

@@ -37,6 +37,9 @@ class _Parser(argparse.ArgumentParser):
     """argparse's parser with its errors in one line (the option, its value and what is wrong, then where the help
     is), as every other bad input is reported, instead of the usage block and a second line."""
 
+    #: The commands' parsers by name (set by :func:`build_parser`), for :func:`parse_command_line`'s second pass.
+    commands: dict[str, argparse.ArgumentParser]
+
     def error(self, message: str) -> NoReturn:
         self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
 
@@ -53,10 +56,12 @@ def build_parser() -> argparse.ArgumentParser:
         ver = "unknown"
     parser.add_argument("--version", action="version", version=f"impactwear {ver}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    parser.commands = {}
     for name, (text, module) in commands().items():
         p = sub.add_parser(name, help=text, description=text)
         module.configure(p)
         p.set_defaults(_module=module)
+        parser.commands[name] = p
     return parser
 
 
@@ -79,9 +84,26 @@ def join_negative_values(argv: list[str]) -> list[str]:
     return out
 
 
+def parse_command_line(parser: argparse.ArgumentParser, argv: list[str]) -> tuple[argparse.Namespace, list[str]]:
+    """(the parsed arguments, those left unrecognised). A command with several optional positionals (``calibrate
+    DATA.csv [CASE.toml]``, ``wall RECORDS WALL [CASE.toml]``) loses a positional given after an option to argparse's
+    first pass, which fills every positional from the first run of them; such a command line is parsed again by the
+    command's parser with positionals and options intermixed (``parse_known_intermixed_args``), which the top-level
+    parser cannot do itself (its sub-commands are a positional of their own). A command line the first pass reads
+    whole is not parsed again."""
+    args, unknown = parser.parse_known_args(argv)
+    command = getattr(args, "command", None)
+    sub = getattr(parser, "commands", {}).get(command)
+    if not unknown or sub is None:
+        return args, unknown
+    again, unknown = sub.parse_known_intermixed_args(argv[argv.index(command) + 1 :])
+    again.command = command
+    return again, unknown
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
-    args, unknown = parser.parse_known_args(join_negative_values(sys.argv[1:] if argv is None else list(argv)))
+    args, unknown = parse_command_line(parser, join_negative_values(sys.argv[1:] if argv is None else list(argv)))
     if unknown:  # named in the command's own error line, not in the top-level parser's
         command = getattr(args, "command", None)
         prog = parser.prog if command is None else f"{parser.prog} {command}"

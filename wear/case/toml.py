@@ -105,7 +105,8 @@ def read_toml_text(path: str | os.PathLike, name: str) -> str:
     if not p.is_file():
         raise ValueError(f"{shown} is not a file")
     try:
-        text = p.read_text(encoding="utf-8")
+        # utf-8-sig: a byte-order mark (Notepad's and Excel's "UTF-8") is not part of the TOML, as for the CSV files
+        text = p.read_text(encoding="utf-8-sig")
     except UnicodeDecodeError:
         text = "\x00"
     except OSError as exc:

@@ -4,7 +4,9 @@ normal.
 
 The impacts do not depend on the wear law's constants, so they are computed once (``contact.simulate_impacts``,
 one batch per group of rows with the same case keys); each evaluation only re-evaluates the law: the Eq. 15 volume
-K ∫ v^β ∫ p^α dA dt on the stored pressure histories (:func:`wear.laws.local_volume`), or the closed forms. With
+K ∫ v^β ∫ p^α dA dt on the stored pressure histories (:func:`wear.laws.local_volume`), or the plastic work. A
+closed-form law (:data:`wear.laws.CLOSED_FORM_LAWS`: Finnie, Oka, DNV) needs no impact at all: its formula
+(:func:`wear.laws.closed_form_volume`) is evaluated on the speeds and angles of each group of rows. With
 ``fem.coupling = "two-way"`` and a law that uses the FE (the ``"fe"`` pressure, or the plastic work of the
 deformation laws) each row's coupled FE impact is computed once too (seconds per row).
 """
@@ -25,16 +27,31 @@ from wear.chain.calibration_data import CalibrationData
 from wear.chain.plate import case_plate, coupling_settings, impact_on_law, plate_sliding_speed, wear_constants
 from wear.chain.single import estimate_arguments, estimate_impact
 from wear.law import WearLaw
-from wear.laws import impact_wear, local_volume, pressed_area
+from wear.laws import CLOSED_FORM_LAWS, closed_form_volume, impact_wear, local_volume, pressed_area
 from wear.pressure import PressureHistory, pressure_history
 from wear.slip import SlidingSpeed
 
-__all__ = ["ForwardModel", "BYTES_PER_ROW", "SECONDS_PER_ROW", "check_rows", "fe_coupled"]
+__all__ = [
+    "ForwardModel",
+    "BYTES_PER_ROW",
+    "CLOSED_FORM_BYTES_PER_ROW",
+    "CLOSED_FORM_SECONDS_PER_ROW",
+    "SECONDS_PER_ROW",
+    "check_rows",
+    "closed_form",
+    "fe_coupled",
+]
 
 
 def _uses_local(case: Case) -> bool:
     """Whether the case's law evaluates Eq. 15 on the pressure histories."""
     return case.wear.law == "local" or (case.wear.law == "combined" and case.wear.cutting == "local")
+
+
+def closed_form(case: Case) -> bool:
+    """Whether the case's law is a formula of each row's speed, angle, particle and plate (:data:`CLOSED_FORM_LAWS`),
+    so that the forward model needs no impact."""
+    return case.wear.law in CLOSED_FORM_LAWS
 
 
 def fe_coupled(case: Case) -> bool:
@@ -45,23 +62,33 @@ def fe_coupled(case: Case) -> bool:
 
 
 #: Peak memory (B) of the forward model: base + per data row (its impact, pressure history and the fit's arrays).
-#: Measured with ``impactwear calibrate --law dnv`` (default case, erosion rates at 10-80 deg, 20-60 m/s): 0.73 GB
-#: at 1000 rows, 1.98 GB at 4000 (the issue's 200,000 rows were past 4 GB after 41 s).
+#: Measured with ``impactwear calibrate --law dnv`` when that law still ran every row's impact (default case, erosion
+#: rates at 10-80 deg, 20-60 m/s): 0.73 GB at 1000 rows, 1.98 GB at 4000 (200,000 rows were past 4 GB after 41 s).
 BYTES_PER_ROW = (3.1e8, 4.2e5)
 #: Wall time per data row (s), the same measurement: 54 s for 1000 rows, 221 s for 4000 (2 shared cores).
 SECONDS_PER_ROW = 0.056
+#: The same of a closed-form law (:func:`closed_form`: no impact, only the rows' arrays, the outputs and the figure),
+#: measured with ``impactwear calibrate --law dnv`` on the same kind of data: 216 MB and 5.7 s at 1000 rows, 218 MB
+#: and 6.3 s at 4000, 240 MB and 13.6 s at 40,000 (0.7 kB and 0.2 ms a row; about 3.5 s of it is the imports).
+#: Bounds taken 6 and 5 times larger.
+CLOSED_FORM_BYTES_PER_ROW = (3.1e8, 4.2e3)
+CLOSED_FORM_SECONDS_PER_ROW = 1e-3
 
 
-def check_rows(data: CalibrationData) -> None:
+def check_rows(data: CalibrationData, case: Case | None = None) -> None:
     """Refuse ``data`` with more rows than the forward model's memory (:data:`BYTES_PER_ROW`) or time
-    (:data:`SECONDS_PER_ROW`) budget allows (:mod:`wear.case.budget`), before any impact: one line naming the file,
-    its rows and the most rows that fit."""
+    (:data:`SECONDS_PER_ROW`) budget allows (:mod:`wear.case.budget`; those of a closed form for a ``case`` whose
+    law is one), before any impact: one line naming the file, its rows and the most rows that fit."""
     rows = data.angle.size
-    base, per_row = BYTES_PER_ROW
+    formula = case is not None and closed_form(case)
+    (base, per_row), seconds = (
+        (CLOSED_FORM_BYTES_PER_ROW, CLOSED_FORM_SECONDS_PER_ROW) if formula else (BYTES_PER_ROW, SECONDS_PER_ROW)
+    )
     context = f"data={data.source!r}: " if data.source else ""
-    said = {"what": "the impacts of the rows, computed once", "valid": (1, rows), "context": context}
+    what = "the law's formula on the rows" if formula else "the impacts of the rows, computed once"
+    said = {"what": what, "valid": (1, rows), "context": context}
     check_budget("rows", rows, lambda n: base + per_row * n, **said)
-    check_budget("rows", rows, lambda n: SECONDS_PER_ROW * n, memory=False, **said)
+    check_budget("rows", rows, lambda n: seconds * n, memory=False, **said)
 
 
 def _row_case(case: Case, data: CalibrationData, i: int) -> Case:
@@ -84,17 +111,36 @@ class _Row:
     to_quantity: float  # the measured quantity per m^3 worn
 
 
+@dataclass(frozen=True, eq=False)
+class _Group:
+    """Rows of a closed-form law that differ only in their speed and angle: their ``case`` (at speed 1, angle 0),
+    indices ``rows``, ``speed`` (m/s) and ``angle`` (deg), and the measured quantity per m^3 worn."""
+
+    case: Case
+    rows: np.ndarray
+    speed: np.ndarray
+    angle: np.ndarray
+    to_quantity: float
+
+
 class ForwardModel:
     """The impacts of every data row, computed once, and the law evaluated on them for any constants
     (:meth:`predict`: the measured quantity per row)."""
 
     def __init__(self, case: Case, data: CalibrationData) -> None:
         self.case, self.data = case, data
+        cases = [_row_case(case, data, i) for i in range(data.angle.size)]
+        self.constants = [wear_constants(c) for c in cases]
+        self._groups: list[_Group] = []
+        if closed_form(case):
+            # a formula of the particle's kinematics: no impact (they took 99 s and 1.9 GB for 4000 rows)
+            self.rows: list[_Row] = []
+            self._groups = self._closed_form(cases, data)
+            return
         uses_local = _uses_local(case)
         coupled = fe_coupled(case)
         if case.wear.pressure == "fe" and uses_local and not coupled:
             raise ValueError("wear.pressure='fe' needs the FE plate: set fem.coupling='two-way' (or another pressure)")
-        cases = [_row_case(case, data, i) for i in range(data.angle.size)]
         impacts = self._coupled(cases) if coupled else self._batched(cases)
         rows = []
         for c, (impact, tables, work) in zip(cases, impacts, strict=True):
@@ -111,8 +157,26 @@ class ForwardModel:
             }
             rows.append(_Row(impact, ph, sp, work, per_volume[data.quantity]))
         self.rows = rows
-        self.constants = [wear_constants(c) for c in cases]
         self._areas: list[tuple[float, np.ndarray | None]] = [(math.nan, None)] * len(rows)
+
+    @staticmethod
+    def _closed_form(cases: list[Case], data: CalibrationData) -> list[_Group]:
+        """The rows of a closed-form law grouped by all but their speed and angle (one evaluation of the formula on
+        the arrays of a group), with what turns a worn volume into the measured quantity."""
+        groups: dict[Case, list[int]] = {}
+        for i, c in enumerate(cases):
+            groups.setdefault(c.with_(impact={"speed": 1.0, "angle": 0.0}), []).append(i)
+        out = []
+        for key, idx in groups.items():
+            density = key.plate.material().density
+            per_volume = {
+                "volume_per_impact_m3": 1.0,
+                "mass_per_impact_kg": density,
+                "erosion_kg_per_kg": density / sphere_mass(key.ball.radius, key.ball.density),
+            }
+            rows = np.array(idx, dtype=int)
+            out.append(_Group(key, rows, data.speed[rows], data.angle[rows], per_volume[data.quantity]))
+        return out
 
     @staticmethod
     def _batched(cases: list[Case]) -> list[tuple[ImpactResult, None, None]]:
@@ -143,8 +207,16 @@ class ForwardModel:
 
     def predict(self, values: dict[str, float]) -> np.ndarray:
         """The measured quantity of every row for the law's constants with ``values`` replacing some."""
-        out = np.empty(len(self.rows))
         law = self.case.wear.law
+        if self._groups:
+            out = np.empty(self.data.angle.size)
+            for g in self._groups:
+                constants = {**self.constants[int(g.rows[0])], **values}  # the same for every row of the group
+                ball, plate = g.case.ball, g.case.plate.material()
+                worn = closed_form_volume(law, constants, ball.radius, ball.density, plate, g.speed, g.angle)
+                out[g.rows] = worn * g.to_quantity
+            return out
+        out = np.empty(len(self.rows))
         for i, (row, base) in enumerate(zip(self.rows, self.constants, strict=True)):
             constants = {**base, **values}
             local = None

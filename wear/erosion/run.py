@@ -10,12 +10,13 @@ angle on a common patch; both return :class:`ErosionRun` (no files: the command 
 from __future__ import annotations
 
 import math
+import re
 import time
 import warnings
 from dataclasses import dataclass
 
 from contact import simulate_impact
-from wear.case import JOBS, Case
+from wear.case import JOBS, TABLES, Case
 from wear.erosion.memory import check_patch_memory
 from wear.erosion.patch import erode
 from wear.erosion.response import ImpactResponse
@@ -170,6 +171,16 @@ def nominal_contact_radius(case: Case, angle: float | None = None) -> float:
     return float(simulate_impact(**case.impact_arguments(angle=theta), history=False).max_contact_radius)
 
 
+def _case_key_error(exc: ValueError) -> ValueError:
+    """``exc`` of :func:`wear.erosion.erode`, whose messages name its own arguments (``exposure_time=...``), with the
+    case key the user gave instead (``erosion.exposure_time=...``)."""
+    text = str(exc)
+    match = re.match(r"([a-z_]+)=", text)
+    if match and match.group(1) in TABLES["erosion"].keys():
+        return ValueError(f"erosion.{text}")
+    return exc
+
+
 def erode_case(
     case: Case, *, angle: float | None = None, patch_size: float | None = None, progress: bool = False
 ) -> ErosionRun:
@@ -190,16 +201,19 @@ def erode_case(
         description=f"ImpactResponse(pressure={response.pressure!r}, law: {response.law})",
     )
     t1 = time.perf_counter()
-    result = erode(
-        table,
-        stream,
-        grid=ero.grid,
-        patch_size=ero.patch_size if patch_size is None else patch_size,
-        seed=ero.seed,
-        frames=ero.frames,
-        samples=ero.samples,
-        progress=progress,
-    )
+    try:
+        result = erode(
+            table,
+            stream,
+            grid=ero.grid,
+            patch_size=ero.patch_size if patch_size is None else patch_size,
+            seed=ero.seed,
+            frames=ero.frames,
+            samples=ero.samples,
+            progress=progress,
+        )
+    except ValueError as exc:
+        raise _case_key_error(exc) from None
     t2 = time.perf_counter()
     seconds = {"table": t1 - t0, "erosion": t2 - t1, "impacts_per_s": result.n_impacts / max(t2 - t1, 1e-9)}
     return ErosionRun(case, result, seconds)

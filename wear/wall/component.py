@@ -36,8 +36,9 @@ from wear.wall.engine import WallSums, chunk_rows_for, erode_wall
 from wear.wall.foam import polymesh_folder, read_polymesh
 from wear.wall.law_keys import check_law_keys
 from wear.wall.laws import wall_law
-from wear.wall.mesh import Wall, concat_walls, read_surface
+from wear.wall.mesh import Wall, concat_walls, duplicate_faces, read_surface
 from wear.wall.sources import plan_chunks, record_files, record_format
+from wear.wall.trust import check_exposure, check_records_fit, note_inputs, note_results
 from wear.wall.worn import SECONDS_PER_YEAR, HotSpots, WallWear, hot_spots, remaining_life, wall_wear, worn_mesh
 
 __all__ = ["ComponentErosion", "SURFACE_SUFFIXES", "erode_component", "read_wall"]
@@ -51,7 +52,19 @@ def read_wall(path: str | Path, patches: Sequence[str] | None = None, flip: bool
     ``constant`` or its polyMesh folder (the wall patches, or ``patches``); or a folder of surface files (a wall split
     into parts: each file a patch, by name). ``flip`` reverses the surfaces' orientation
     (:mod:`wear.wall.mesh`)."""
-    p = Path(path)
+    wall = _read_wall(Path(path), patches, flip)
+    twice = duplicate_faces(wall)
+    if twice is not None:  # counted twice, they would double the area and halve the worn depth
+        f, g, n = twice
+        raise ValueError(
+            f"wall={str(path)!r}: face {f} (label {wall.labels[f]}) of patch {wall.patch_names[wall.patch[f]]} repeats "
+            f"face {g} (label {wall.labels[g]}) of patch {wall.patch_names[wall.patch[g]]} ({n} faces repeat another): "
+            "give each face of the wall once"
+        )
+    return wall
+
+
+def _read_wall(p: Path, patches: Sequence[str] | None, flip: bool) -> Wall:
     if not p.exists():
         raise ValueError(f"wall={str(p)!r}: no such file or folder")
     if p.is_dir():
@@ -228,14 +241,24 @@ def erode_component(
     ``progress``, ``skip_bad``, ``normal``, ``tolerance``: as :func:`wear.wall.engine.erode_wall`'s;
     ``chunk_rows``: records per chunk (default: the largest that fits the memory budget). A key of the case that
     the law does not read, at a value other than the default of ``impactwear wall``, is refused
-    (:func:`wear.wall.law_keys.check_law_keys`)."""
+    (:func:`wear.wall.law_keys.check_law_keys`), and so are records that do not lie on the wall as a CFD run's do
+    and an exposure too short for the rates, before any work (:mod:`wear.wall.trust`, which also warns of values
+    that look like other units)."""
     check_law_keys(case, default_case("wall"))
+    spec = case.wall
+    if spec.exposure is not None:
+        check_exposure(spec.exposure, "wall.exposure")
     paths = record_files(records)
     if chunk_rows is None:
         formats = {record_format(p) for p in paths}
         chunk_rows = min(chunk_rows_for(wall, workers, f) for f in formats)
     chunks = plan_chunks(paths, chunk_rows)
-    spec = case.wall
+    check_records_fit(chunks, wall, normal)  # before the law's table, which may take half a minute
+    thickness = np.full(len(wall), np.nan if spec.thickness is None else spec.thickness)
+    from_file = wall.thickness_m is not None and bool(np.isfinite(wall.thickness_m).any())
+    if wall.thickness_m is not None:
+        thickness = np.where(np.isfinite(wall.thickness_m), wall.thickness_m, thickness)
+    note_inputs(case, thickness, from_file)
     seconds: dict[str, float] = {}
     t0 = time.perf_counter()
     law = wall_law(case, progress)
@@ -262,11 +285,10 @@ def erode_component(
                 f"wall.exposure: the records span {max(exposure, 0.0):g} s (first hit {sums.time_first_s:g} s, last "
                 f"{sums.time_last_s:g} s), so they give no time to turn volumes into rates; give wall.exposure (s)"
             )
+    check_exposure(exposure, source)
     scale = spec.rate_scale()
     wear = wall_wear(wall, sums.volume_m3 * scale, exposure, case.plate.density)
-    thickness = np.full(len(wall), np.nan if spec.thickness is None else spec.thickness)
-    if wall.thickness_m is not None:
-        thickness = np.where(np.isfinite(wall.thickness_m), wall.thickness_m, thickness)
+    note_results(float(wear.mass_kg.sum()), float(sums.mass_kg.sum()) * scale, sums.records > 0, thickness)
     _note_worn_through(wear.depth_m(spec.service_time), thickness, spec.service_time)
     return ComponentErosion(
         case=case,

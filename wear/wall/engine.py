@@ -76,7 +76,8 @@ class WallSums:
     """Per-face sums of the records on a wall of f faces (see the module docstring): ``volume_m3`` W, ``mass_kg``
     M (particle mass delivered), ``records`` R (int), ``particles`` N, ``speed_sum_m_s`` S, ``angle_histogram``
     (f, b) H (particles) over the bins ``angle_edges_deg`` (b + 1,); ``skipped`` the records left out, by reason
-    (:class:`wear.wall.hits.Hits`), the particles on the wall by speed ``speed_histogram`` (c,) over the bins
+    (:class:`wear.wall.hits.Hits`; ``other_patches``: on patches of the mesh left out of the wall), the particles
+    on the wall by speed ``speed_histogram`` (c,) over the bins
     ``speed_edges_m_s`` (c + 1,), and of every record read: ``records_read``, ``particles_read``, ``mass_read_kg``
     and the first and last hit times ``time_first_s``, ``time_last_s`` (±inf: none read)."""
 
@@ -173,8 +174,9 @@ def chunk_sums(
         speed_sum_m_s=face_sum(n, hits, records.count * hits.speed),
         angle_histogram=histogram,
         angle_edges_deg=edges,
-        skipped=dict(hits.skipped),
-        records_read=len(records),
+        # the hits on patches left out of the wall were read too: counted apart, so that a note can say so
+        skipped={**hits.skipped, **({"other_patches": records.off_wall} if records.off_wall else {})},
+        records_read=len(records) + records.off_wall,
         particles_read=float(records.count.sum()),
         mass_read_kg=float(mass.sum()),
         speed_histogram=np.bincount(speed_bin, weights=records.count[kept], minlength=len(speed_edges) - 1),

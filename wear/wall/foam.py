@@ -85,6 +85,11 @@ def read_polymesh(path: str | Path, patches: Sequence[str] | None = None) -> Wal
             raise ValueError(f"{folder / 'boundary'} has no patch of type wall: name the wall patches")
     else:
         names = list(patches)
+        if not names:
+            raise ValueError("patches=[]: name at least one patch of the wall")
+        twice = next((name for name in names if names.count(name) > 1), None)
+        if twice is not None:  # its faces would be counted twice: twice the area, half the depth
+            raise ValueError(f"patches={names}: the patch {twice!r} is named twice: name each patch once")
         unknown = [name for name in names if name not in entries]
         if unknown:
             raise ValueError(f"patches={unknown} are not in {folder / 'boundary'}: its patches are {list(entries)}")
@@ -94,6 +99,11 @@ def read_polymesh(path: str | Path, patches: Sequence[str] | None = None) -> Wal
     patch = np.concatenate([np.full(int(entries[n]["nFaces"]), i, np.int64) for i, n in enumerate(names)])
     sizes, flat = _faces(folder, labels)
     used, inverse = np.unique(flat, return_inverse=True)
+    others = tuple(  # the records on these are counted, not refused as another mesh's
+        (name, int(e["startFace"]), int(e["nFaces"]))
+        for name, e in entries.items()
+        if name not in names and "startFace" in e and "nFaces" in e
+    )
     return Wall(
         points=_points(folder)[used],
         face_points=inverse.reshape(-1),
@@ -101,6 +111,7 @@ def read_polymesh(path: str | Path, patches: Sequence[str] | None = None) -> Wal
         patch=patch,
         patch_names=tuple(names),
         labels=labels,
+        other_patches=others,
     )
 
 
@@ -110,7 +121,14 @@ def _points(folder: Path) -> np.ndarray:
     values = np.array(inner.replace("(", " ").replace(")", " ").split(), dtype=float)
     if values.size != 3 * n:
         raise ValueError(f"{folder / 'points'}: {values.size} numbers for {n} points")
-    return values.reshape(n, 3)
+    values = values.reshape(n, 3)
+    bad = np.flatnonzero(~np.isfinite(values).all(axis=1))
+    if len(bad):  # named here, with the file: the wall's own check knows no file
+        raise ValueError(
+            f"{folder / 'points'}, point {bad[0]}: ({' '.join(f'{v:.6g}' for v in values[bad[0]])}) is not a finite "
+            "position (m): give every point of the mesh as numbers"
+        )
+    return values
 
 
 def _faces(folder: Path, labels: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -9,9 +9,9 @@ wall, :mod:`wear.wall.mesh`) is
 
 the normal being the one the source code used where the records carry it (``normal="recorded"``: OpenFOAM's tet
 triangle) or the face's (``normal="face"``). A record whose velocity points out of the wall
-(:math:`\hat n \cdot v < 0`, θ > 90°) or that lies farther than ``tolerance`` from its face is bad input: a
-``ValueError`` naming its file, row and column, or with ``skip_bad`` counted in :attr:`Hits.skipped` and left out
-of every sum (its face is −1).
+(:math:`\hat n \cdot v < 0`, θ > 90° + :data:`GRAZING_DEG`) or that lies farther than ``tolerance`` from its face
+is bad input: a ``ValueError`` naming its file, row and column, or with ``skip_bad`` counted in
+:attr:`Hits.skipped` and left out of every sum (its face is −1).
 """
 
 from __future__ import annotations
@@ -25,10 +25,14 @@ from wear.wall.locate import default_tolerance, distance_to_faces, nearest_faces
 from wear.wall.mesh import Wall
 from wear.wall.records import ImpactRecords
 
-__all__ = ["Hits", "hits_on_wall", "NORMALS"]
+__all__ = ["Hits", "hits_on_wall", "NORMALS", "GRAZING_DEG"]
 
 #: Which normal an impact angle is measured against.
 NORMALS = ("recorded", "face")
+#: How far past 90° (deg from the normal) a record is still a grazing hit, not one leaving the wall: a parcel
+#: sliding along a wall has θ = 90° to round-off of its velocity against the normal (about 1e-4° seen).
+GRAZING_DEG = 1e-3
+_GRAZING_COSINE = -float(np.sin(np.radians(GRAZING_DEG)))
 
 
 @dataclass(frozen=True, eq=False)
@@ -93,9 +97,9 @@ def hits_on_wall(
     n = records.normal if normal == "recorded" else wall.normal[face]
     speed = records.speed
     cosine = np.clip(np.einsum("ij,ij->i", n, records.velocity) / speed, -1.0, 1.0)
-    angle = np.degrees(np.arccos(cosine))
+    away = ~(distance > tolerance) & (cosine < _GRAZING_COSINE)
+    angle = np.degrees(np.arccos(np.where(away, cosine, np.maximum(cosine, 0.0))))  # grazing: 90°, not past it
     far = distance > tolerance
-    away = ~far & (cosine < 0.0)
     skipped = {}
     for bad, reason in ((far, "far_from_wall"), (away, "leaving_wall")):
         hit = np.flatnonzero(bad)

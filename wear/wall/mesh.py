@@ -30,7 +30,7 @@ from pathlib import Path
 import meshio
 import numpy as np
 
-__all__ = ["Wall", "concat_walls", "read_surface", "SURFACE_CELLS", "THICKNESS_FIELD"]
+__all__ = ["Wall", "concat_walls", "duplicate_faces", "read_surface", "SURFACE_CELLS", "THICKNESS_FIELD"]
 
 #: The cell field of a wall file that gives the wall thickness of each face (m).
 THICKNESS_FIELD = "thickness_m"
@@ -44,8 +44,10 @@ class Wall:
     """A wall surface: ``points`` (m, (p, 3)), polygon faces (``face_points`` flat, ``face_offsets`` (f + 1,)), the
     ``patch`` (f,) each face belongs to (an index into ``patch_names``) and each face's ``label`` (f,) in its source
     (OpenFOAM: the global mesh face label; a surface file: the face's number in the file), and the wall thickness of
-    each face ``thickness_m`` (m, (f,); NaN where not given; None: none given). See the module docstring for the
-    normal convention."""
+    each face ``thickness_m`` (m, (f,); NaN where not given; None: none given). ``other_patches``: the patches of
+    the source mesh left out of the wall, as (name, first label, number of faces) (an OpenFOAM case read with some
+    of its patches; records on them are counted, not placed on the wall). See the module docstring for the normal
+    convention."""
 
     points: np.ndarray
     face_points: np.ndarray
@@ -54,6 +56,7 @@ class Wall:
     patch_names: tuple[str, ...]
     labels: np.ndarray
     thickness_m: np.ndarray | None = None
+    other_patches: tuple[tuple[str, int, int], ...] = ()
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__
@@ -63,6 +66,10 @@ class Wall:
         set_(self, "patch", np.asarray(self.patch, dtype=np.int64))
         set_(self, "labels", np.asarray(self.labels, dtype=np.int64))
         set_(self, "patch_names", tuple(self.patch_names))
+        set_(self, "other_patches", tuple((str(n), int(a), int(k)) for n, a, k in self.other_patches))
+        bad = np.flatnonzero(~np.isfinite(self.points).all(axis=1))
+        if len(bad):  # a NaN point gives NaN areas and sizes, and the face grid's cells from it crash
+            raise ValueError(f"point {bad[0]} of the wall is not a finite position: {_text(self.points[bad[0]])} m")
         sizes = np.diff(self.face_offsets)
         if len(sizes) == 0:
             raise ValueError("the wall has no faces: give a surface with triangles, quads or polygons")
@@ -156,6 +163,26 @@ class Wall:
         return meshio.Mesh(self.points, blocks, cell_data=data, point_data=dict(point_fields or {}))
 
 
+def _text(values: np.ndarray) -> str:
+    return "(" + " ".join(f"{v:.6g}" for v in values) + ")"
+
+
+def duplicate_faces(wall: Wall) -> tuple[int, int, int] | None:
+    """(face, the earlier face it repeats, the number of faces that repeat another) of a wall whose faces repeat
+    one another, or None. Two faces repeat when their centres coincide within 1e-6 of the face size: the centre
+    of a convex face lies inside it, so such faces overlap (a face given twice, in any point order, or a part given
+    twice), and the area and the impacts would be counted twice."""
+    from scipy.spatial import cKDTree  # only here: the wall module needs no scipy otherwise
+
+    reach = 1e-6 * float(np.sqrt(np.median(wall.area)))
+    pairs = cKDTree(wall.centre).query_pairs(reach, output_type="ndarray")
+    if len(pairs) == 0:
+        return None
+    pairs = np.sort(pairs, axis=1)
+    first = pairs[np.lexsort((pairs[:, 0], pairs[:, 1]))][0]
+    return int(first[1]), int(first[0]), len(np.unique(pairs[:, 1]))
+
+
 def concat_walls(walls: Sequence[Wall]) -> Wall:
     """One wall of several (e.g. a wall split into files), faces in order; patches of the same name merge."""
     names: list[str] = []
@@ -183,6 +210,7 @@ def concat_walls(walls: Sequence[Wall]) -> Wall:
         patch_names=tuple(names),
         labels=np.concatenate(labels),
         thickness_m=np.concatenate(thickness) if given else None,
+        other_patches=tuple(p for wall in walls for p in wall.other_patches),
     )
 
 
@@ -206,10 +234,24 @@ def read_surface(path: str | Path, flip: bool = False, patch: str | None = None)
     thickness = mesh.cell_data.get(THICKNESS_FIELD)
     if not blocks:
         raise ValueError(f"wall={str(p)!r} has no triangles, quads or polygons: give the wall's surface")
+    points = np.asarray(mesh.points, dtype=float)
+    bad = np.flatnonzero(~np.isfinite(points).all(axis=1))
+    if len(bad):  # named here, with the file: the wall's own check knows no file
+        raise ValueError(
+            f"wall={str(p)!r}, point {bad[0]}: {_text(points[bad[0]])} is not a finite position (m): give every "
+            "point of the wall as numbers"
+        )
+    if thickness is not None:
+        given = np.concatenate([np.ravel(thickness[i]) for i in kept]).astype(float)
+        bad = np.flatnonzero(~np.isfinite(given))
+        if len(bad):  # NaN would leave the face out of the shortest life without a word
+            raise ValueError(
+                f"wall={str(p)!r}, face {bad[0]}, column {THICKNESS_FIELD}: {float(given[bad[0]])!r} is not a finite "
+                "number: give every face's wall thickness in m (> 0)"
+            )
     blocks = [np.asarray(block, dtype=np.int64) for block in blocks]
     blocks = [block[:, ::-1] for block in blocks] if flip else blocks
     sizes = np.concatenate([np.full(len(block), block.shape[1]) for block in blocks])
-    points = np.asarray(mesh.points, dtype=float)
     return Wall(
         points=points if points.shape[1] == 3 else np.column_stack([points, np.zeros(len(points))]),
         face_points=np.concatenate([block.ravel() for block in blocks]),
@@ -217,5 +259,5 @@ def read_surface(path: str | Path, flip: bool = False, patch: str | None = None)
         patch=np.zeros(len(sizes), np.int64),
         patch_names=(patch or p.stem,),
         labels=np.arange(len(sizes)),
-        thickness_m=None if thickness is None else np.concatenate([np.ravel(thickness[i]) for i in kept]),
+        thickness_m=None if thickness is None else given,
     )

@@ -7,7 +7,9 @@ columns, then one line per hit; vectors are in parentheses, one token per compon
 parcel's property list, which differs between parcel types and with the function's ``fields`` entry, so they are
 found by name. Read: ``Time`` (s), ``position0-2`` (m), ``U0-2`` (m/s, before the rebound), ``d`` (m), ``rho``
 (kg/m³), ``nParticle`` and ``facei`` (the global mesh face label crossed); with ``coordinates0-3`` and ``tetPti``
-also the normal OpenFOAM measured the angle against.
+also the normal OpenFOAM measured the angle against. A
+serial run's record on a patch of the mesh that the wall leaves out (a wall read with some of the case's patches)
+is not in the table, only counted (``off_wall`` of :class:`wear.wall.records.ImpactRecords`).
 
 **The recorded normal.** OpenFOAM's ``particleErosion`` (and its patch interaction) take the unit normal of the
 triangle of the crossed face in the parcel's tet, not the face normal: with f the face's points, b its tet base
@@ -184,32 +186,45 @@ class _PostFile:
         face = np.full(len(self.rows), -1, np.int64)
         normal = None
         position = self.vector(REQUIRED["position"])
+        keep = np.ones(len(self.rows), bool)
         if serial:
             label = self.column("facei", integer=True)
             face = wall.index_of_labels(label)
-            off = np.flatnonzero(face < 0)
+            # a hit on a patch of the mesh the wall leaves out (--patches) is counted, not refused
+            keep = (face >= 0) | ~_on_other_patches(wall, label)
+            off = np.flatnonzero(keep & (face < 0))
             if len(off):
                 raise ValueError(
                     f"{where(self.name, int(self.rows[off[0]]), 'facei')}: {label[off[0]]} is not a face of the "
                     f"wall's patches {', '.join(wall.patch_names)}: give the polyMesh of the run that wrote the records"
                 )
+            face, position = face[keep], position[keep]
             if all(c in self.header for c in _TET):
-                coords = np.column_stack([self.column(c) for c in _TET[:4]])
-                tet_point = self.column("tetPti", integer=True)
-                normal = triangle_normals(wall, face, tet_point, coords, position, self.name, self.rows)
+                coords = np.column_stack([self.column(c)[keep] for c in _TET[:4]])
+                tet_point = self.column("tetPti", integer=True)[keep]
+                normal = triangle_normals(wall, face, tet_point, coords, position, self.name, self.rows[keep])
         return ImpactRecords(
             position=position,
-            velocity=self.vector(REQUIRED["velocity"]),
-            diameter=self.column("d"),
-            density=self.column("rho"),
-            count=self.column("nParticle"),
-            time=self.column("Time"),
+            velocity=self.vector(REQUIRED["velocity"])[keep],
+            diameter=self.column("d")[keep],
+            density=self.column("rho")[keep],
+            count=self.column("nParticle")[keep],
+            time=self.column("Time")[keep],
             face=face,
             normal=normal,
             files=(self.name,),
-            row=self.rows,
+            row=self.rows[keep],
             columns={**REQUIRED, "normal": ("coordinates1", "coordinates2", "coordinates3")},
+            off_wall=int((~keep).sum()),
         )
+
+
+def _on_other_patches(wall: Wall, label: np.ndarray) -> np.ndarray:
+    """Whether each mesh face label is a face of a patch the wall leaves out (:attr:`Wall.other_patches`)."""
+    out = np.zeros(len(label), bool)
+    for _, start, n in wall.other_patches:
+        out |= (label >= start) & (label < start + n)
+    return out
 
 
 def triangle_normals(

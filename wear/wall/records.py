@@ -30,7 +30,16 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["COLUMNS", "ImpactRecords", "concat_records", "numbers", "where", "DIAMETER_RANGE", "DENSITY_RANGE"]
+__all__ = [
+    "COLUMNS",
+    "ImpactRecords",
+    "concat_records",
+    "numbers",
+    "where",
+    "DIAMETER_RANGE",
+    "DENSITY_RANGE",
+    "SPEED_MAX",
+]
 
 #: The impact table's fields: the source column names a reader reports when it names none (the plain table's).
 COLUMNS = {
@@ -46,6 +55,9 @@ COLUMNS = {
 #: Valid particle diameter (m) and density (kg/m³): wider than any sand or shot, narrow enough to catch µm or g/cm³.
 DIAMETER_RANGE = (0.0, 0.1)
 DENSITY_RANGE = (0.0, 30000.0)
+#: Fastest impact (m/s) a record may carry: above any particle a flow drives (a jet cutter's abrasive is under
+#: 1000 m/s), below the speeds of velocities written in mm/s (a 20 m/s hit is 20000 mm/s).
+SPEED_MAX = 2000.0
 
 
 def where(file: str, row: int, column: str | Sequence[str]) -> str:
@@ -84,7 +96,9 @@ class ImpactRecords:
     """The impact table (see the module docstring for the columns and units). Arrays are copied to float64 /
     int64; the checks run on construction and raise ``ValueError`` naming the file, row and column of the first bad
     value (a NaN or infinity, a diameter, density or particle count out of range, a zero velocity, a face index
-    below −1, a normal that is not a unit vector)."""
+    below −1, a normal that is not a unit vector, a speed above :data:`SPEED_MAX`). ``off_wall``: the records
+    read that hit patches of the mesh left out of the wall (an OpenFOAM run's other patches); they are not in the
+    table, only counted."""
 
     position: np.ndarray
     velocity: np.ndarray
@@ -98,6 +112,7 @@ class ImpactRecords:
     file_index: np.ndarray | None = None
     row: np.ndarray | None = None
     columns: Mapping[str, tuple[str, ...]] = field(default_factory=lambda: dict(COLUMNS))
+    off_wall: int = 0
 
     def __post_init__(self) -> None:
         n = len(np.asarray(self.diameter))
@@ -162,6 +177,11 @@ class ImpactRecords:
         )
         self._fail(self.count <= 0.0, "count", "is out of range: the particles per record must be > 0")
         self._fail(~(self.speed > 0.0), "velocity", "is out of range: an impact's velocity (m/s) must not be zero")
+        self._fail(
+            self.speed > SPEED_MAX,
+            "velocity",
+            f"is out of range: an impact's speed is at most {SPEED_MAX:g} m/s (give the velocity in m/s, not mm/s)",
+        )
         self._fail(self.face < -1, "face", "is out of range: a face index is >= 0 (or -1: found from the position)")
         if self.normal is not None:
             length = np.linalg.norm(self.normal, axis=1)
@@ -201,4 +221,5 @@ def concat_records(parts: Sequence[ImpactRecords]) -> ImpactRecords:
         file_index=np.concatenate(index),
         row=cat("row"),
         columns=first.columns,
+        off_wall=sum(p.off_wall for p in parts),
     )

@@ -106,6 +106,9 @@ def plan_chunks(paths: str | Path | Sequence[str | Path], chunk_rows: int) -> li
             chunks += [Chunk(str(path), kind, s, min(chunk_rows, rows - s)) for s in range(0, rows, chunk_rows)]
         else:
             chunks += _parquet_chunks(Path(path))
+    if not sum(c.rows for c in chunks):  # an OpenFOAM file may be a header alone: refused as an empty table is
+        shown = ", ".join(str(p) for p in record_files(paths))
+        raise ValueError(f"records={shown!r} hold no rows, only headers: give one row per impact record")
     return chunks
 
 

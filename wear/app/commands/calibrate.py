@@ -11,7 +11,15 @@ from __future__ import annotations
 
 import argparse
 
-from wear.app.commands.common import add_case_options, add_out_option, case_from_args, print_default, print_json
+from wear.app.commands.common import (
+    add_case_options,
+    add_out_option,
+    case_from_args,
+    collect_notes,
+    print_default,
+    print_json,
+    print_notes,
+)
 from wear.app.outputs.calibration import ENTRIES, write_calibration
 from wear.app.outputs.folder import check_output_folder
 from wear.case import LAWS
@@ -71,8 +79,11 @@ def main(args: argparse.Namespace) -> int:
         raise ValueError("DATA.csv is missing: give the file of measured wear (see impactwear calibrate --help)")
     data = read_data(case.calibration.data)  # bad data: one line naming the column and row, before any output
     check_output_folder(args.out, "calibrate", ENTRIES)
-    result = calibrate(case, data, case.calibration.free_constants())
-    summary = write_calibration(result, args.out)
+    # what the libraries warn (the figure's layout, a fit's round-off) is a note in one line, not their raw lines
+    with collect_notes() as notes:
+        result = calibrate(case, data, case.calibration.free_constants())
+        summary = write_calibration(result, args.out)
+    print_notes("calibrate", notes)
     if args.json:
         print_json(summary)
     elif not args.quiet:

@@ -50,6 +50,15 @@ def parse_angles(text: str) -> list[float]:
                 f"--angles: angle={a:g} is out of range: stream angle from the normal must be in [0, "
                 f"{MAX_STREAM_ANGLE:g}] deg"
             )
+    # each angle's outputs go to angle_<a:g>/ (6 significant digits): angles that print alike would collide there
+    # after all the work, so they are refused as one angle given twice
+    seen: dict[str, float] = {}
+    for a in angles:
+        shown = f"{a:g}"
+        if shown in seen:
+            alike = "" if a == seen[shown] else f" ({seen[shown]!r} and {a!r} are one to the 6 digits of the outputs)"
+            raise ValueError(f"--angles={text} gives the angle {shown} deg twice{alike}: give each stream angle once")
+        seen[shown] = a
     return angles
 
 

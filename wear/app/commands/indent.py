@@ -86,10 +86,14 @@ def main(args: argparse.Namespace) -> int:
     check_number("--hardening", args.hardening, low=0.0, high=MAX_HARDENING, units="Pa")
     mesh = None
     if args.mesh is not None:
-        try:  # read before any work: its errors name mesh=PATH, the option is --mesh
-            mesh = load_mesh(args.mesh)
-        except ValueError as exc:
-            raise ValueError(f"--{exc}") from None
+        # meshio warns in raw lines on files it half-reads (an STL: "overflow encountered in scalar multiply"): a
+        # refused file's one line says what is wrong, a read one's warnings are notes
+        with collect_notes() as read_notes:
+            try:  # read before any work: its errors name mesh=PATH, the option is --mesh
+                mesh = load_mesh(args.mesh)
+            except ValueError as exc:
+                raise ValueError(f"--{exc}") from None
+        print_notes("indent", [f"--mesh={args.mesh!r}: {note}" for note in read_notes])
     with collect_notes() as notes:
         run = indent_case(
             case, max_overlap=args.max_overlap, max_force=args.max_force, hardening=args.hardening, mesh=mesh

@@ -13,7 +13,7 @@ import sys
 from pathlib import Path
 
 from wear.app.commands.common import collect_notes, path_option, print_notes
-from wear.app.outputs.folder import check_named_file, check_writable_folder
+from wear.app.outputs.folder import check_named_file, check_writable_folder, is_own_file
 from wear.app.validation.checks import GROUPS
 from wear.app.validation.runner import HEADER, render_report, run_validation, write_report
 
@@ -62,6 +62,12 @@ def main(args: argparse.Namespace) -> int:
         raise ValueError(f"--report={args.report!r} is a folder: give the report's file name (e.g. validation.md)")
     option = "--report" if args.report else "--out"
     check_writable_folder(path.parent, option)
+    if args.report and path.exists() and not is_own_file(path, HEADER):
+        # --report names the file itself: the folder's wording ("holds ...; give another folder") would not fit
+        raise ValueError(
+            f"--report={args.report!r} is a file impactwear did not write, which `impactwear validate` would "
+            "replace: move it, or give another file name"
+        )
     check_named_file(path, "validate", HEADER, f"{option}={args.report or args.out!r}")
     with collect_notes() as notes:  # what the libraries warn (an elastic ball on the FE plate) is a note, once
         result = run_validation(quick=args.quick, only=args.only, progress=progress)

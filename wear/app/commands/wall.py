@@ -90,7 +90,7 @@ def main(args: argparse.Namespace) -> int:
             raise ValueError(f"{'records' if key == 'records' else 'wall'}={path!r}: no such file or folder")
     check_scheduler_address(args.scheduler)
     check_law_keys(case, JOBS["wall"].default_case())
-    patches = None if args.patches is None else [p.strip() for p in args.patches.split(",") if p.strip()]
+    patches = _patches(args.patches)
     check_output_folder(args.out, "wall", ENTRIES)
     wall = read_wall(case.wall.surface, patches, flip=args.flip)
     if args.dask_local is not None:
@@ -109,7 +109,13 @@ def main(args: argparse.Namespace) -> int:
             skip_bad=args.skip_bad,
             normal=args.normal,
         )
-        skipped = run.sums.skipped
+        skipped = dict(run.sums.skipped)
+        elsewhere = skipped.pop("other_patches", 0)
+        if elsewhere:  # the run's other patches were left out on purpose: counted, not refused
+            notes.append(
+                f"{elsewhere} of {run.sums.records_read} records hit patches of the mesh that are not part of the wall "
+                f"(its patches: {', '.join(wall.patch_names)}): left out"
+            )
         if any(skipped.values()):
             reasons = ", ".join(f"{n} {reason.replace('_', ' ')}" for reason, n in skipped.items() if n)
             notes.append(f"--skip-bad: {sum(skipped.values())} of {run.sums.records_read} records skipped ({reasons})")
@@ -120,6 +126,19 @@ def main(args: argparse.Namespace) -> int:
     elif not args.quiet:
         _say(summary, args.out)
     return 0
+
+
+def _patches(text: str | None) -> list[str] | None:
+    """The patch names of ``--patches A,B`` (None: not given), each once."""
+    if text is None:
+        return None
+    names = [p.strip() for p in text.split(",") if p.strip()]
+    if not names:
+        raise ValueError(f"--patches={text!r} names no patch: give the wall's patch names, comma-separated (A,B)")
+    twice = next((name for name in names if names.count(name) > 1), None)
+    if twice is not None:  # its faces would be counted twice: twice the area, half the worn depth
+        raise ValueError(f"--patches={text}: the patch {twice!r} is named twice: name each patch once")
+    return names
 
 
 def _say(summary: dict, out: str) -> None:

@@ -20,14 +20,37 @@ _LABELS = {
 }
 
 
+#: The most groups (speeds, or angles) a panel draws and its legend lists: beyond, the rows are drawn in this many
+#: ranges of the grouping value. One curve and legend entry per distinct value of thousands of scattered rows took
+#: minutes and a legend no layout could fit (matplotlib's "Tight layout not applied" warning to the user).
+MAX_GROUPS = 8
+
+
+def _groups(group: np.ndarray, label: str) -> list[tuple[np.ndarray, str, bool]]:
+    """(the rows of each group, its legend label, whether its rows share the grouping value, so that the prediction
+    is a curve): each distinct value, or :data:`MAX_GROUPS` ranges of about as many rows each."""
+    values = np.unique(group)
+    if values.size <= MAX_GROUPS:
+        return [(group == g, f"{label} {g:g}", True) for g in values]
+    edges = np.unique(np.quantile(values, np.linspace(0.0, 1.0, MAX_GROUPS + 1)))
+    which = np.clip(np.searchsorted(edges, group, side="right") - 1, 0, edges.size - 2)
+    return [
+        (which == k, f"{label} {edges[k]:.3g}–{edges[k + 1]:.3g}", False)
+        for k in range(edges.size - 1)
+        if np.any(which == k)
+    ]
+
+
 def _panel(ax, x, group, measured, predicted, xlabel: str, label: str) -> None:
-    for k, g in enumerate(np.unique(group)):
-        sel = group == g
-        order = np.argsort(x[sel])
+    for k, (sel, name, curve) in enumerate(_groups(group, label)):
         colour = f"C{k % 10}"
-        ax.plot(x[sel][order], predicted[sel][order], "-", color=colour, lw=1.2)
+        if curve:
+            order = np.argsort(x[sel])
+            ax.plot(x[sel][order], predicted[sel][order], "-", color=colour, lw=1.2)
+        else:  # rows of a range of values: no one curve, the prediction of each row as a dot
+            ax.plot(x[sel], predicted[sel], ".", color=colour, ms=2)
         ok = sel & np.isfinite(measured)
-        ax.plot(x[ok], measured[ok], "o", color=colour, ms=4, label=f"{label} {g:g}")
+        ax.plot(x[ok], measured[ok], "o", color=colour, ms=4 if curve else 2.5, label=name)
         only = sel & ~np.isfinite(measured)  # rows to predict: the prediction alone
         ax.plot(x[only], predicted[only], "x", color=colour, ms=6)
     ax.set_xlabel(xlabel)
@@ -55,7 +78,7 @@ def plot_calibration(result: CalibrationResult, path: str | os.PathLike) -> Path
     text = ", ".join(f"{n} = {v:.4g}" for n, v in zip(f.names, f.values, strict=True))
     fig.suptitle(
         f"wear.law = {result.case.wear.law!r}: {text} (RMS log error {f.rms_log_error:.3f})\n"
-        "markers: measured; lines: predicted; x: rows without a measurement",
+        "markers: measured; lines (dots: rows of a range of values): predicted; x: rows without a measurement",
         fontsize=9,
     )
     place_legends(fig, (a1, a2), fontsize=7, ncol=2)

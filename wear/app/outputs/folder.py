@@ -68,9 +68,19 @@ def read_manifest(folder: str | os.PathLike) -> dict | None:
     return data
 
 
-def _foreign(folder: Path, manifest: dict | None) -> list[str]:
-    """Entries of ``folder`` that impactwear did not write (sorted)."""
-    ours = set(manifest["entries"]) if manifest else set()
+def _ours(manifest: dict | None, entries: tuple[str, ...] | None) -> set[str]:
+    """The entries of ``manifest`` that impactwear wrote: those the command writes (``entries``, names or patterns;
+    None: every entry listed). A manifest is a file anyone can edit: an entry the command never writes (a user's
+    file, a path outside the folder) is not replaced, whatever the manifest says."""
+    listed = manifest["entries"] if manifest else []
+    plain = {e for e in listed if isinstance(e, str) and e == Path(e).name and e not in ("", ".", "..", MANIFEST)}
+    return plain if entries is None else {e for e in plain if _written_by(e, entries)}
+
+
+def _foreign(folder: Path, manifest: dict | None, entries: tuple[str, ...] | None = None) -> list[str]:
+    """Entries of ``folder`` that impactwear did not write (sorted); ``entries``: what the command writes (see
+    :func:`_ours`)."""
+    ours = _ours(manifest, entries)
     return sorted(
         p.name for p in folder.iterdir() if p.name != MANIFEST and p.name not in ours and not is_temporary(p.name)
     )
@@ -123,7 +133,7 @@ def check_output_folder(
     if not target.is_dir():
         return target
     manifest = read_manifest(target)
-    foreign = _foreign(target, manifest)
+    foreign = _foreign(target, manifest, entries or None)
     if foreign and manifest is None:
         raise ValueError(
             f"{shown} holds files impactwear did not write ({_listed(foreign)}): give a new or empty folder, "
@@ -220,9 +230,9 @@ def output_folder(path: str | os.PathLike, command: str, entries: tuple[str, ...
             write_json(tmp / MANIFEST, _manifest(command, list(new), True))
             os.replace(tmp, target)
         elif aside:
-            _exchange_folder(tmp, check_output_folder(target, command, entries), command, new)
+            _exchange_folder(tmp, check_output_folder(target, command, entries), command, new, entries)
         else:
-            _move_entries(tmp, check_output_folder(target, command, entries), command, new)
+            _move_entries(tmp, check_output_folder(target, command, entries), command, new, entries)
     except OSError as exc:
         if exc.errno not in WRITE_ERRORS or not _inside(exc.filename, target):
             raise
@@ -264,28 +274,27 @@ def _link_tree(source: Path, copy: Path) -> None:
             shutil.copy2(source, copy)
 
 
-def _exchange_folder(tmp: Path, target: Path, command: str, new: set[str]) -> None:
+def _exchange_folder(tmp: Path, target: Path, command: str, new: set[str], entries: tuple[str, ...]) -> None:
     """Replace the output in ``target`` by the entries ``new`` of ``tmp`` (a folder beside it) in one step: the
     user's entries of ``target`` are linked into ``tmp``, the two folders swapped, and the earlier output (now in
     ``tmp``) removed. At every instant ``target`` holds the earlier output as it was or the complete new one; a
     ``tmp`` a kill leaves behind is never the only copy of anything, and the next run removes it."""
-    for name in _foreign(target, read_manifest(target)):
+    for name in _foreign(target, read_manifest(target), entries):
         _link_tree(target / name, tmp / name)
     write_json(tmp / MANIFEST, _manifest(command, list(new), True))
     shutil.copystat(target, tmp)  # the folder keeps its permissions
     exchange(tmp, target)
     # what the user put in the folder while it was being linked: moved over (the new output's names win)
-    for name in _foreign(tmp, read_manifest(tmp)):
+    for name in _foreign(tmp, read_manifest(tmp), entries):
         if not (target / name).exists() and not (target / name).is_symlink():
             os.replace(tmp / name, target / name)
 
 
-def _move_entries(tmp: Path, target: Path, command: str, new: set[str]) -> None:
+def _move_entries(tmp: Path, target: Path, command: str, new: set[str], entries: tuple[str, ...]) -> None:
     """Move the entries ``new`` of ``tmp`` into ``target``, a folder that cannot be swapped (e.g. a mount point) and
     holds no complete earlier output: what an interrupted filling left is removed, the data moved in first, the
     summaries last, the manifest "incomplete" until every entry is in."""
-    manifest = read_manifest(target)
-    left = set(manifest["entries"]) if manifest else set()
+    left = _ours(read_manifest(target), entries)
     write_json(target / MANIFEST, _manifest(command, list(left | new), False))
     for name in left:
         if (target / name).is_dir() and not (target / name).is_symlink():

@@ -41,7 +41,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from wear.app.sweep.stages import stage_case
+from wear.app.sweep.stages import check_stage_case
 from wear.case import STAGES, read_toml, read_toml_text
 
 __all__ = ["SweepSpec", "SweepCase", "load_sweep", "parse_sweep", "case_id", "flatten", "MAX_CASES"]
@@ -206,7 +206,8 @@ def _explicit_cases(cases: Any) -> list[dict[str, Any]]:
 def _validated(stage: str, merged: dict) -> dict:
     """Full, validated, normalised case (tables of values) restricted to the stage's tables."""
     st = STAGES[stage]
-    return stage_case(merged, st.job).to_dict(st.tables)
+    # checked as the stage's function will check it (e.g. indent's plate model, the wall's files), before any work
+    return check_stage_case(stage, merged, st.job).to_dict(st.tables)
 
 
 def _blame(stage: str, base: dict, exc: ValueError, label: str) -> str:

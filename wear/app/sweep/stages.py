@@ -45,6 +45,7 @@ __all__ = [
     "RUN_UNITS",
     "STAGES",
     "calibrate_stage",
+    "check_stage_case",
     "erode_stage",
     "execute_case",
     "impact_stage",
@@ -59,6 +60,34 @@ __all__ = [
 def stage_case(case: dict, job: str) -> Case:
     """The :class:`wear.Case` of a sweep case (tables of values) over ``job``'s default case."""
     return check_job_case(Case.from_dict(case, base=default_case(job)), job)
+
+
+def _indent_case(case: dict) -> Case:
+    """The indent stage's case: the run job's default case, checked as ``impactwear indent`` checks its own (e.g.
+    the axisymmetric plate only)."""
+    return check_job_case(stage_case(case, "run"), "indent")
+
+
+def _wall_case(case: dict) -> Case:
+    """The wall stage's case, which must name its records and its wall: a sweep has no command line to give them."""
+    c = stage_case(case, "wall")
+    for key in ("records", "surface"):
+        if getattr(c.wall, key) is None:
+            raise ValueError(f"wall.{key} is missing: a wall sweep reads its records and wall from the case")
+    return c
+
+
+#: The stages whose function checks more than :func:`stage_case` does: the sweep file is checked with the same
+#: function case by case (:func:`check_stage_case`), so that such a case is refused before any case runs instead of
+#: failing in a worker after the output folder is made.
+_STAGE_CASES = {"indent": _indent_case, "wall": _wall_case}
+
+
+def check_stage_case(stage: str, case: dict, job: str) -> Case:
+    """The :class:`wear.Case` of a sweep case as ``stage`` (of ``job``) will run it, checked as its function checks
+    it: a one-line ``ValueError`` naming the key otherwise."""
+    check = _STAGE_CASES.get(stage)
+    return stage_case(case, job) if check is None else check(case)
 
 
 def impact_stage(case: dict) -> dict:
@@ -84,7 +113,7 @@ def indent_stage(case: dict) -> dict:
     most plastic one reached), ``newton_iterations`` (total).
     """
     # the run job's default case, pressed one-way like impactwear indent: on the plates indent runs
-    c = check_job_case(stage_case(case, "run"), "indent")
+    c = _indent_case(case)
     impact = simulate_impact(**c.impact_arguments(history=True))
     res = one_way(c, impact)  # the ball comes with the impact
     fy = res.first_yield
@@ -224,10 +253,7 @@ def wall_stage(case: dict) -> dict:
     ``wall.records`` on the wall ``wall.surface`` (e.g. one wall material, law or sand rate per case, on the same CFD
     run). Results: ``records.*`` (counts, kg, s), ``wall.*`` (faces, m²), ``exposure_s``, ``rate_scale``,
     ``results.*`` (m³, kg, kg/kg, m/s, mm/year, s, years, m, the allowable sand rate kg/s), without the wall times."""
-    c = stage_case(case, "wall")
-    for key in ("records", "surface"):
-        if getattr(c.wall, key) is None:
-            raise ValueError(f"wall.{key} is missing: a wall sweep reads its records and wall from the case")
+    c = _wall_case(case)
     result = erode_component(c, c.wall.records, read_wall(c.wall.surface), progress=False)
     return _flat(result.summary(), ("case", "seconds", "law", "exposure_source"))
 
