@@ -12,12 +12,24 @@ range with its SI unit, e.g.::
 from __future__ import annotations
 
 import math
+import os
 from collections.abc import Iterable
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-__all__ = ["check_number", "check_choice", "check_array", "check_bool", "fmt_value"]
+__all__ = [
+    "check_number",
+    "check_choice",
+    "check_array",
+    "check_bool",
+    "check_count",
+    "check_instance",
+    "check_path",
+    "fmt_argument",
+    "fmt_value",
+]
 
 
 def fmt_value(value: Any) -> str:
@@ -92,6 +104,40 @@ def check_bool(name: str, value: Any) -> bool:
     if not isinstance(value, (bool, np.bool_)):
         raise ValueError(f"{name}={fmt_value(value)} is not a boolean: must be true or false")
     return bool(value)
+
+
+def fmt_argument(value: Any) -> str:
+    """An argument of any type for a message: its value if a scalar or a path, else its type."""
+    if isinstance(value, (list, tuple)) and not value:
+        return repr(value)
+    if value is None or isinstance(value, (str, int, float, bool, os.PathLike)):
+        return fmt_value(str(value) if isinstance(value, os.PathLike) else value)
+    return f"<{type(value).__name__}>"
+
+
+def check_count(name: str, value: Any, *, low: int = 0, what: str = "") -> int:
+    """Return ``value`` if it is an integer >= ``low`` (a count, an index, a number of workers), else raise
+    ``ValueError`` naming ``name``; ``what`` says what it counts."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < low:
+        tail = f" ({what})" if what else ""
+        raise ValueError(f"{name}={fmt_argument(value)} is out of range: give an integer >= {low}{tail}")
+    return int(value)
+
+
+def check_instance(name: str, value: Any, kind: type | tuple[type, ...], what: str) -> Any:
+    """Return ``value`` if it is a ``kind``, else raise ``ValueError`` naming ``name``; ``what``: what to give
+    (e.g. "a wear.Case: wear.case.default_case('wall') or wear.case.load_case(path)")."""
+    if not isinstance(value, kind):
+        raise ValueError(f"{name}={fmt_argument(value)} is not {what}")
+    return value
+
+
+def check_path(name: str, value: Any, what: str = "a file or folder") -> Path:
+    """Return ``value`` as a ``Path`` if it is a non-empty ``str`` or path, else raise ``ValueError`` naming
+    ``name``."""
+    if not isinstance(value, (str, os.PathLike)) or not str(value):
+        raise ValueError(f"{name}={fmt_argument(value)} is not a path: give {what} (str or pathlib.Path)")
+    return Path(value)
 
 
 def check_array(

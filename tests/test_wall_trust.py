@@ -17,7 +17,9 @@ from wall_cases import OUTPUTS, RECORDS, flat_mesh, write_csv
 
 from wear.app.cli import main
 from wear.app.outputs.folder import MANIFEST
+from wear.case import default_case
 from wear.wall import hits_on_wall, read_table
+from wear.wall.laws import wall_law
 from wear.wall.mesh import read_surface
 
 HEADER = ["x_m", "y_m", "z_m", "u_m_s", "v_m_s", "w_m_s", "diameter_m", "density_kg_m3", "time_s"]
@@ -259,3 +261,46 @@ def test_patches_naming_no_patch_is_refused_naming_the_option(tmp_path, capsys, 
     """Before: 'need at least one array to concatenate'."""
     line = refused(["wall", str(RECORDS), str(OUTPUTS), "--patches", patches], tmp_path, capsys)
     assert f"--patches={patches!r} names no patch" in line, line
+
+
+# --- 11. the response table's reach ---------------------------------------------------------------------------
+
+
+def test_a_response_table_too_coarse_for_the_impact_speeds_is_refused_naming_what_fits(tmp_path, plate, capsys):
+    """Before: ``wall.table_speeds = 2`` failed after the work with "speed=5729.87 is out of range", a value the
+    user never gave: two normal speeds 5.7e4 apart ask for an impact at 100 m/s normal speed at 89 deg."""
+    records = write_csv(tmp_path / "hits.csv", HEADER, _spread())
+    argv = ["wall", str(records), str(plate), "--set", 'wear.law="local"', "--set", "wall.table_speeds=2"]
+    line = refused(argv, tmp_path, capsys)
+    assert line.startswith("impactwear wall: error: wall.table_speeds=2 is too coarse"), line
+    assert "above the impact's 1000 m/s" in line and "wall.table_speeds >= 6" in line, line
+    assert "wall.table_speed_max <= 1.321 m/s" in line, line
+
+
+@pytest.mark.parametrize(
+    ("change", "past"),
+    [({"table_speeds": 6}, {"table_speeds": 5}), ({"table_speed_max": 575.5}, {"table_speed_max": 576.0})],
+)
+def test_the_response_table_the_refusal_suggests_builds_within_the_impact_speeds(change, past):
+    """The values the refusal above names (the fewest speeds; the fastest table) build: every impact of the table
+    within the engine's range (contact.impact refuses a speed above 1000 m/s), every lookup's entries computed."""
+    case = default_case("wall").with_(wear={"law": "local"}, wall={"table_angles": 2, **change})
+    case.wall.check()
+    law = wall_law(case)
+    assert np.isfinite(law.volume_per_kg).sum() >= 2
+    speeds = np.array([case.wall.table_speed_min, case.wall.table_speed_max])
+    for angle in (0.0, 45.0, 89.0):
+        volume = law.volume(np.full(2, angle), speeds, np.full(2, 3e-4), np.full(2, 2650.0), np.ones(2))
+        assert np.all(np.isfinite(volume)) and np.all(volume >= 0.0), (angle, volume)
+    with pytest.raises(ValueError, match="too coarse"):  # one step past the bound
+        default_case("wall").with_(wall=past).wall.check()
+
+
+def test_a_record_outside_the_response_tables_speeds_is_refused_before_the_table(tmp_path, plate, capsys):
+    """Before: refused after the table was built (7-32 s); now on the first records, before any impact (the
+    refusal is asserted quick, tests/refusal.py)."""
+    records = write_csv(tmp_path / "hits.csv", HEADER, _spread())
+    argv = ["wall", str(records), str(plate), "--set", 'wear.law="local"', "--set", "wall.table_speed_max=5.0"]
+    line = refused([*argv, "--set", "wall.exposure=1.0"], tmp_path, capsys)
+    assert "hits.csv, row 1, columns u_m_s v_m_s w_m_s" in line, line
+    assert "the speed 10.4403 m/s is outside the response table's speeds [0.1, 5] m/s" in line, line

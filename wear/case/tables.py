@@ -14,11 +14,13 @@ key's meaning, units and range are read (and changed) where the others are.
 
 from __future__ import annotations
 
+import math
 import os
 from dataclasses import dataclass
 from typing import ClassVar
 
 from contact import Material
+from contact.impact import SPEED_MAX
 from contact.impact import TANGENTIAL_MODELS as ENGINE_TANGENTIAL_MODELS
 from wear.case.schema import Table, key
 from wear.law import WearLaw
@@ -126,7 +128,7 @@ class ImpactSpec(Table):
     of a coupled run), ``tangential_model``, ``limiting_pressure`` (Pa), ``scheme``, ``time_step`` (s)."""
 
     table: ClassVar[str] = "impact"
-    speed: float = key(float, 3.0, "impact speed", "m/s", low=0.0, low_open=True, high=1000.0)
+    speed: float = key(float, 3.0, "impact speed", "m/s", low=0.0, low_open=True, high=SPEED_MAX)
     angle: float = key(float, 30.0, "impact angle from the plate normal", "deg", low=0.0, high=90.0, high_open=True)
     friction: float = key(float, 0.3, "Coulomb friction coefficient", low=0.0, high=10.0)
     restitution: float = key(
@@ -513,7 +515,13 @@ class WallSpec(Table):
         absent="no allowable sand rate",
     )
     table_speed_min: float = key(
-        float, 0.1, "response table (FE-informed laws): lowest impact speed", "m/s", low=0.0, low_open=True, high=1000.0
+        float,
+        0.1,
+        "response table (FE-informed laws): lowest impact speed",
+        "m/s",
+        low=0.0,
+        low_open=True,
+        high=SPEED_MAX,
     )
     table_speed_max: float = key(
         float,
@@ -522,7 +530,7 @@ class WallSpec(Table):
         "m/s",
         low=0.0,
         low_open=True,
-        high=1000.0,
+        high=SPEED_MAX,
     )
     # at most 50 x 40 = 2000 impacts, wear.erosion.table.MAX_TABLE_ENTRIES
     table_speeds: int = key(int, 24, "response table (FE-informed laws): number of normal speeds", low=2, high=50)
@@ -552,6 +560,33 @@ class WallSpec(Table):
                 f"wall.table_speed_min={self.table_speed_min:g} is not below wall.table_speed_max="
                 f"{self.table_speed_max:g} m/s"
             )
+        self._check_table_reach()
+
+    def _check_table_reach(self) -> None:
+        r"""Refuse a response table whose impacts would exceed the engine's :data:`contact.impact.SPEED_MAX`. Its
+        normal speeds run geometrically, a ratio :math:`r = (V_{max} / (V_{min}\cos\theta_{top}))^{1/(n-1)}`
+        apart (:func:`wear.wall.laws.table_axes_of`); a record of speed up to :math:`V_{max}` at angle θ is
+        interpolated between the nodes around :math:`V\cos\theta`, the upper one up to :math:`r V_{max}\cos\theta`
+        in normal speed, :math:`r V_{max}` in speed."""
+        low = self.table_speed_min * math.cos(math.radians(self.table_angle_max))
+        span = math.log(self.table_speed_max / low)
+        step = span / (self.table_speeds - 1)
+        if self.table_speed_max * math.exp(step) * (1.0 + 1e-9) <= SPEED_MAX:
+            return
+        n = self.table_speeds
+        fits = math.exp(((n - 1) * math.log(SPEED_MAX) + math.log(low)) / n) / (1.0 + 1e-9)
+        fewest = (
+            f"wall.table_speeds >= {math.ceil(span / math.log(SPEED_MAX / self.table_speed_max) + 1.0)} or "
+            if self.table_speed_max < SPEED_MAX
+            else ""
+        )
+        raise ValueError(
+            f"wall.table_speeds={n} is too coarse for wall.table_speed_min={self.table_speed_min:g} to "
+            f"wall.table_speed_max={self.table_speed_max:g} m/s: its normal speeds lie x{math.exp(step):.4g} apart, "
+            f"so a record near {self.table_speed_max:g} m/s is interpolated from impacts at up to "
+            f"{self.table_speed_max * math.exp(step):.4g} m/s, above the impact's {SPEED_MAX:g} m/s; give "
+            f"{fewest}wall.table_speed_max <= {fits:.4g} m/s"
+        )
 
     def rate_scale(self) -> float:
         """The factor on every eroded volume: sand_rate / cfd_sand_rate, or 1."""

@@ -21,6 +21,7 @@ and turns the sums into rates over the exposure time (:func:`wear.wall.worn.wall
 
 from __future__ import annotations
 
+import os
 import time
 import warnings
 from collections.abc import Sequence
@@ -30,12 +31,13 @@ from pathlib import Path
 import meshio
 import numpy as np
 
+from contact.checks import check_count, check_instance, check_path
 from wear.case import Case
 from wear.case.jobs import default_case
 from wear.wall.engine import WallSums, chunk_rows_for, erode_wall
 from wear.wall.foam import polymesh_folder, read_polymesh
 from wear.wall.law_keys import check_law_keys
-from wear.wall.laws import wall_law
+from wear.wall.laws import records_refusal, wall_law
 from wear.wall.mesh import Wall, concat_walls, duplicate_faces, read_surface
 from wear.wall.sources import plan_chunks, record_files, record_format
 from wear.wall.trust import check_exposure, check_records_fit, note_inputs, note_results
@@ -52,7 +54,7 @@ def read_wall(path: str | Path, patches: Sequence[str] | None = None, flip: bool
     ``constant`` or its polyMesh folder (the wall patches, or ``patches``); or a folder of surface files (a wall split
     into parts: each file a patch, by name). ``flip`` reverses the surfaces' orientation
     (:mod:`wear.wall.mesh`)."""
-    wall = _read_wall(Path(path), patches, flip)
+    wall = _read_wall(check_path("path", path, "a surface file, a folder of them or an OpenFOAM case"), patches, flip)
     twice = duplicate_faces(wall)
     if twice is not None:  # counted twice, they would double the area and halve the worn depth
         f, g, n = twice
@@ -244,6 +246,11 @@ def erode_component(
     (:func:`wear.wall.law_keys.check_law_keys`), and so are records that do not lie on the wall as a CFD run's do
     and an exposure too short for the rates, before any work (:mod:`wear.wall.trust`, which also warns of values
     that look like other units)."""
+    check_instance("case", case, Case, "a wear.Case: wear.case.default_case('wall') or wear.case.load_case(path)")
+    if isinstance(wall, (str, os.PathLike)):
+        raise ValueError(f"wall={str(wall)!r} is a path: give the Wall it holds, wear.wall.read_wall({str(wall)!r})")
+    check_instance("wall", wall, Wall, "a wear.wall.Wall: wear.wall.read_wall(path)")
+    check_count("workers", workers, low=1, what="processes")
     check_law_keys(case, default_case("wall"))
     spec = case.wall
     if spec.exposure is not None:
@@ -253,7 +260,8 @@ def erode_component(
         formats = {record_format(p) for p in paths}
         chunk_rows = min(chunk_rows_for(wall, workers, f) for f in formats)
     chunks = plan_chunks(paths, chunk_rows)
-    check_records_fit(chunks, wall, normal)  # before the law's table, which may take half a minute
+    # before the law's table, which may take half a minute
+    check_records_fit(chunks, wall, normal, records_refusal(case))
     thickness = np.full(len(wall), np.nan if spec.thickness is None else spec.thickness)
     from_file = wall.thickness_m is not None and bool(np.isfinite(wall.thickness_m).any())
     if wall.thickness_m is not None:

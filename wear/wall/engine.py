@@ -34,6 +34,7 @@ from functools import cached_property
 
 import numpy as np
 
+from contact.checks import check_count, check_instance
 from wear.case.budget import check_budget, memory_budget
 from wear.case.progress import progress_bar
 from wear.case.workers import dask_client, worker_pool
@@ -279,8 +280,9 @@ def erode_wall(
     :func:`wear.wall.hits.hits_on_wall`'s. ``histogram_bins_deg``: the edges of the angle bins (deg from the
     normal, increasing from 0 to 90). A bad record raises ``ValueError`` naming its file and row; a plan whose
     chunks would not fit the memory budget is refused before any work."""
-    if not (isinstance(workers, int) and workers >= 1):
-        raise ValueError(f"workers={workers!r} is out of range: give an integer >= 1 (processes)")
+    check_count("workers", workers, low=1, what="processes")
+    if scheduler is not None:
+        check_instance("scheduler", scheduler, str, "a Dask scheduler: 'local' or an address, e.g. tcp://host:8786")
     edges = np.asarray(histogram_bins_deg, float)
     if len(edges) < 2 or edges[0] != 0.0 or edges[-1] != 90.0 or np.any(np.diff(edges) <= 0):
         raise ValueError(

@@ -52,8 +52,9 @@ from pathlib import Path
 
 import numpy as np
 
+from contact.checks import check_path
 from wear.wall.mesh import Wall
-from wear.wall.records import DENSITY_RANGE, ImpactRecords, numbers, where
+from wear.wall.records import DENSITY_RANGE, ImpactRecords, check_rows, numbers, where
 
 __all__ = ["read_fluent_dpm", "count_fluent_rows", "FLUENT_COLUMNS", "FLUENT_MASS_COLUMNS", "FLUENT_TIME"]
 
@@ -77,11 +78,8 @@ def read_fluent_dpm(
     rows ``start_row + 1`` to ``start_row + max_rows`` (all the rest when ``max_rows`` is None), the rows before
     skipped unparsed. ``wall`` is not needed (every record's face is −1, found from its position by
     :func:`wear.wall.hits.hits_on_wall`); it is accepted so that all readers are called alike."""
-    name = str(path)
-    if not (_is_integer(start_row) and start_row >= 0):
-        raise ValueError(f"start_row={start_row!r} is out of range: give the rows to skip, an integer >= 0")
-    if max_rows is not None and not (_is_integer(max_rows) and max_rows >= 1):
-        raise ValueError(f"max_rows={max_rows!r} is out of range: give an integer >= 1 (or None: all rows)")
+    name = str(check_path("path", path, "a Fluent DPM sample file"))
+    check_rows(start_row, max_rows)
     header, lines = _header(name, _lines(Path(path)))
     columns = [c for c in header if c != _NAME]
     rows: list[int] = []
@@ -99,10 +97,6 @@ def read_fluent_dpm(
         cells.append(_row(name, r, text, columns))
     table = dict(zip(columns, zip(*cells, strict=True), strict=True)) if cells else {c: () for c in columns}
     return _records(name, table, np.array(rows, dtype=np.int64))
-
-
-def _is_integer(value: object) -> bool:
-    return isinstance(value, (int, np.integer)) and not isinstance(value, bool)
 
 
 def count_fluent_rows(path: str | Path) -> int:

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from contact.checks import check_instance
 from wear.wall.grid import FaceGrid
 from wear.wall.locate import default_tolerance, distance_to_faces, nearest_faces
 from wear.wall.mesh import Wall
@@ -70,6 +71,10 @@ def hits_on_wall(
     :class:`wear.wall.grid.FaceGrid` to find the nearest faces and the distances to the faces given with (fast, for
     many records; default :func:`wear.wall.locate.nearest_faces`, :func:`wear.wall.locate.distance_to_faces`). See
     the module docstring for the bad records."""
+    check_instance(
+        "records", records, ImpactRecords, "a wear.wall.ImpactRecords: wear.wall.read_table(path) or the like"
+    )
+    check_instance("wall", wall, Wall, "a wear.wall.Wall: wear.wall.read_wall(path)")
     if normal is None:
         normal = "recorded" if records.normal is not None else "face"
     if normal not in NORMALS:

@@ -5,8 +5,7 @@ itself (thickness, exposure, service time, sand rates)."""
 from __future__ import annotations
 
 from wear.case import Case
-from wear.laws import LAW_CONSTANTS
-from wear.wall.laws import CLOSED_FORM_LAWS
+from wear.laws import CLOSED_FORM_LAWS, LAW_CONSTANTS
 
 __all__ = ["WALL_TABLE_KEYS", "check_law_keys", "keys_read"]
 

@@ -42,35 +42,45 @@ the tests is checked in tests/test_wall_laws.py.
 
 from __future__ import annotations
 
+import functools
 import math
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numba
 import numpy as np
 
+from contact.checks import check_instance
 from contact.theory import sphere_mass
 from wear.case import Case
 from wear.case.progress import progress_bar
 from wear.erosion.response import Footprint, ImpactResponse
 from wear.erosion.run import impact_response
 from wear.erosion.table import build_response_table, table_entries
-from wear.laws import LAWS, dnv_erosion_ratio, finnie_volume, flow_pressure_of, oka_constants, oka_erosion_ratio
+from wear.laws import (
+    CLOSED_FORM_LAWS,
+    LAWS,
+    dnv_erosion_ratio,
+    finnie_volume,
+    flow_pressure_of,
+    oka_constants,
+    oka_erosion_ratio,
+)
 
 __all__ = [
-    "CLOSED_FORM_LAWS",
     "DnvLaw",
     "FinnieLaw",
     "OkaLaw",
     "TableLaw",
     "WallLaw",
     "particle_mass",
+    "records_refusal",
     "table_axes_of",
+    "table_refusal",
     "wall_law",
 ]
 
-#: The laws evaluated in closed form per record; the others go through the response table.
-CLOSED_FORM_LAWS = ("finnie", "oka", "dnv")
 #: Impacts of the response table run at a time (the progress bar moves between batches).
 TABLE_BATCH = 32
 #: Relative tolerance of a record's particle density against the table's (a CSV prints ~15 digits).
@@ -206,32 +216,8 @@ class TableLaw:
 
     def refused(self, speed_m_s, density_kg_m3) -> tuple[int, str, str] | None:
         """The first record the table cannot take, as (its index, the record field: ``"velocity"`` or
-        ``"density"``, what is wrong with it), or None: a speed outside the table, a particle density other than
-        the table's."""
-        speed, rho = np.asarray(speed_m_s, float).reshape(-1), np.asarray(density_kg_m3, float).reshape(-1)
-        outside = np.flatnonzero((speed < self.speed_min) | (speed > self.speed_max))
-        if len(outside):
-            i = int(outside[0])
-            return (
-                i,
-                "velocity",
-                (
-                    f"the speed {speed[i]:.6g} m/s is outside the response table's speeds [{self.speed_min:g}, "
-                    f"{self.speed_max:g}] m/s: widen wall.table_speed_min / wall.table_speed_max"
-                ),
-            )
-        other = np.flatnonzero(np.abs(rho - self.density) > DENSITY_TOLERANCE * self.density)
-        if len(other):
-            i = int(other[0])
-            return (
-                i,
-                "density",
-                (
-                    f"{rho[i]:.6g} kg/m^3 is not the response table's particle density ball.density={self.density:g} "
-                    f"kg/m^3: the {self.name} law's table is for one particle material"
-                ),
-            )
-        return None
+        ``"density"``, what is wrong with it), or None: :func:`table_refusal`."""
+        return table_refusal(speed_m_s, density_kg_m3, self.speed_min, self.speed_max, self.density, self.name)
 
     def volume(self, angle_deg, speed_m_s, diameter_m, density_kg_m3, count) -> np.ndarray:
         """Eroded volume (m³) of each record: N m w(V, θ). A record the table cannot take (:meth:`refused`) is a
@@ -243,6 +229,38 @@ class TableLaw:
             name = "speed_m_s" if field_name == "velocity" else "density_kg_m3"
             raise ValueError(f"{name}[{i}]: {why}")
         return _table_volumes(self.normal_speed, self.angle, self.volume_per_kg, speed, theta, particle_mass(d, rho), n)
+
+
+def table_refusal(
+    speed_m_s, density_kg_m3, speed_min: float, speed_max: float, density: float, name: str
+) -> tuple[int, str, str] | None:
+    """The first record a response table of the law ``name`` for speeds ``speed_min`` to ``speed_max`` (m/s) and
+    particles of ``density`` (kg/m³) cannot take, as (its index, the record field: ``"velocity"`` or ``"density"``,
+    what is wrong with it), or None: a speed outside the table, a particle density other than the table's."""
+    speed, rho = np.asarray(speed_m_s, float).reshape(-1), np.asarray(density_kg_m3, float).reshape(-1)
+    outside = np.flatnonzero((speed < speed_min) | (speed > speed_max))
+    if len(outside):
+        i = int(outside[0])
+        return (
+            i,
+            "velocity",
+            (
+                f"the speed {speed[i]:.6g} m/s is outside the response table's speeds [{speed_min:g}, "
+                f"{speed_max:g}] m/s: widen wall.table_speed_min / wall.table_speed_max"
+            ),
+        )
+    other = np.flatnonzero(np.abs(rho - density) > DENSITY_TOLERANCE * density)
+    if len(other):
+        i = int(other[0])
+        return (
+            i,
+            "density",
+            (
+                f"{rho[i]:.6g} kg/m^3 is not the response table's particle density ball.density={density:g} "
+                f"kg/m^3: the {name} law's table is for one particle material"
+            ),
+        )
+    return None
 
 
 #: The law of a wall: any of these, each with ``name``, ``description`` and ``volume(...)``.
@@ -336,6 +354,7 @@ def _table_law(case: Case, progress: bool) -> TableLaw:
 def wall_law(case: Case, progress: bool = False) -> WallLaw:
     """The case's wear law (``wear.law``) per record of a wall (see the module docstring): a closed form, or the
     response table of an FE-informed law (built now: :attr:`TableLaw.seconds`; ``progress``: a bar on stderr)."""
+    check_instance("case", case, Case, "a wear.Case: wear.case.default_case('wall') or wear.case.load_case(path)")
     law, plate = case.wear.law, case.plate
     constants = {**case.wear.values(), "hardness": plate.hardness}
     material = plate.material()
@@ -351,3 +370,19 @@ def wall_law(case: Case, progress: bool = False) -> WallLaw:
     if law == "dnv":
         return DnvLaw(w.dnv_K, w.dnv_n, plate.density)
     return _table_law(case, progress)
+
+
+def records_refusal(case: Case) -> Callable[[np.ndarray, np.ndarray], tuple[int, str, str] | None] | None:
+    """The check of :meth:`TableLaw.refused` the case's law will make on each record, before its table is built
+    (the records that table cannot take are found in seconds rather than after it): None for a closed form, which
+    takes every record."""
+    if case.wear.law in CLOSED_FORM_LAWS:
+        return None
+    w = case.wall
+    return functools.partial(
+        table_refusal,
+        speed_min=w.table_speed_min,
+        speed_max=w.table_speed_max,
+        density=case.ball.density,
+        name=case.wear.law,
+    )

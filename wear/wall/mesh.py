@@ -30,6 +30,8 @@ from pathlib import Path
 import meshio
 import numpy as np
 
+from contact.checks import check_path
+
 __all__ = ["Wall", "concat_walls", "duplicate_faces", "read_surface", "SURFACE_CELLS", "THICKNESS_FIELD"]
 
 #: The cell field of a wall file that gives the wall thickness of each face (m).
@@ -219,7 +221,7 @@ def read_surface(path: str | Path, flip: bool = False, patch: str | None = None)
     one patch named ``patch`` (default: the file's stem); ``flip`` reverses the faces' orientation (see the module
     docstring). A cell field ``thickness_m`` in the file is the wall thickness of each face (m). A volume mesh is
     refused (give its boundary surface)."""
-    p = Path(path)
+    p = check_path("path", path, "a surface file (STL, OBJ, VTU, ...)")
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # meshio's notes on a format are not the user's business

@@ -36,7 +36,7 @@ from pathlib import Path
 import numpy as np
 
 from wear.wall.mesh import Wall
-from wear.wall.records import ImpactRecords, concat_records, numbers, where
+from wear.wall.records import ImpactRecords, check_rows, concat_records, numbers, where
 
 __all__ = ["read_patch_post_processing", "post_files", "scan_post_file", "triangle_normals", "REQUIRED"]
 
@@ -91,6 +91,7 @@ def read_patch_post_processing(
     hits all fell on processor 0 shows as records off their faces or tets: bad input naming the row); ``serial``
     says so for a part of a run (:func:`scan_post_file` of all its files), None: from the records read.
     ``start_row``, ``max_rows``: the part of one file to read (see the module docstring)."""
+    check_rows(start_row, max_rows)
     paths = [path] if isinstance(path, (str, Path)) else list(path)
     names = [f for p in paths for f in post_files(p)]
     if (start_row or max_rows is not None) and len(names) != 1:

@@ -30,9 +30,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from contact.checks import check_count
+
 __all__ = [
     "COLUMNS",
     "ImpactRecords",
+    "check_rows",
     "concat_records",
     "numbers",
     "where",
@@ -58,6 +61,14 @@ DENSITY_RANGE = (0.0, 30000.0)
 #: Fastest impact (m/s) a record may carry: above any particle a flow drives (a jet cutter's abrasive is under
 #: 1000 m/s), below the speeds of velocities written in mm/s (a 20 m/s hit is 20000 mm/s).
 SPEED_MAX = 2000.0
+
+
+def check_rows(start_row: int, max_rows: int | None) -> None:
+    """Refuse (``ValueError`` naming the argument) a part of a record file that is not rows ``start_row + 1`` to
+    ``start_row + max_rows``: ``start_row`` an integer >= 0, ``max_rows`` one >= 1 or None (all the rest)."""
+    check_count("start_row", start_row, low=0, what="rows to skip")
+    if max_rows is not None:
+        check_count("max_rows", max_rows, low=1, what="rows to read, or None: all the rest")
 
 
 def where(file: str, row: int, column: str | Sequence[str]) -> str:

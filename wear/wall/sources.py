@@ -24,12 +24,14 @@ chunks costs about k/2 readings of it; give very large tables as plain CSV or Pa
 from __future__ import annotations
 
 import gzip
+import os
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
+from contact.checks import check_count, check_path, fmt_argument
 from wear.wall.fluent import count_fluent_rows, read_fluent_dpm
 from wear.wall.mesh import Wall
 from wear.wall.openfoam import post_files, read_patch_post_processing, scan_post_file
@@ -84,8 +86,7 @@ def record_format(path: str | Path) -> str:
 def plan_chunks(paths: str | Path | Sequence[str | Path], chunk_rows: int) -> list[Chunk]:
     """The chunks of at most ``chunk_rows`` rows covering every row of the record files ``paths`` (a file or
     folder, or several) exactly once, in order (a Parquet file: one chunk per row group, whatever its size)."""
-    if not (isinstance(chunk_rows, int) and chunk_rows >= 1):
-        raise ValueError(f"chunk_rows={chunk_rows!r} is out of range: give an integer >= 1 (rows per chunk)")
+    check_count("chunk_rows", chunk_rows, low=1, what="rows per chunk")
     chunks: list[Chunk] = []
     for path in record_files(paths):
         kind = record_format(path)
@@ -126,8 +127,14 @@ def read_chunk(chunk: Chunk, wall: Wall | None) -> ImpactRecords:
 def record_files(paths: str | Path | Sequence[str | Path]) -> list[Path]:
     """The record files and OpenFOAM folders of ``paths`` (a file or folder, or several): each file and OpenFOAM
     folder itself, and of another folder its record files (:data:`RECORD_SUFFIXES`), by name."""
-    paths = [paths] if isinstance(paths, (str, Path)) else list(paths)
-    return [f for path in paths for f in _record_files(Path(path))]
+    if isinstance(paths, (str, os.PathLike)):
+        paths = [paths]
+    elif not isinstance(paths, Sequence) or not paths:
+        raise ValueError(
+            f"records={fmt_argument(paths)} is not a record file or folder: give a path (str or pathlib.Path) or a "
+            "non-empty list of them"
+        )
+    return [f for path in paths for f in _record_files(check_path("records", path, "a record file or folder"))]
 
 
 def _record_files(p: Path) -> list[Path]:

@@ -39,7 +39,7 @@ from pathlib import Path
 import numpy as np
 
 from wear.wall.mesh import Wall
-from wear.wall.records import COLUMNS, ImpactRecords, numbers, where
+from wear.wall.records import COLUMNS, ImpactRecords, check_rows, numbers, where
 
 __all__ = ["read_table", "is_parquet", "parquet_file", "TABLE_COLUMNS", "TABLE_DEFAULTS"]
 
@@ -60,6 +60,7 @@ def read_table(
     """The impact table of a CSV (or, with pyarrow, Parquet) file ``path`` (see the module docstring); ``wall``
     is needed only when the table gives faces without positions. ``start_row``, ``max_rows``, ``offset``: read a
     part of the file (see the module docstring)."""
+    check_rows(start_row, max_rows)
     p = Path(path)
     name = str(p)
     if is_parquet(p):

@@ -13,6 +13,9 @@ warnings, the command's ``note:`` lines) on values that look like other units (S
   and, on a flat wall, on it: the distance does not tell. When at least :data:`SPREAD_RECORDS` distinct hit points
   span less than :data:`SPAN_RATIO` of the wall's extent (the diagonals of their bounding boxes), refused.
 
+- *What the law takes.* A response table's law (:func:`wear.wall.laws.records_refusal`) refuses a record outside
+  its speeds or of another particle density: found here rather than after the table's half minute.
+
 **Exposure.** The rates are volume / (area × exposure): an exposure below :data:`EXPOSURE_MIN` (no CFD or DEM
 run's hits stand for less than a nanosecond; far below, the rates overflow) is refused (:func:`check_exposure`).
 
@@ -26,7 +29,7 @@ from __future__ import annotations
 
 import dataclasses
 import warnings
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 import numpy as np
 
@@ -68,10 +71,17 @@ THICKNESS_NOTE = 0.5
 _UNITS = "other units (a wall in mm and records in m, or the reverse)? give both in m"
 
 
-def check_records_fit(chunks: Sequence[Chunk], wall: Wall, normal: str | None = None) -> None:
+def check_records_fit(
+    chunks: Sequence[Chunk],
+    wall: Wall,
+    normal: str | None = None,
+    refused: Callable[[np.ndarray, np.ndarray], tuple[int, str, str] | None] | None = None,
+) -> None:
     """Refuse (``ValueError``, one line naming the records file) records that do not lie on ``wall`` as a CFD
     run's do (module docstring), from the first :data:`SAMPLE_ROWS` rows of the first of ``chunks``; note a
-    particle density that looks like g/cm³. A bad row among them is refused as the run would refuse it."""
+    particle density that looks like g/cm³. A bad row among them is refused as the run would refuse it, and so is
+    one the law will refuse: ``refused(speed_m_s, density_kg_m3)`` (:func:`wear.wall.laws.records_refusal`), which
+    gives the first such record as (index, field, why) or None."""
     if not chunks:
         return
     first = chunks[0]
@@ -96,6 +106,12 @@ def check_records_fit(chunks: Sequence[Chunk], wall: Wall, normal: str | None = 
             f"wall's extent ({extent:.3g} m), all on {len(np.unique(hits.face[hits.kept]))} of its {len(wall)} "
             f"faces: {_UNITS}"
         )
+    if refused is not None:
+        kept = np.flatnonzero(hits.kept)
+        bad = refused(hits.speed[kept], records.density[kept])
+        if bad is not None:
+            i, field_name, why = bad
+            raise ValueError(f"{records.where(int(kept[i]), field_name)}: {why}")
     light = np.flatnonzero(records.density < DENSITY_NOTE)
     if len(light):
         i = light[0]

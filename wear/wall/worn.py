@@ -43,6 +43,7 @@ from dataclasses import dataclass
 import meshio
 import numpy as np
 
+from contact.checks import check_instance
 from wear.wall.mesh import Wall
 
 __all__ = [
@@ -117,6 +118,7 @@ def wall_wear(wall: Wall, volume_m3: np.ndarray, exposure_s: float, density_kg_m
 def remaining_life(wear: WallWear, thickness_m: float | np.ndarray) -> np.ndarray:
     r"""The time (s) each face takes to lose ``thickness_m`` (m; a value or one per face) at its thickness-loss
     rate: :math:`t_f / \dot h_f`, ``inf`` on a face without wear, NaN on a face of unknown thickness (NaN)."""
+    check_instance("wear", wear, WallWear, "a wear.wall.WallWear: wear.wall.wall_wear(...)")
     rate = wear.thickness_loss_rate_m_s
     thickness = np.asarray(thickness_m, dtype=float)
     if thickness.ndim == 0:
