@@ -10,12 +10,25 @@ import concurrent.futures as cf
 import logging
 import multiprocessing
 import os
+import re
+import socket
 import threading
 import time
+import warnings
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 
-__all__ = ["THREAD_VARIABLES", "dask_client", "worker_pool"]
+__all__ = ["THREAD_VARIABLES", "bound_workers", "dask_client", "machine_cores", "worker_pool"]
+
+#: Seconds a Dask client waits for a scheduler that accepted the connection (a remote one may be slow to answer).
+CONNECT_SECONDS = 30.0
+#: Seconds to open a TCP connection to a scheduler's address before it is refused as unreachable.
+PROBE_SECONDS = 5.0
+_TCP_ADDRESS = re.compile(r"(?:tcp://)?\[?(?P<host>[^\[\]/]+?)\]?:(?P<port>\d+)")
+
+#: Seconds the worker processes of a local pool have to start (spawn, import numpy and numba) before the pool is
+#: given up: a worker that dies while starting would otherwise leave the pool waiting for ever.
+STARTUP_SECONDS = 120.0
 
 #: Environment variables set to the thread count (1) of every worker, before numpy and numba load.
 THREAD_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS")
@@ -64,10 +77,36 @@ def _threads_per_worker(workers: int | None) -> int:
     return 1
 
 
-def worker_pool(workers: int, initializer: Callable | None = None, initargs: tuple = ()) -> cf.ProcessPoolExecutor:
-    """A pool of ``workers`` processes: spawned, each with the thread count of :func:`_threads_per_worker`
-    (:data:`THREAD_VARIABLES`), each ending when this process does, each running ``initializer(*initargs)`` once
-    (e.g. to keep data every task of the pool reads)."""
+def machine_cores() -> int:
+    """The cores this process may run on (its CPU affinity where the system tells, else the machine's count)."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # not on Linux
+        return os.cpu_count() or 1
+
+
+def bound_workers(workers: int, tasks: int, option: str) -> int:
+    """The worker processes to start for ``tasks`` tasks when ``workers`` are asked for (by ``option``): at most
+    one per task and one per core (:func:`machine_cores`; more processes than cores only share them, each holding
+    its own memory). Fewer cores than asked for is a warning (the command's ``note:``)."""
+    cores = machine_cores()
+    if workers > cores:
+        warnings.warn(
+            f"{option}={workers}: this machine has {cores} cores; running {min(cores, max(tasks, 1))} worker processes",
+            stacklevel=2,
+        )
+    return max(1, min(workers, cores, tasks))
+
+
+@contextmanager
+def worker_pool(
+    workers: int, initializer: Callable | None = None, initargs: tuple = ()
+) -> Iterator[cf.ProcessPoolExecutor]:
+    """A pool of ``workers`` processes for a ``with`` block: spawned, each with the thread count of
+    :func:`_threads_per_worker` (:data:`THREAD_VARIABLES`), each ending when this process does, each running
+    ``initializer(*initargs)`` once (e.g. to keep data every task of the pool reads). Leaving the block normally
+    waits for the tasks submitted; leaving it by an exception (Ctrl-C, a task's error) cancels the queued tasks
+    and terminates the workers at once."""
     threads = _threads_per_worker(workers)
     pool = cf.ProcessPoolExecutor(
         max_workers=workers,
@@ -77,9 +116,48 @@ def worker_pool(workers: int, initializer: Callable | None = None, initargs: tup
     )
     with _thread_environment(threads):
         # the pool spawns a process per task submitted while none is idle: start them all now, in this environment
-        for done in [pool.submit(_started) for _ in range(workers)]:
-            done.result()
-    return pool
+        try:
+            for done in [pool.submit(_started) for _ in range(workers)]:
+                done.result(timeout=STARTUP_SECONDS)
+        except BaseException as exc:
+            _kill(pool)
+            if isinstance(exc, cf.TimeoutError):
+                raise RuntimeError(
+                    f"{workers} worker processes did not start within {STARTUP_SECONDS:g} s (see their messages above)"
+                ) from None
+            raise
+    try:
+        yield pool
+    except BaseException:
+        _kill(pool)
+        raise
+    pool.shutdown(wait=True, cancel_futures=True)
+
+
+def _kill(pool: cf.ProcessPoolExecutor) -> None:
+    """Stop ``pool`` now: cancel its queued tasks and terminate its worker processes (a task running for minutes
+    would otherwise hold Ctrl-C until it ends)."""
+    processes = list((getattr(pool, "_processes", None) or {}).values())
+    pool.shutdown(wait=False, cancel_futures=True)
+    for process in processes:
+        process.terminate()
+    for process in processes:
+        process.join(timeout=5.0)
+
+
+def _probe(address: str) -> None:
+    """Refuse a TCP scheduler address where nothing listens, at once: Dask's client retries a refused connection
+    until its timeout (:data:`CONNECT_SECONDS`). Other protocols (tls://, ucx://, ...) are left to Dask."""
+    match = _TCP_ADDRESS.fullmatch(address)
+    if match is None:
+        return
+    try:
+        with socket.create_connection((match["host"], int(match["port"])), timeout=PROBE_SECONDS):
+            pass
+    except OSError as exc:
+        raise ValueError(
+            f"scheduler={address!r}: cannot connect to a Dask scheduler ({exc.strerror or exc or 'timed out'})"
+        ) from None
 
 
 def dask_client(dask_local: int | None = None, scheduler: str | None = None):
@@ -93,8 +171,9 @@ def dask_client(dask_local: int | None = None, scheduler: str | None = None):
             "--dask-local/--scheduler need dask.distributed, which is not installed: pip install 'impactwear[dask]'"
         ) from None
     if scheduler is not None:
+        _probe(scheduler)
         try:
-            return distributed.Client(scheduler, timeout="30s")
+            return distributed.Client(scheduler, timeout=f"{CONNECT_SECONDS:g}s")
         except (OSError, TimeoutError) as exc:
             raise ValueError(f"scheduler={scheduler!r}: cannot connect to a Dask scheduler ({exc})") from None
     threads = _threads_per_worker(dask_local)

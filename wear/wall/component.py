@@ -258,7 +258,7 @@ def erode_component(
     paths = record_files(records)
     if chunk_rows is None:
         formats = {record_format(p) for p in paths}
-        chunk_rows = min(chunk_rows_for(wall, workers, f) for f in formats)
+        chunk_rows = min(chunk_rows_for(wall, None, f) for f in formats)
     chunks = plan_chunks(paths, chunk_rows)
     # before the law's table, which may take half a minute
     check_records_fit(chunks, wall, normal, records_refusal(case))

@@ -13,8 +13,9 @@ law, and the chunk's per-face sums are
 (one ``np.bincount`` each; the last angle bin is closed at 90°), and over the whole wall the particles by speed
 :math:`G_c = \sum_{V_i \in [s_c, s_{c+1})} N_i` (:data:`SPEED_EDGES_M_S`; slower and faster particles in the first
 and last bins) and the first and last hit times of the records read. Sums of chunks add face by face (:func:`add_sums`),
-so the chunks may be summed anywhere; they are added in the plan's order, so that the result does not depend on
-the number of workers. The mean speed of a face's particles is :math:`S_f / N_f`.
+so the chunks may be summed anywhere; they are added in the plan's order, and the plan does not depend on the
+number of workers (:func:`chunk_rows_for`), so that the sums are the same to the last digit on 1 worker or many.
+The mean speed of a face's particles is :math:`S_f / N_f`.
 
 **The law** is any object with ``volume(angle_deg, speed_m_s, diameter_m, density_kg_m3, count) -> ndarray``: the
 eroded volume (m³) of each record, given arrays of equal length (``count``: particles per record).
@@ -22,7 +23,10 @@ eroded volume (m³) of each record, given arrays of equal length (``count``: par
 **Memory.** Each worker reads and sums one chunk at a time, needing about :data:`BYTES_PER_RECORD` per record;
 at most :func:`in_flight` chunks are submitted ahead (the next as a result comes back) and their per-face results
 wait to be added in order. :func:`chunk_rows_for` is the largest chunk that fits the budget of
-:mod:`wear.case.budget`, and a plan of larger chunks is refused before any work.
+:mod:`wear.case.budget` with a worker on every core, and a plan of larger chunks is refused before any work.
+
+**Workers.** A local pool (``workers``) or a loopback Dask cluster has at most one process per chunk and per core
+(:func:`wear.case.workers.bound_workers`); Ctrl-C terminates its processes.
 """
 
 from __future__ import annotations
@@ -37,7 +41,7 @@ import numpy as np
 from contact.checks import check_count, check_instance
 from wear.case.budget import check_budget, memory_budget
 from wear.case.progress import progress_bar
-from wear.case.workers import dask_client, worker_pool
+from wear.case.workers import bound_workers, dask_client, machine_cores, worker_pool
 from wear.wall.grid import FaceGrid, face_grid
 from wear.wall.hits import hits_on_wall
 from wear.wall.mesh import Wall
@@ -202,11 +206,13 @@ def _memory_need(rows: float, per_record: float, wall: Wall, workers: int, edges
 
 
 def chunk_rows_for(
-    wall: Wall, workers: int = 1, format: str = "openfoam", edges: Sequence[float] = DEFAULT_ANGLE_EDGES_DEG
+    wall: Wall, workers: int | None = None, format: str = "openfoam", edges: Sequence[float] = DEFAULT_ANGLE_EDGES_DEG
 ) -> int:
     """The largest chunk (rows, at most :data:`MAX_CHUNK_ROWS`) of records of ``format`` whose chunks being summed
-    on ``workers`` workers fit the memory budget (:func:`wear.case.budget.memory_budget`; see the module
-    docstring)."""
+    on ``workers`` workers (default: one per core, :func:`wear.case.workers.machine_cores`, whatever the workers
+    asked for: the plan, and so the sums' last digits, do not depend on them) fit the memory budget
+    (:func:`wear.case.budget.memory_budget`; see the module docstring)."""
+    workers = machine_cores() if workers is None else workers
     per_record = BYTES_PER_RECORD[format]
     free = memory_budget() - _memory_need(0, per_record, wall, workers, edges)
     return int(max(1, min(MAX_CHUNK_ROWS, free // (workers * per_record))))
@@ -290,6 +296,8 @@ def erode_wall(
             "normal) from 0 to 90"
         )
     chunks = list(chunks)
+    if scheduler is None or scheduler == "local":
+        workers = bound_workers(workers, len(chunks), "workers")
     if chunks:
         per_record = max(BYTES_PER_RECORD.get(c.format, max(BYTES_PER_RECORD.values())) for c in chunks)
         check_budget(

@@ -40,10 +40,9 @@ def run_local(pending: list[SweepCase], stage: str, workers: int, done: Done) ->
     attempts: dict[str, int] = {}
     breaks_in_a_row = 0
     while queue:
-        pool = worker_pool(workers)
         running: dict[cf.Future, SweepCase] = {}
         broken = False
-        try:
+        with worker_pool(workers) as pool:  # Ctrl-C terminates the workers
             while queue or running:
                 while queue and len(running) < workers and not broken:
                     sc = queue.pop()
@@ -66,10 +65,6 @@ def run_local(pending: list[SweepCase], stage: str, workers: int, done: Done) ->
                     done(sc, outcome)
                 if broken and not running:
                     break  # every in-flight case is accounted for: start a fresh pool
-        except BaseException:
-            _kill_pool(pool)
-            raise
-        pool.shutdown(wait=True, cancel_futures=True)
         if broken:
             breaks_in_a_row += 1
             if breaks_in_a_row >= MAX_ATTEMPTS + 2:
@@ -77,14 +72,6 @@ def run_local(pending: list[SweepCase], stage: str, workers: int, done: Done) ->
                     f"local worker processes died {breaks_in_a_row} times in a row without finishing a case "
                     "(see their messages above); finished cases are kept"
                 )
-
-
-def _kill_pool(pool: cf.ProcessPoolExecutor) -> None:
-    """Stop a pool now (Ctrl-C): cancel queued work and terminate the worker processes."""
-    processes = list(getattr(pool, "_processes", {}).values())
-    pool.shutdown(wait=False, cancel_futures=True)
-    for proc in processes:
-        proc.terminate()
 
 
 def run_dask(pending: list[SweepCase], stage: str, client, done: Done) -> None:

@@ -40,6 +40,7 @@ from wear.app.outputs.writer import remove_stale_temps, write_text
 from wear.app.sweep.execution import dask_client, run_dask, run_local
 from wear.app.sweep.results import write_outputs
 from wear.app.sweep.spec import SweepCase, SweepSpec
+from wear.case.workers import bound_workers, machine_cores
 
 __all__ = ["SweepOutcome", "run_sweep"]
 
@@ -94,9 +95,10 @@ def run_sweep(
 ) -> SweepOutcome:
     """Run every unfinished case of ``spec`` into folder ``out`` (see the module doc) and write the tables.
 
-    Exactly one way of running: ``workers`` local processes (default: ``os.cpu_count()``), a loopback
-    ``LocalCluster`` of ``dask_local`` processes, or the Dask cluster at ``scheduler``. A KeyboardInterrupt stops
-    the workers, keeps every finished case and re-raises (``results.csv`` is then not rewritten).
+    Exactly one way of running: ``workers`` local processes (default and at most: one per core, and one per case),
+    a loopback ``LocalCluster`` of ``dask_local`` processes (as many at most), or the Dask cluster at
+    ``scheduler``. A KeyboardInterrupt stops the workers, keeps every finished case and re-raises (``results.csv``
+    is then not rewritten).
     """
     if sum(x is not None for x in (workers, dask_local, scheduler)) > 1:
         raise ValueError("workers/dask_local/scheduler: give at most one way of running the sweep")
@@ -162,7 +164,7 @@ def _run_sweep(spec: SweepSpec, out: Path, workers, dask_local, client, quiet: b
         if pending and client is not None:
             run_dask(pending, spec.stage, client, done)
         elif pending and dask_local is not None:
-            local = dask_client(dask_local, None)
+            local = dask_client(bound_workers(dask_local, len(pending), "dask_local"), None)
             try:
                 run_dask(pending, spec.stage, local, done)
             finally:
@@ -170,7 +172,7 @@ def _run_sweep(spec: SweepSpec, out: Path, workers, dask_local, client, quiet: b
                 local.close()
                 cluster.close()
         elif pending:
-            run_local(pending, spec.stage, workers or os.cpu_count() or 1, done)
+            run_local(pending, spec.stage, bound_workers(workers or machine_cores(), len(pending), "workers"), done)
     except KeyboardInterrupt:
         outcome.interrupted = True
         bar.close()
