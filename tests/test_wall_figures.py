@@ -1,6 +1,7 @@
-"""The wall's figures show what they say: each face coloured by its own rate on a scale from 0 to the largest, the
-faces without wear in grey, the hot spot marked at its face's centre with its rate, the units on the colour bar and
-the axes; the histograms hold every particle in the bins given."""
+"""The wall's figures show what they say: each face coloured by its own rate on a log scale of three decades below
+the largest, the faces without wear in grey, equal axes the wall fills, the hot spot marked at its face's centre
+with its rate labelled off the wall, the units on the colour bar and the axes; the histograms hold every particle
+in the bins given and say they count particles."""
 
 from __future__ import annotations
 
@@ -35,15 +36,21 @@ def test_the_wall_is_coloured_face_by_face_with_the_hot_spot_marked(captured, tm
     grey = np.all(np.isclose(colours[:, :3], wall_figures.UNWORN[:3]), axis=1)
     assert grey.sum() == (rate[owner] == 0.0).sum()  # grey exactly as many as the faces nothing wore
     bar = fig.axes[1]
-    assert "mm/year" in bar.get_ylabel()
-    assert bar.get_ylim() == pytest.approx((0.0, 80.0))  # the scale runs to the largest rate
-    cmap = wall_figures.colormaps["inferno_r"]
+    assert "mm/year" in bar.get_ylabel() and "log" in bar.get_ylabel()
+    assert bar.get_ylim() == pytest.approx((0.08, 80.0))  # three decades up to the largest rate
+    cmap = wall_figures.colormaps["viridis"]
     worn = {tuple(np.round(c, 6)) for c in colours[~grey]}
-    assert worn == {tuple(np.round(cmap(r / 80.0), 6)) for r in (40.0, 10.0, 80.0)}
+    assert worn == {tuple(np.round(cmap(np.log10(r / 0.08) / 3.0), 6)) for r in (40.0, 10.0, 80.0)}
     label = next(t for t in ax.texts if "hot spot" in t.get_text())
     assert "80 mm/year" in label.get_text()
+    assert label.get_position() == (0.02, 0.98) and label.anncoords == "axes fraction"  # in the corner, off the wall
     marker = ax.collections[-1]._offsets3d
     assert np.allclose([m[0] for m in marker], wall.centre[11])
+    # equal axes: each axis' box length in proportion to its range (the 4 cm x 3 cm plate, flat: 5% of 4 cm)
+    ranges = np.array([np.ptp(ax.get_xlim()), np.ptp(ax.get_ylim()), np.ptp(ax.get_zlim())])
+    assert ranges == pytest.approx([0.04, 0.03, 0.002], rel=1e-9)
+    box = np.array(ax.get_box_aspect())
+    assert box / box[0] == pytest.approx(ranges / ranges[0], rel=1e-9)
     assert all(u in ax.get_xlabel() + ax.get_ylabel() + ax.get_zlabel() for u in ("x (m)", "y (m)", "z (m)"))
 
 
@@ -61,3 +68,4 @@ def test_the_histograms_hold_every_particle(captured, tmp_path):
     assert heights.max() == 10.0
     assert "deg" in ax2.get_xlabel() and ax2.get_xlim() == (0.0, 90.0)
     assert ax2.patches[0].get_path().vertices[:, 1].max() == 5.0
+    assert ax1.get_ylabel() == ax2.get_ylabel() == "particles per bin"

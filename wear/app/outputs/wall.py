@@ -112,7 +112,8 @@ def _write_files(run: ComponentErosion, out: Path, notes: Sequence[str], figures
         hot = int(spots.face[0]) if len(spots.face) else None
         law = f"{run.law_name} law, exposure {run.exposure_s:.4g} s"
         fig.plot_wall_rate(wall, run.wear.thickness_loss_mm_year, hot, out / "wall.png", law)
-        title = f"{summary['records']['on_wall']} impact records on the wall"
+        particles = float(np.sum(sums.speed_histogram))
+        title = f"particles on the wall: {particles:,.0f} in {summary['records']['on_wall']:,} impact records"
         fig.plot_impact_histograms(
             speed_edges, sums.speed_histogram, angle_edges, sums.angle_histogram.sum(axis=0), out / "impacts.png", title
         )
