@@ -21,6 +21,7 @@ import pytest
 from wall_cases import OUTPUTS, RECORDS, flat_mesh, openfoam_finnie_case, write_csv
 
 from wear.case import Case
+from wear.case.workers import machine_cores
 from wear.wall import (
     concat_records,
     face_sum,
@@ -232,8 +233,8 @@ def test_skipped_records_are_counted_not_summed(tmp_path):
 
 def test_chunks_too_large_for_the_memory_budget_are_refused_before_any_work(bend):
     wall, law, _ = bend
-    huge = [Chunk("missing.csv", "csv", 0, 10**9)]
-    fits = chunk_rows_for(wall, 2, "csv")
+    huge = [Chunk("missing.csv", "csv", 0, 10**9), Chunk("missing.csv", "csv", 10**9, 10**9)]
+    fits = chunk_rows_for(wall, min(2, machine_cores()), "csv")  # the pool: a worker per chunk and per core
     with pytest.raises(ValueError, match=rf"^missing\.csv: chunk_rows=1e\+09 needs .* give chunk_rows <= {fits}$"):
         erode_wall(huge, wall, law, workers=2, progress=False)
 
