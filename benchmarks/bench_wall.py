@@ -310,17 +310,27 @@ def main(argv: list[str] | None = None) -> int:
         chunks = plan_chunks(path, 500_000)
         part = chunks[: max(1, int(args.compare) // 500_000)]
         rows = sum(c.rows for c in part)
-        times = {}
+        times, fixed = {}, {}
         cores = parallel_cores()
+        os.makedirs(os.path.join(folder, "tiny"))
+        tiny = plan_chunks(write_parquet(wall, 2000, os.path.join(folder, "tiny"), rng, group=1000), 500_000)
         for workers in (1, 2):
+            # the fixed cost of a run: the pool's start (spawned processes importing the toolkit) and each
+            # worker's first chunk (the wall's grid, numba's cached kernels): two chunks of 1000 impacts
+            t0 = time.perf_counter()
+            erode_wall(tiny, wall, finnie, workers=workers, progress=False)
+            fixed[workers] = time.perf_counter() - t0
             t0 = time.perf_counter()
             sums = erode_wall(part, wall, finnie, workers=workers, progress=False)
             times[workers] = time.perf_counter() - t0
             assert sums.records.sum() == rows
+        steady = (times[1] - fixed[1]) / (times[2] - fixed[2])
         print(
             f"   {rows:.3g} impacts: 1 worker (this process) {times[1]:.1f} s, 2 workers {times[2]:.1f} s, "
             f"speed-up {times[1] / times[2]:.2f}; a pure-Python loop on 2 processes against 1 at the same time: "
-            f"{cores:.2f} (the cores this run gets; load average {os.getloadavg()[0]:.2f})"
+            f"{cores:.2f} (the cores this run gets; load average {os.getloadavg()[0]:.2f})\n"
+            f"   fixed cost of a run (2 chunks of 1000 impacts): 1 worker {fixed[1]:.1f} s, 2 workers {fixed[2]:.1f} s "
+            f"(the pool's start); speed-up without it {steady:.2f}"
         )
         del impacts, points, angle, speed, face, distance
         peak = PeakMemory()
