@@ -562,13 +562,17 @@ class WallSpec(Table):
             )
         self._check_table_reach()
 
+    def table_normal_speed_min(self) -> float:
+        """The response table's lowest normal speed (m/s): the lowest speed at its last angle."""
+        return self.table_speed_min * math.cos(math.radians(self.table_angle_max))
+
     def _check_table_reach(self) -> None:
         r"""Refuse a response table whose impacts would exceed the engine's :data:`contact.impact.SPEED_MAX`. Its
         normal speeds run geometrically, a ratio :math:`r = (V_{max} / (V_{min}\cos\theta_{top}))^{1/(n-1)}`
         apart (:func:`wear.wall.laws.table_axes_of`); a record of speed up to :math:`V_{max}` at angle θ is
         interpolated between the nodes around :math:`V\cos\theta`, the upper one up to :math:`r V_{max}\cos\theta`
         in normal speed, :math:`r V_{max}` in speed."""
-        low = self.table_speed_min * math.cos(math.radians(self.table_angle_max))
+        low = self.table_normal_speed_min()
         span = math.log(self.table_speed_max / low)
         step = span / (self.table_speeds - 1)
         if self.table_speed_max * math.exp(step) * (1.0 + 1e-9) <= SPEED_MAX:

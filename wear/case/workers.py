@@ -90,12 +90,12 @@ def bound_workers(workers: int, tasks: int, option: str) -> int:
     one per task and one per core (:func:`machine_cores`; more processes than cores only share them, each holding
     its own memory). Fewer cores than asked for is a warning (the command's ``note:``)."""
     cores = machine_cores()
+    bounded = max(1, min(workers, cores, tasks))
     if workers > cores:
         warnings.warn(
-            f"{option}={workers}: this machine has {cores} cores; running {min(cores, max(tasks, 1))} worker processes",
-            stacklevel=2,
+            f"{option}={workers}: this machine has {cores} cores; running {bounded} worker processes", stacklevel=2
         )
-    return max(1, min(workers, cores, tasks))
+    return bounded
 
 
 @contextmanager

@@ -102,9 +102,9 @@ def hits_on_wall(
     n = records.normal if normal == "recorded" else wall.normal[face]
     speed = records.speed
     cosine = np.clip(np.einsum("ij,ij->i", n, records.velocity) / speed, -1.0, 1.0)
-    away = ~(distance > tolerance) & (cosine < _GRAZING_COSINE)
-    angle = np.degrees(np.arccos(np.where(away, cosine, np.maximum(cosine, 0.0))))  # grazing: 90°, not past it
     far = distance > tolerance
+    away = ~far & (cosine < _GRAZING_COSINE)
+    angle = np.degrees(np.arccos(np.where(away, cosine, np.maximum(cosine, 0.0))))  # grazing: 90°, not past it
     skipped = {}
     for bad, reason in ((far, "far_from_wall"), (away, "leaving_wall")):
         hit = np.flatnonzero(bad)

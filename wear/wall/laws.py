@@ -274,8 +274,7 @@ def table_axes_of(case: Case) -> tuple[np.ndarray, np.ndarray]:
     [``wall.table_speed_min``, ``wall.table_speed_max``] at every angle of the table)."""
     w = case.wall
     angles = np.linspace(0.0, w.table_angle_max, w.table_angles)
-    low = w.table_speed_min * math.cos(math.radians(w.table_angle_max))
-    return np.geomspace(low, w.table_speed_max, w.table_speeds), angles
+    return np.geomspace(w.table_normal_speed_min(), w.table_speed_max, w.table_speeds), angles
 
 
 @dataclass(frozen=True)

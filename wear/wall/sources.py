@@ -88,7 +88,8 @@ def plan_chunks(paths: str | Path | Sequence[str | Path], chunk_rows: int) -> li
     folder, or several) exactly once, in order (a Parquet file: one chunk per row group, whatever its size)."""
     check_count("chunk_rows", chunk_rows, low=1, what="rows per chunk")
     chunks: list[Chunk] = []
-    for path in record_files(paths):
+    files = record_files(paths)
+    for path in files:
         kind = record_format(path)
         if kind == "openfoam":
             files = post_files(path)
@@ -108,7 +109,7 @@ def plan_chunks(paths: str | Path | Sequence[str | Path], chunk_rows: int) -> li
         else:
             chunks += _parquet_chunks(Path(path))
     if not sum(c.rows for c in chunks):  # an OpenFOAM file may be a header alone: refused as an empty table is
-        shown = ", ".join(str(p) for p in record_files(paths))
+        shown = ", ".join(str(p) for p in files)
         raise ValueError(f"records={shown!r} hold no rows, only headers: give one row per impact record")
     return chunks
 

@@ -20,7 +20,7 @@ import numpy as np
 from wear.wall.hits import Hits
 from wear.wall.records import ImpactRecords
 
-__all__ = ["face_sum", "record_volumes"]
+__all__ = ["face_sum", "record_volumes", "refuse_records"]
 
 
 def face_sum(n_faces: int, hits: Hits, values: np.ndarray) -> np.ndarray:
@@ -29,17 +29,26 @@ def face_sum(n_faces: int, hits: Hits, values: np.ndarray) -> np.ndarray:
     return np.bincount(hits.face[kept], weights=np.asarray(values, float)[kept], minlength=n_faces)
 
 
+def refuse_records(refused, records: ImpactRecords, hits: Hits) -> None:
+    """Raise a ``ValueError`` naming the file, row and column of the first record kept on the wall that
+    ``refused(speed_m_s, density_kg_m3)`` (a law's ``refused``, e.g. :meth:`wear.wall.laws.TableLaw.refused`; None:
+    every record taken) gives as (index among the kept, field, why)."""
+    if refused is None:
+        return
+    kept = np.flatnonzero(hits.kept)
+    bad = refused(hits.speed[kept], records.density[kept])
+    if bad is not None:
+        i, field_name, why = bad
+        raise ValueError(f"{records.where(int(kept[i]), field_name)}: {why}")
+
+
 def record_volumes(law, records: ImpactRecords, hits: Hits) -> np.ndarray:
     """The eroded volume (m³) of each record by ``law`` (:func:`wear.wall.laws.wall_law`, or any object with its
     ``volume(angle_deg, speed_m_s, diameter_m, density_kg_m3, count)``); 0 for a skipped record. A record the law
     cannot take (a law's ``refused``, e.g. a speed outside a response table) is a ``ValueError`` naming its file, row
     and column, and so is a volume that is not finite and >= 0 (a law's bug or its constants)."""
     kept = hits.kept
-    refused = getattr(law, "refused", None)
-    bad = None if refused is None else refused(hits.speed[kept], records.density[kept])
-    if bad is not None:
-        i, field_name, why = bad
-        raise ValueError(f"{records.where(int(np.flatnonzero(kept)[i]), field_name)}: {why}")
+    refuse_records(getattr(law, "refused", None), records, hits)
     volume = np.zeros(len(records))
     if kept.any():
         volume[kept] = law.volume(

@@ -37,6 +37,7 @@ from wear.case import Case
 from wear.wall.hits import hits_on_wall
 from wear.wall.mesh import Wall
 from wear.wall.sources import Chunk, read_chunk
+from wear.wall.sums import refuse_records
 
 __all__ = [
     "DENSITY_NOTE",
@@ -106,12 +107,7 @@ def check_records_fit(
             f"wall's extent ({extent:.3g} m), all on {len(np.unique(hits.face[hits.kept]))} of its {len(wall)} "
             f"faces: {_UNITS}"
         )
-    if refused is not None:
-        kept = np.flatnonzero(hits.kept)
-        bad = refused(hits.speed[kept], records.density[kept])
-        if bad is not None:
-            i, field_name, why = bad
-            raise ValueError(f"{records.where(int(kept[i]), field_name)}: {why}")
+    refuse_records(refused, records, hits)
     light = np.flatnonzero(records.density < DENSITY_NOTE)
     if len(light):
         i = light[0]
