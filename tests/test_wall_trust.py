@@ -222,7 +222,7 @@ def test_a_nan_point_in_an_openfoam_mesh_names_the_points_file_and_row(tmp_path,
     lines[first + 1 + 12] = "(nan 0 0)"  # point 12
     points.write_bytes(gzip.compress(("\n".join(lines) + "\n").encode()))
     line = refused(["wall", str(RECORDS), str(case), "--set", "wall.exposure=1.0"], tmp_path, capsys)
-    assert "points, point 12: (nan 0 0) is not a finite position (m)" in line, line
+    assert "points.gz, point 12: (nan 0 0) is not a finite position (m)" in line, line
 
 
 # --- 10. grazing hits and --patches ---------------------------------------------------------------------------------

@@ -35,7 +35,7 @@ from contact.checks import check_count, check_instance, check_path
 from wear.case import Case
 from wear.case.jobs import default_case
 from wear.wall.engine import WallSums, chunk_rows_for, erode_wall
-from wear.wall.foam import polymesh_folder, read_polymesh
+from wear.wall.foam import DecomposedCaseError, polymesh_folder, read_polymesh
 from wear.wall.law_keys import check_law_keys
 from wear.wall.laws import records_refusal, wall_law
 from wear.wall.mesh import Wall, concat_walls, duplicate_faces, read_surface
@@ -72,6 +72,8 @@ def _read_wall(p: Path, patches: Sequence[str] | None, flip: bool) -> Wall:
     if p.is_dir():
         try:
             folder = polymesh_folder(p)
+        except DecomposedCaseError:
+            raise  # its message says how to reconstruct the case: more use than "no surface file"
         except ValueError:
             folder = None
         if folder is not None:
