@@ -109,35 +109,44 @@ def test_bad_friction_and_path_lengths_name_the_parameter():
         indent_solid(R, plate, [1e-6, 2e-6], slides=[0.0])
 
 
-@pytest.mark.slow
-def test_partial_slip_matches_cattaneo_mindlin():
-    """Normal load applied without friction, then the ball's surface slid by ξ with μ = 0.3 (Johnson 1985 §7.2,
-    Eqs. 7.42-7.43, rigid ball): Q/μP = 1 − (1 − ξ/ξ_max)^{3/2}, ξ_max = 3μP(2 − ν)/(16 G a), stick radius
-    c/a = (1 − Q/μP)^{1/3}. The slide each Q takes and the stick radius within 5%; gross sliding (Q = μP within 1%)
-    beyond ξ_max. A mesh with 8 elements across a over a shallow box (the tractions need the surface resolved)."""
-    mu = 0.3
+MU_SLIDE = 0.3  # the friction coefficient of the constant-load slides
+
+
+def _slid_at_constant_load(fractions, contact_elements):
+    """A rigid sphere pressed into the steel plate without friction to a Hertz contact of radius 0.1 mm, then slid at
+    that load with μ = 0.3 by ``fractions`` of Mindlin's gross slide ξ_max = 3μP(2 − ν)/(16 G a) (Johnson 1985 §7.2;
+    the path's slides from the Hertz contact), over a shallow box (the tractions need the surface resolved). Returns
+    (the result, ξ_max (m) and a (m) of the FE's own normal force)."""
     plate = Material(E=E, nu=NU, density=7800.0)
     a_max = 1e-4
     delta = a_max**2 / R
     shear_modulus = E / (2.0 * (1.0 + NU))
 
     def gross_slide(P, a):
-        return 3.0 * mu * P * (2.0 - NU) / (16.0 * shear_modulus * a)
+        return 3.0 * MU_SLIDE * P * (2.0 - NU) / (16.0 * shear_modulus * a)
 
-    # the path's slides from the Hertz contact; the checks use the FE's own normal force and its Hertz radius
-    fractions = np.array([0.2, 0.5, 0.8, 1.2])
     result = indent_solid(
         R,
         plate,
         np.full(fractions.size + 1, delta),
         slides=np.r_[0.0, fractions * gross_slide(hertz_force(delta), math.sqrt(R * delta))],
-        friction=np.r_[0.0, np.full(fractions.size, mu)],
-        contact_elements=8,
+        friction=np.r_[0.0, np.full(fractions.size, MU_SLIDE)],
+        contact_elements=contact_elements,
         box_depth=0.3,
     )
     P = result.normal_force[0]
     a = (3.0 * P * R / (4.0 * E_STAR)) ** (1.0 / 3.0)
-    slide_max = gross_slide(P, a)
+    return result, gross_slide(P, a), a
+
+
+@pytest.mark.slow
+def test_partial_slip_matches_cattaneo_mindlin():
+    """Normal load applied without friction, then the ball's surface slid by ξ with μ = 0.3 (Johnson 1985 §7.2,
+    Eqs. 7.42-7.43, rigid ball): Q/μP = 1 − (1 − ξ/ξ_max)^{3/2}, ξ_max = 3μP(2 − ν)/(16 G a), stick radius
+    c/a = (1 − Q/μP)^{1/3}. The slide each Q takes and the stick radius within 5%; gross sliding (Q = μP within 1%)
+    beyond ξ_max. A mesh with 8 elements across a over a shallow box (the tractions need the surface resolved)."""
+    mu = MU_SLIDE
+    result, slide_max, a = _slid_at_constant_load(np.array([0.2, 0.5, 0.8, 1.2]), contact_elements=8)
     fractions = result.slide[1:] / slide_max
     ratio = result.tangential_force[1:] / (mu * result.normal_force[1:])
     partial = fractions < 1.0
@@ -156,27 +165,9 @@ def test_reversed_gross_slip_follows_mindlin_deresiewicz_unloading():
     way (Q = −μP) once Δξ ≥ 2ξ_max. The whole contact sticks where the slide turns and slips back from its edge: a
     plate whose tractions lag the reversed slide (or that slides back at once) misses it by tenths of μP.
     Measured 0.012, 0.024, 0.016 μP off on the default mesh (4 elements across a; 0.02 μP in 8 steps on 6)."""
-    mu = 0.3
-    plate = Material(E=E, nu=NU, density=7800.0)
-    a_max = 1e-4
-    delta = a_max**2 / R
-    shear_modulus = E / (2.0 * (1.0 + NU))
-
-    def gross_slide(P, a):
-        return 3.0 * mu * P * (2.0 - NU) / (16.0 * shear_modulus * a)
-
+    mu = MU_SLIDE
     fractions = np.r_[0.6, 1.2, 1.2 - np.array([0.6, 1.2, 1.8, 2.4])]
-    result = indent_solid(
-        R,
-        plate,
-        np.full(fractions.size + 1, delta),
-        slides=np.r_[0.0, fractions * gross_slide(hertz_force(delta), math.sqrt(R * delta))],
-        friction=np.r_[0.0, np.full(fractions.size, mu)],
-        contact_elements=4,
-        box_depth=0.3,
-    )
-    P = result.normal_force[0]
-    slide_max = gross_slide(P, (3.0 * P * R / (4.0 * E_STAR)) ** (1.0 / 3.0))
+    result, slide_max, _ = _slid_at_constant_load(fractions, contact_elements=4)
     ratio = result.tangential_force[1:] / (mu * result.normal_force[1:])
     assert ratio[1] == pytest.approx(1.0, abs=0.01)
     back = (result.slide[2] - result.slide[3:]) / slide_max
