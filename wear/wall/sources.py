@@ -92,10 +92,10 @@ def plan_chunks(paths: str | Path | Sequence[str | Path], chunk_rows: int) -> li
     for path in files:
         kind = record_format(path)
         if kind == "openfoam":
-            files = post_files(path)
-            scans = [scan_post_file(f) for f in files]
+            posts = post_files(path)
+            scans = [scan_post_file(f) for f in posts]
             serial = not any(parallel for _, parallel in scans)
-            for f, (rows, _) in zip(files, scans, strict=True):
+            for f, (rows, _) in zip(posts, scans, strict=True):
                 chunks += [
                     Chunk(str(f), kind, s, min(chunk_rows, rows - s), serial=serial) for s in range(0, rows, chunk_rows)
                 ]
