@@ -1,6 +1,6 @@
 """The wall's workers as a user starts them: the same sums to the last digit on 1 worker or 2 (the chunk plan does
-not depend on the workers), a pool bounded by the work and the machine, workers that stop on Ctrl-C, and an
-unreachable Dask scheduler refused at once."""
+not depend on the workers), a pool bounded by the work and the machine, workers that stop on Ctrl-C, the pool's
+initializer arguments reaching every worker, and an unreachable Dask scheduler refused at once."""
 
 from __future__ import annotations
 
@@ -97,6 +97,33 @@ def test_ctrl_c_terminates_the_workers_at_once():
         raise KeyboardInterrupt
     assert time.perf_counter() - start < 10.0
     assert len(pids) == 2 and not any(_alive(pid) for pid in pids), pids
+
+
+_KEPT: bytes | None = None
+
+
+def _keep(value: bytes) -> None:
+    global _KEPT
+    _KEPT = value
+
+
+def _kept(seconds: float) -> tuple[int, bytes | None]:
+    time.sleep(seconds)  # long enough for the other worker to take the next task
+    return os.getpid(), _KEPT
+
+
+def test_the_initializer_arguments_reach_every_worker_and_a_bad_one_fails_at_once():
+    """The initializer's arguments (a wall: megabytes) reach the workers through a queue once they run, so that the
+    workers start side by side (started with them, each waited for the previous one's imports); what cannot be
+    pickled still fails at once, not after the workers' start timeout."""
+    payload = os.urandom(1 << 22)
+    with worker_pool(2, _keep, (payload,)) as pool:
+        kept = list(pool.map(_kept, [1.0] * 4))
+    assert all(value == payload for _, value in kept) and len({pid for pid, _ in kept}) == 2
+    start = time.perf_counter()
+    with pytest.raises(Exception, match="pickle"), worker_pool(2, _keep, (lambda: None,)):
+        pass
+    assert time.perf_counter() - start < 5.0
 
 
 def test_an_unreachable_scheduler_is_refused_at_once(tmp_path, capsys):

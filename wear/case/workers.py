@@ -10,6 +10,7 @@ import concurrent.futures as cf
 import logging
 import multiprocessing
 import os
+import pickle
 import re
 import socket
 import threading
@@ -17,6 +18,7 @@ import time
 import warnings
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from multiprocessing.reduction import ForkingPickler
 
 __all__ = ["THREAD_VARIABLES", "bound_workers", "dask_client", "machine_cores", "worker_pool"]
 
@@ -56,9 +58,10 @@ def _started() -> int:
     return os.getpid()
 
 
-def _worker_init(parent_pid: int, threads: int, initializer: Callable | None, initargs: tuple) -> None:
-    """Make the worker exit when the driver disappears, then run the caller's ``initializer`` (the thread count is
-    in the environment the worker started with, :func:`_thread_environment`)."""
+def _worker_init(parent_pid: int, threads: int, setup) -> None:
+    """Make the worker exit when the driver disappears, then run the caller's initializer on its arguments, both
+    pickled in the queue ``setup`` (None: no initializer; see :func:`worker_pool`). The thread count is in the
+    environment the worker started with (:func:`_thread_environment`)."""
     for var in THREAD_VARIABLES:
         os.environ[var] = str(threads)
 
@@ -68,7 +71,8 @@ def _worker_init(parent_pid: int, threads: int, initializer: Callable | None, in
         os._exit(1)  # orphaned by a killed driver: its result would have nowhere to go
 
     threading.Thread(target=watch, daemon=True).start()
-    if initializer is not None:
+    if setup is not None:
+        initializer, initargs = pickle.loads(setup.get())
         initializer(*initargs)
 
 
@@ -106,32 +110,49 @@ def worker_pool(
     :func:`_threads_per_worker` (:data:`THREAD_VARIABLES`), each ending when this process does, each running
     ``initializer(*initargs)`` once (e.g. to keep data every task of the pool reads). Leaving the block normally
     waits for the tasks submitted; leaving it by an exception (Ctrl-C, a task's error) cancels the queued tasks
-    and terminates the workers at once."""
+    and terminates the workers at once.
+
+    The workers start side by side: ``initializer`` and ``initargs`` (a wall of 10⁵ faces: 15 MB) reach each
+    worker through a queue once it runs, not with its start. A spawned process reads what it is started with only
+    after importing its driver's main module, and the pool starts its processes one after another, each start
+    waiting until the process has read it (a pipe holds 64 KiB): started with the arguments, the workers imported
+    one after another."""
     threads = _threads_per_worker(workers)
+    context = multiprocessing.get_context("spawn")
+    setup = None if initializer is None else context.Queue()
     pool = cf.ProcessPoolExecutor(
-        max_workers=workers,
-        mp_context=multiprocessing.get_context("spawn"),
-        initializer=_worker_init,
-        initargs=(os.getpid(), threads, initializer, initargs),
+        max_workers=workers, mp_context=context, initializer=_worker_init, initargs=(os.getpid(), threads, setup)
     )
-    with _thread_environment(threads):
-        # the pool spawns a process per task submitted while none is idle: start them all now, in this environment
-        try:
-            for done in [pool.submit(_started) for _ in range(workers)]:
-                done.result(timeout=STARTUP_SECONDS)
-        except BaseException as exc:
-            _kill(pool)
-            if isinstance(exc, cf.TimeoutError):
-                raise RuntimeError(
-                    f"{workers} worker processes did not start within {STARTUP_SECONDS:g} s (see their messages above)"
-                ) from None
-            raise
     try:
-        yield pool
-    except BaseException:
-        _kill(pool)
-        raise
-    pool.shutdown(wait=True, cancel_futures=True)
+        if setup is not None:
+            # a worker killed before reading its copy leaves its sender thread waiting: never wait for it at exit
+            setup.cancel_join_thread()
+            # pickled here, once: what cannot be pickled fails now, not in the queue's sender thread
+            payload = bytes(ForkingPickler.dumps((initializer, initargs)))
+            for _ in range(workers):
+                setup.put(payload)
+        with _thread_environment(threads):
+            # the pool spawns a process per task submitted while none is idle: start them all now, in this environment
+            try:
+                for done in [pool.submit(_started) for _ in range(workers)]:
+                    done.result(timeout=STARTUP_SECONDS)
+            except BaseException as exc:
+                _kill(pool)
+                if isinstance(exc, cf.TimeoutError):
+                    raise RuntimeError(
+                        f"{workers} worker processes did not start within {STARTUP_SECONDS:g} s (see their messages "
+                        "above)"
+                    ) from None
+                raise
+        try:
+            yield pool
+        except BaseException:
+            _kill(pool)
+            raise
+        pool.shutdown(wait=True, cancel_futures=True)
+    finally:
+        if setup is not None:
+            setup.close()
 
 
 def _kill(pool: cf.ProcessPoolExecutor) -> None:
