@@ -143,8 +143,11 @@ def _slid_at_constant_load(fractions, contact_elements):
 def test_partial_slip_matches_cattaneo_mindlin():
     """Normal load applied without friction, then the ball's surface slid by ξ with μ = 0.3 (Johnson 1985 §7.2,
     Eqs. 7.42-7.43, rigid ball): Q/μP = 1 − (1 − ξ/ξ_max)^{3/2}, ξ_max = 3μP(2 − ν)/(16 G a), stick radius
-    c/a = (1 − Q/μP)^{1/3}. The slide each Q takes and the stick radius within 5%; gross sliding (Q = μP within 1%)
-    beyond ξ_max. A mesh with 8 elements across a over a shallow box (the tractions need the surface resolved)."""
+    c/a = (1 − Q/μP)^{1/3}. The slide each Q takes within 5%; the stick edge within half an element (a/16) of
+    Mindlin's c: the stick set is a set of vertices (measured 0.17–0.41 of an element outside c, at c/a 0.90, 0.71
+    and 0.45: the Coulomb law on each vertex's hat moments keeps a vertex stuck while its hat's mean traction is
+    inside the cone); gross sliding (Q = μP within 1%) beyond ξ_max. A mesh with 8 elements across a over a shallow
+    box (the tractions need the surface resolved)."""
     mu = MU_SLIDE
     result, slide_max, a = _slid_at_constant_load(np.array([0.2, 0.5, 0.8, 1.2]), contact_elements=8)
     fractions = result.slide[1:] / slide_max
@@ -153,9 +156,37 @@ def test_partial_slip_matches_cattaneo_mindlin():
     slide_for_q = slide_max * (1.0 - (1.0 - ratio[partial]) ** (2.0 / 3.0))
     np.testing.assert_allclose(slide_for_q / (fractions[partial] * slide_max), 1.0, atol=0.05)
     stick = a * (1.0 - ratio[partial]) ** (1.0 / 3.0)
-    np.testing.assert_allclose(result.stick_radius[1:][partial] / stick, 1.0, atol=0.05)
+    np.testing.assert_allclose(result.stick_radius[1:][partial] - stick, 0.0, atol=0.5 * a / 8)
     np.testing.assert_allclose(ratio[~partial], 1.0, atol=0.01)
     assert np.all(result.stick_radius[1:][~partial] == 0.0)
+
+
+def test_proportional_oblique_loading_sticks_whatever_the_increments():
+    """Mindlin & Deresiewicz (1953; Johnson 1985 §7.4): a sphere pressed and dragged together, its slide growing in
+    proportion to its overlap, ξ = λ δ (2 − ν)/(2(1 − ν)) with λ < μ, slips nowhere: each increment adds the stuck
+    circle's tangential load dQ = 8Ga/(2 − ν) dξ to the normal dP = 4Ga/(1 − ν) dδ, so Q/P = λ and the whole contact
+    sticks, in any number of increments. λ = 0.15, μ = 0.3, elastic steel, 16 increments to a = 0.1 mm on the
+    default mesh (4 elements across a; its edge ring of vertices is a quarter of a). Measured: Q/P 0.134–0.142 from
+    the 4th increment (2 elements across a and more; 0.19 on the first), the stick radius at least 0.70 a. A stick
+    test on the L² projection of the tractions, which overshoots the cone at a stick edge, released a ring of
+    vertices every few increments: the stick radius fell to 0 by the 12th increment and Q/P to 0.10 (0.46–0.83 a
+    and Q/P 0.132 in 4 increments)."""
+    plate = Material(E=E, nu=NU, density=7800.0)
+    lam = 0.15
+    overlaps = (1e-4) ** 2 / R * np.arange(1, 17) / 16
+    result = indent_solid(
+        R,
+        plate,
+        overlaps,
+        slides=lam * overlaps * (2.0 - NU) / (2.0 * (1.0 - NU)),
+        friction=MU_SLIDE,
+        contact_elements=4,
+        box_depth=0.3,
+    )
+    ratio = result.tangential_force / result.normal_force
+    # from the 4th increment on (2 elements across a and more), the FE's tangential and normal stiffness in Q/P
+    assert np.all(np.abs(ratio[3:] / lam - 1.0) <= 0.12), ratio
+    assert np.all(result.stick_radius >= 0.65 * result.contact_radius), result.stick_radius / result.contact_radius
 
 
 def test_reversed_gross_slip_follows_mindlin_deresiewicz_unloading():

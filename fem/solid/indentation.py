@@ -45,7 +45,8 @@ class SolidIndentation:
     ``max_pressure`` (Pa); ``max_equivalent_plastic_strain``; ``newton_iterations``; ``surface_vertices`` (n, 3)
     reference coordinates of the surface vertices (m); ``pressure`` (steps, n) and ``shear`` (steps, n, 2) the
     contact tractions on the plate at those vertices (Pa, linear between them: the ball's force on each vertex's
-    share of the surface over its area, :meth:`SolidRecorder.tractions`; ``max_pressure`` their largest);
+    share of the surface over its area, :meth:`fem.solid.friction.SurfaceFriction.vertex_tractions`;
+    ``max_pressure`` their largest);
     ``sticking`` (steps, n) the vertices in stick; ``slip`` (steps, n, 2) the ball's slip (x, y) over each vertex
     in contact in the step that ends there, Δξ e_x − Δu_t (m; zero in stick and out of contact); ``node_slip``
     (steps, q, 2) and ``node_sticking`` (steps, q) the same at every quadratic surface node (vertices and mid-edge
@@ -87,7 +88,7 @@ class SolidIndentation:
         in_contact = surface.vertex_mask(state.contact)
         # the recovery takes the tractions' L² projection M⁻¹Hf, pointwise the closer inside a smooth contact:
         # Johnson's Hertz σ_z within 0.02 p0 (tests/test_fem_surface_stress.py), where the reported hat averages
-        # (:meth:`SolidRecorder.tractions`, the friction law's own) miss it by 0.026 p0 at a vertex inside the edge
+        # (SurfaceFriction.vertex_tractions, the friction law's own) miss it by 0.026 p0 at a vertex inside the edge
         pressure = np.where(in_contact, surface.vertex_field(normal), 0.0)
         traction = np.where(in_contact[:, None], surface.vertex_field(shear), 0.0)
         return surface_stress(solver.disc, stress, pressure, traction)
@@ -200,13 +201,13 @@ class SolidRecorder:
 
     def measure(self, state: SolidState) -> dict[str, float | int | np.ndarray]:
         """One step's numbers: forces on the whole plate (N), contact and stick radii (m), peak pressure (Pa),
-        largest equivalent plastic strain, Newton iterations, vertex pressure and shear (Pa, :meth:`tractions`),
-        stick mask, and the slip (m) over each vertex in contact since the last recorded step (the first: since
-        the path's start)."""
+        largest equivalent plastic strain, Newton iterations, vertex pressure and shear (Pa,
+        :meth:`fem.solid.friction.SurfaceFriction.vertex_tractions`), stick mask, and the slip (m) over each vertex
+        in contact since the last recorded step (the first: since the path's start)."""
         solver, d = self.solver, self.solver.disc
         normal, shear = solver.surface_forces(state)
         surface = solver.surface
-        pressure, traction = self.tractions(normal * state.contact, shear)
+        pressure, traction = surface.vertex_tractions(normal * state.contact, shear)
         in_contact = surface.vertex_mask(state.contact)
         sticking = surface.vertex_mask(state.stick)
         before = self.states[-1] if self.states else self.start
@@ -232,26 +233,6 @@ class SolidRecorder:
             # the node sticks: over a mid-edge node between a pressed vertex and a free one too
             "node_slip": np.where(((d.surface_hats.T @ pressure > 0.0) & ~node_sticks)[:, None], node_slip, 0.0),
         }
-
-    def tractions(self, normal: np.ndarray, shear: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        r"""The vertex pressure p_j and shear q_j (Pa) of the ball's nodal forces ``normal`` (surface nodes; on the
-        contact nodes only) and ``shear`` (surface nodes, 2) in N: each vertex's hat moment over its hat's area,
-
-        .. math:: p_j = \frac{(H f_n)_j}{A_j},\qquad q_j = \frac{(H f_t)_j}{A_j},\qquad A_j = \int \psi_j\,dA,
-
-        the very moments the Coulomb law (:mod:`fem.solid.friction`) holds vertex by vertex, so that a slipping vertex
-        reports ‖q_j‖ = min(μ p_j, k A_j^contact / A_j) ≤ min(μ p_j, k) (to the equilibrium's residual), and the
-        linear fields through them carry the nodal forces exactly, ∫ Σ_j p_j ψ_j dA = Σ_j A_j p_j = Σ_i f_n,i
-        (the hats are a partition of unity on the surface nodes). On the symmetry plane y = 0 the whole plate's
-        q_y is 0: its mirror half's cancels it (the half's own lacks the y forces the plane's reactions took). The
-        linear fields with those moments, M⁻¹ H f (the L² projection), carry the same forces but oscillate at the
-        contact's edge and at a stick edge: on the default impact they reported sliding vertices at 16 μp and 4 k."""
-        surface = self.solver.surface
-        d = surface.disc
-        area = d.surface_area
-        traction = np.asarray(d.surface_hats @ shear) / area[:, None]
-        traction[surface.vertex_on_symmetry, 1] = 0.0
-        return (d.surface_hats @ normal) / area, traction
 
     def add(self, state: SolidState) -> None:
         """Record a converged step."""

@@ -331,7 +331,7 @@ class SolidSolver:
         # and elastic unloading takes tens, each with a new factor
         unloading = overlap < start.overlap and bool(np.any(start.alpha))
         # the sets are sought at set_rtol, the settled ones confirmed at rtol (module docstring)
-        tolerance, rounds = self.set_rtol, 0
+        tolerance, rounds, turns = self.set_rtol, 0, 0
         while True:
             try:
                 u, upd, f, it = self._equilibrate(start, target, u, contact, stick, direction, mu, unloading, tolerance)
@@ -357,11 +357,18 @@ class SolidSolver:
             this_round = contact.tobytes() + stick.tobytes() + released.tobytes()
             if mu > 0.0:
                 new_stick, new_direction = self.surface.update_stick(
-                    start, target, u, f, stick, direction, new_contact, p_vertex, mu, released
+                    start, target, u, f, stick, direction, new_contact, mu, released
                 )
                 released |= stick & ~new_stick
             key = new_contact.tobytes() + new_stick.tobytes() + released.tobytes()
             if np.array_equal(new_contact, contact) and np.array_equal(new_stick, stick):
+                if turns < self.max_set_updates and self.surface.turned(direction, new_direction, stick, contact):
+                    # the sets settled, but a vertex's slip turned away from the traction it was solved with: the
+                    # state holds Coulomb's law (and hands its directions on) only once every traction follows its
+                    # slip; kept, the slip zone went on pulling the old way after the slide reversed
+                    direction, turns = new_direction, turns + 1
+                    self.stats.set_updates += 1
+                    continue
                 if tolerance > self.rtol:
                     tolerance = self.rtol
                     continue
