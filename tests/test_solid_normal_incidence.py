@@ -31,15 +31,19 @@ def test_normal_impact_with_friction_converges_and_stays_symmetric(normal):
     tractions cancel: its tangential force stays below 10 % of μP at every step (a sliding traction would carry μP;
     after lift-off, of 1 % of the peak P; the coarse mesh is not mirror-symmetric in x: measured 6.7 % of μP at the
     first step, 6 contact nodes, and at most 3.3 % after), and the ball leaves with no spin and no tangential
-    velocity."""
+    velocity. Friction acts through radial shear tractions in the contact. (Whether part of
+    the contact slips depends on the mesh: Spence's (1975) slip annulus narrows as the materials' |β|/μ falls; on
+    this reduced mesh, 3 elements across the contact, the whole contact sticks since the stick test reads the
+    vertices' hat moments; before, its edge vertices were released by the L² projection's overshoot and slid.)"""
     r = normal
     assert r.solid.converged
     solid = r.solid.solid
     mu = r.case.impact.friction
     load = np.maximum(solid.normal_force, 0.01 * np.max(solid.normal_force))  # lift-off: P = 0
     assert np.all(np.abs(solid.tangential_force) <= 0.1 * mu * load), solid.tangential_force / load
-    # friction acted: part of the contact slipped (radially), it did not all stick
-    assert np.any(np.linalg.norm(solid.slip, axis=2) > 0.0)
+    # friction acted: the contact carries shear tractions (radial, so that they cancel in the force above)
+    shear = np.linalg.norm(solid.shear, axis=2)
+    assert np.max(shear) > 0.05 * mu * np.max(solid.pressure), np.max(shear) / (mu * np.max(solid.pressure))
     assert r.impact.spin == 0.0
     assert r.impact.rebound_tangential_velocity == 0.0
     assert r.impact.max_tangential_force == 0.0
