@@ -4,7 +4,7 @@ Rooms, lowest first (a module may import from its own room and the rooms below i
 the FE core (``fem.core``: knows no plate) ← the plates (``fem.axisymmetric``, ``fem.solid``: neither imports the
 other) ← the plates' face and couplings (``fem``) ← the wear law (``wear.law``, ``wear.laws``, ``wear.pressure``,
 ``wear.slip``, ``wear.pressure_profiles``, ``wear.integrate``, ``wear.accumulate``, ``wear.solid_wear``,
-``wear.surface``) ← the case
+``wear.triangle_finder``, ``wear.surface``) ← the case
 (``wear.case``) ← erosion (``wear.erosion``) ← a component's wall (``wear.wall``: impact records, the wall, per-face
 sums; never the chains nor the command line) ← the chains (``wear.chain``) ← the command line (``wear.app``).
 ``meshes`` is data: only its ``__main__`` (which regenerates the mesh) imports ``fem``. No import cycle between the
@@ -41,6 +41,7 @@ ROOMS = (
         "wear.integrate",
         "wear.accumulate",
         "wear.solid_wear",
+        "wear.triangle_finder",
         "wear.surface",
     ),
     ("wear.case",),
@@ -192,6 +193,15 @@ def test_light_modules_do_not_load_the_fe_plate(module):
     code = f"import sys, {module}; print(sorted(m for m in ('fem', 'skfem') if m in sys.modules))"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
     assert out.stdout.strip() == "[]", f"import {module} loads {out.stdout.strip()}"
+
+
+def test_the_chains_load_no_matplotlib():
+    """Figures are the command line's (``wear.app``): importing the chains (in a fresh interpreter) loads no
+    matplotlib module, so that a script that runs them pays nothing for plotting (the 3-D plate's fields are located
+    in its surface triangles by :func:`wear.triangle_finder.find_triangles`, not matplotlib's trifinder)."""
+    code = "import sys, wear.chain; print(sorted(m for m in sys.modules if m.startswith('matplotlib')))"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
+    assert out.stdout.strip() == "[]", f"import wear.chain loads {out.stdout.strip()}"
 
 
 WEAR_LAW_ROOM = next(room for room in ROOMS if "wear.law" in room)

@@ -34,12 +34,12 @@ steps.
 from __future__ import annotations
 
 import numpy as np
-from matplotlib.tri import Triangulation
 from scipy.spatial import Delaunay
 
 from contact.fields import SurfaceField
 from wear.law import WearLaw
 from wear.slip import SlidingSpeed
+from wear.triangle_finder import find_triangles
 
 __all__ = ["on_half_surface", "solid_grid", "step_weights", "solid_wear_depth", "solid_dent_depth"]
 
@@ -61,7 +61,7 @@ def on_half_surface(
         found_in = Delaunay(points)
         triangles, found = found_in.simplices, found_in.find_simplex(query)
     else:
-        found = Triangulation(points[:, 0], points[:, 1], triangles).get_trifinder()(query[:, 0], query[:, 1])
+        found = find_triangles(points, triangles, query[:, 0], query[:, 1])
     inside = found >= 0
     corners = triangles[found[inside]]
     origin = points[corners[:, 0]]
