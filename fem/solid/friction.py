@@ -242,7 +242,7 @@ class SurfaceFriction:
         20–45% at a discrete stick edge, a stick edge vertex left the cone, slipped against its own traction and
         could not stick again in that increment, so the stick zone lost a ring of vertices every few increments
         (default impact, 3 elements across the contact: 12.6%, 3.4%, 1.3% of the contact's area-time stuck at 10,
-        20, 40 loading increments; with the moments 20.1%, 20.7%, 20.5%, Mindlin's c/a = (1 − Q/μP)^{1/3} ≈ 0.46 at
+        20, 40 loading increments; with the moments 20.1%, 20.2%, 20.4%, Mindlin's c/a = (1 − Q/μP)^{1/3} ≈ 0.46 at
         the impact's Q/μP ≈ 0.9 puts 21% of the area in stick). A stick vertex
         (s = 0) thus slips where its traction leaves the cone, along that traction; a slipping one (τ = μpŝ) goes on
         where it keeps to its way and sticks where its slip turns back against its traction (unless it was
