@@ -22,6 +22,8 @@ from pathlib import Path
 import pytest
 
 import wear
+from wear.app.validation.checks import AREAS
+from wear.app.validation.groups import BY_AREA, GROUPS
 from wear.case import JOBS, STAGES
 from wear.case.jobs import resolve
 
@@ -230,6 +232,41 @@ def test_the_case_names_the_commands_and_stages_of_its_jobs_without_importing_th
         for stage in job.stages:
             assert callable(resolve(stage.function)) and STAGES[stage.name] is stage
             assert all(isinstance(v, str) for v in stage.result_units().values()), stage.units
+
+
+VALIDATION = ROOT / "wear" / "app" / "validation"
+
+
+def _group_functions() -> set[str]:
+    """The check groups the validation's modules define: their public functions ``name(quick) -> list[Check]``."""
+    names = set()
+    for path in sorted(VALIDATION.glob("*.py")):
+        for node in ast.parse(path.read_text(encoding="utf-8")).body:
+            if isinstance(node, ast.FunctionDef) and not _private(node.name) and node.returns is not None:
+                if ast.unparse(node.returns) == "list[Check]":
+                    names.add(node.name)
+    return names
+
+
+def test_the_validation_groups_are_listed():
+    """The check groups are listed by area (wear.app.validation.groups imports each group's function by name), not
+    registered by importing their modules: the listing alone, imported first in a fresh interpreter, holds every
+    area's groups, and it holds every group the validation's modules define, none of them decorated."""
+    code = (
+        "import sys; from wear.app.validation.groups import BY_AREA, GROUPS; "
+        "print({a: len(f) for a, f in BY_AREA.items()}, len(GROUPS), 'wear.app.validation.runner' in sys.modules)"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
+    assert out.stdout.strip() == "{'contact': 10, 'fem': 5, 'wear': 13} 28 False"
+    assert tuple(BY_AREA) == AREAS
+    assert {name: group.function.__name__ for name, group in GROUPS.items()} == {n: n for n in _group_functions()}
+    for path in sorted(VALIDATION.glob("*.py")):
+        decorated = [
+            node.name
+            for node in ast.parse(path.read_text(encoding="utf-8")).body
+            if isinstance(node, ast.FunctionDef) and node.decorator_list
+        ]
+        assert not decorated, f"{path.relative_to(ROOT)}: decorated functions {decorated}: list a group instead"
 
 
 def test_the_package_wear_exports_its_names():

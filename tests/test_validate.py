@@ -1,6 +1,6 @@
 """``impactwear validate`` (issue 5, acceptance 2): the check registry in quick mode, the exit status, the report.
 
-The checks' references are named in each check (wear/app/validation_*.py); here: every registered check passes at
+The checks' references are named in each check (wear/app/validation/*.py); here: every listed check passes at
 reduced size, a deliberately failing (or crashing) check makes the command exit 1, and the committed
 docs/validation.md is a full-resolution report of the current registry with every check passed.
 """
@@ -14,8 +14,8 @@ from pathlib import Path
 import pytest
 
 from wear.app import cli
-from wear.app.validation import checks as validate
-from wear.app.validation.checks import Check, absolute, relative
+from wear.app.validation import groups
+from wear.app.validation.checks import Check, Group, absolute, relative
 
 DOCS = Path(__file__).resolve().parents[1] / "docs" / "validation.md"
 
@@ -48,9 +48,9 @@ def test_quick_validation_passes_and_spans_the_toolkit(quick_report):
 
 def test_failing_check_exits_1(tmp_path, monkeypatch, capsys):
     monkeypatch.setitem(
-        validate.GROUPS,
+        groups.GROUPS,
         "deliberately_failing",
-        validate.Group(
+        Group(
             "deliberately_failing",
             "contact",
             lambda quick: [relative("contact", "pi", "test", math.pi, "definition", 3.0, 1e-3)],
@@ -67,7 +67,7 @@ def test_crashing_group_is_a_failure(tmp_path, monkeypatch):
     def crash(quick):
         raise RuntimeError("boom")
 
-    monkeypatch.setitem(validate.GROUPS, "crashing_group", validate.Group("crashing_group", "wear", crash))
+    monkeypatch.setitem(groups.GROUPS, "crashing_group", Group("crashing_group", "wear", crash))
     report = tmp_path / "v.md"
     assert cli.main(["validate", "--quiet", "--only", "crashing_group", "--report", str(report)]) == 1
     assert "RuntimeError: boom" in report.read_text(encoding="utf-8")

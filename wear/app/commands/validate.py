@@ -14,7 +14,7 @@ from pathlib import Path
 
 from wear.app.commands.common import collect_notes, path_option, print_notes
 from wear.app.outputs.folder import check_named_file, check_writable_folder, is_own_file
-from wear.app.validation.checks import GROUPS
+from wear.app.validation.groups import GROUPS
 from wear.app.validation.runner import HEADER, render_report, run_validation, write_report
 
 HELP = "run every validation check (contact, fem, wear) and write validation.md; exit 1 if any fails"

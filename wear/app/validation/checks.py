@@ -1,13 +1,13 @@
-"""The validation's building blocks: a :class:`Check` (one quantity against an independent reference) and the
-registry of check groups.
+"""The validation's building blocks: a :class:`Check` (one quantity against an independent reference) and a
+:class:`Group` of checks.
 
 A *check* compares one quantity that the toolkit computes with an independent reference (a published number, a
 closed form evaluated separately, a conservation law) and records: quantity, case, reference value and its
 source, obtained value, error, tolerance, pass/fail. Checks come in groups: a group is a function
-``group(quick: bool) -> list[Check]`` registered with :func:`register` under an area (``contact``, ``fem``,
-``wear``); ``quick=True`` runs the same computation at reduced sizes (the test suite uses it), ``quick=False`` at
-the full resolution of the report. The groups live in :mod:`wear.app.validation.chung_ooi`, ``.contact``,
-``.fem``, ``.laws`` and ``.wear``.
+``group(quick: bool) -> list[Check]`` of an area (``contact``, ``fem``, ``wear``); ``quick=True`` runs the same
+computation at reduced sizes (the test suite uses it), ``quick=False`` at the full resolution of the report. The
+groups live in :mod:`wear.app.validation.chung_ooi`, ``.contact``, ``.fem``, ``.laws``, ``.wall`` and ``.wear``,
+and :mod:`wear.app.validation.groups` lists them by area.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
-__all__ = ["AREAS", "Check", "Group", "GROUPS", "absolute", "register", "relative"]
+__all__ = ["AREAS", "Check", "Group", "absolute", "relative"]
 
 #: The areas of the validation, in the report's order.
 AREAS = ("contact", "fem", "wear")
@@ -65,23 +65,13 @@ def absolute(area, quantity, case, reference, source, obtained, tolerance, units
 
 @dataclass(frozen=True)
 class Group:
+    """A group of checks: its ``name``, its ``area`` (one of :data:`AREAS`) and its ``function(quick) -> list[Check]``
+    (``quick``: reduced sizes)."""
+
     name: str
     area: str
     function: Callable[[bool], list[Check]]
 
-
-#: name → :class:`Group`, in registration order.
-GROUPS: dict[str, Group] = {}
-
-
-def register(area: str, name: str | None = None):
-    """Decorator: register ``function(quick) -> list[Check]`` as a group of ``area`` (contact, fem or wear)."""
-    if area not in AREAS:
-        raise ValueError(f"area={area!r} is not a valid choice: must be one of {', '.join(map(repr, AREAS))}")
-
-    def wrap(function):
-        key = name or function.__name__
-        GROUPS[key] = Group(key, area, function)
-        return function
-
-    return wrap
+    def __post_init__(self) -> None:
+        if self.area not in AREAS:
+            raise ValueError(f"area={self.area!r} is not a valid choice: must be one of {', '.join(map(repr, AREAS))}")

@@ -9,14 +9,13 @@ from __future__ import annotations
 import numpy as np
 
 from contact import Material, simulate_impact, simulate_impacts
-from wear.app.validation.checks import Check, absolute, register, relative
+from wear.app.validation.checks import Check, absolute, relative
 
 RIGID = Material.rigid()
 AL_OXIDE = Material(E=380e9, nu=0.23, density=4000.0, name="Al oxide")
 CHUNG_OOI = "Chung & Ooi 2011, Granular Matter 13:643"
 
 
-@register("contact")
 def chung_ooi_test2(quick: bool) -> list[Check]:
     """Chung & Ooi (2011) test 2, Table 4: Hertz normal impacts on a rigid plane (tolerance 0.2%)."""
     cases = [
@@ -34,7 +33,6 @@ def chung_ooi_test2(quick: bool) -> list[Check]:
     return out
 
 
-@register("contact")
 def chung_ooi_test3(quick: bool) -> list[Check]:
     """Chung & Ooi (2011) test 3: the simulated normal restitution equals the requested e (0.5%), and with the
     Tsuji-form dashpot (errata equation 6) it does not depend on the speed."""
@@ -75,7 +73,6 @@ def chung_ooi_test3(quick: bool) -> list[Check]:
     return out
 
 
-@register("contact")
 def chung_ooi_test4(quick: bool) -> list[Check]:
     """Chung & Ooi (2011) test 4 at θ = 50°, e = 1 (published values, 0.5%); and rigid-body theory in gross
     sliding over 40-85° with e = 0.98, evaluated here: e_t = 1 − μ(1+e)/tan θ, ω = 2.5μ(1+e)v cos θ/R."""
@@ -107,7 +104,6 @@ def chung_ooi_test4(quick: bool) -> list[Check]:
     return out
 
 
-@register("contact")
 def maw_barber_fawcett(quick: bool) -> list[Check]:
     """Maw, Barber & Fawcett (1976, 1981) in the form of Chung & Ooi (2011) test 5, ν = 0.3, e = 1, μ = 0.1.
 

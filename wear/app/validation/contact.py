@@ -17,12 +17,11 @@ from scipy.integrate import quad
 from contact import Material, TabulatedLaw, simulate_impact, simulate_impacts, theory, yield_velocity
 from contact.halfspace import halfspace_contact
 from contact.materials import effective_modulus
-from wear.app.validation.checks import Check, absolute, register, relative
+from wear.app.validation.checks import Check, absolute, relative
 from wear.app.validation.chung_ooi import AL_OXIDE, RIGID
 from wear.app.validation.references import kharaz_data, kharaz_rms
 
 
-@register("contact")
 def thornton_1997(quick: bool) -> list[Check]:
     """Restitution of elastic-perfectly plastic impacts against Thornton (1997), Journal of Applied Mechanics 64:383
     (engine, 0.2%)."""
@@ -38,7 +37,6 @@ def thornton_1997(quick: bool) -> list[Check]:
     ]
 
 
-@register("contact")
 def kharaz_2001(quick: bool) -> list[Check]:
     """The H-DD and the Mindlin–Deresiewicz tangential laws against the Kharaz, Gorham & Salman (2001) measurements
     (alumina on glass, 3.9 m/s, μ 0.092, e 0.98): RMS difference at the measured angles. The tolerances are about
@@ -76,7 +74,6 @@ def kharaz_2001(quick: bool) -> list[Check]:
     return checks
 
 
-@register("contact")
 def integration_and_energy(quick: bool) -> list[Check]:
     """Velocity Verlet converges at order 2 (errata equations 12-14 note) and the reported works close the energy
     balance E_in − E_out = W_normal + W_friction (conservation of energy)."""
@@ -118,7 +115,6 @@ def integration_and_energy(quick: bool) -> list[Check]:
     ]
 
 
-@register("contact")
 def closed_forms(quick: bool) -> list[Check]:
     """Closed forms against published numbers and against quadrature: MOOSE Hertz benchmark, exact first-yield
     coefficient C(0.3) = 1.6128 at z = 0.481a (Johnson 1985 §6.2; errata equation 18), Green's (2005) fit, and the
@@ -246,7 +242,6 @@ def thornton_table(
     return TabulatedLaw(lo, load(lo), np.sqrt(radius * lo), curves, np.array(uo), np.array(uf), np.array(ua))
 
 
-@register("contact")
 def tabulated_law(quick: bool) -> list[Check]:
     """The tabulated normal law (the FE → impact path of the two-way coupling) with tables written from closed
     forms: a Hertz table reproduces the Hertz impact closed form (errata equations 10-11, 0.2%); a table of
@@ -296,7 +291,6 @@ def tabulated_law(quick: bool) -> list[Check]:
     return out
 
 
-@register("contact")
 def contact_halfspace(quick: bool) -> list[Check]:
     """The half-space contact solver (contact.halfspace) on a sphere: peak pressure and approach against Hertz."""
 

@@ -16,7 +16,7 @@ import fem
 from contact import Material
 from contact.halfspace import sphere_on_axisymmetric_surface
 from contact.theory import first_yield, hertz_force, hertz_peak_pressure, mesarovic_johnson_pressure
-from wear.app.validation.checks import Check, absolute, register, relative
+from wear.app.validation.checks import Check, absolute, relative
 from wear.app.validation.references import unloading_path_w
 
 if not hasattr(fem, "indent"):
@@ -45,7 +45,6 @@ def _critical():
     return first_yield(R, E_STAR, Y, NU)
 
 
-@register("fem")
 def fem_hertz(quick: bool) -> list[Check]:
     """Elastic plate (yield_strength=None) up to a = 0.05R: force within 1% of (4/3)E*√R δ^{3/2}, contact radius
     within 3% of √(Rδ), pressure within 5% RMS of p0 of p0√(1 − r²/a²) (Hertz); the MOOSE
@@ -90,7 +89,6 @@ def fem_hertz(quick: bool) -> list[Check]:
     return out
 
 
-@register("fem")
 def fem_first_yield(quick: bool) -> list[Check]:
     """First yield (Y = 210 MPa) within 3% of F_c = π³C³Y³R²/(6E*²), C(0.3) = 1.6128, on the axis at depth
     0.481a ± 0.03a; loading to 0.9 F_c and unloading leaves no plastic strain."""
@@ -147,7 +145,6 @@ def _kogut_etsion(w: float) -> tuple[float, float]:
     return 1.40 * w**1.263, 0.94 * w**1.146
 
 
-@register("fem")
 def fem_elastic_plastic(quick: bool) -> list[Check]:
     """Elastic-plastic loading against Kogut & Etsion (2002), w = δ/δ_c: P/P_c and A/A_c within 15% at w = 2, 6, 20
     (their case is a deformable sphere on a rigid flat: the same while elastic, close in early plasticity); the
@@ -237,7 +234,6 @@ def fem_elastic_plastic(quick: bool) -> list[Check]:
     return out
 
 
-@register("fem")
 def fem_worn_surface(quick: bool) -> list[Check]:
     """FE plate with a worn pit w = D(1 − r²/a₀²)², D = 0.5 a₀²/R (fem.Plate.move_surface), elastic, against the
     half-space solution of the same gap and force (contact.halfspace, itself checked against Hertz)."""
@@ -265,7 +261,6 @@ def fem_worn_surface(quick: bool) -> list[Check]:
     ]
 
 
-@register("fem")
 def fem_elastic_reload(quick: bool) -> list[Check]:
     """Elastic reload of a dent (fem.elastic_reload: the plate's elastic response condensed onto its surface, used for
     repeated impacts after shakedown): a plate indented to 8 δ_y and unloaded, reloaded half-way back, against the

@@ -15,7 +15,7 @@ import math
 import numpy as np
 
 from contact.theory import yield_velocity
-from wear.app.validation.checks import Check, absolute, register, relative
+from wear.app.validation.checks import Check, absolute, relative
 from wear.app.validation.references import MEASURED_EROSION, OKA_CARBON_STEEL, OKA_SOURCE, oka_curve
 from wear.case import default_case
 from wear.chain.calibrate import calibrate
@@ -31,7 +31,6 @@ CASE = default_case("calibrate").with_(
 CASE_TEXT = "silica sand R 150 um on carbon steel (Y 350 MPa, H 1.4 GPa), Thornton"
 
 
-@register("wear")
 def wear_law_closed_forms(quick: bool) -> list[Check]:
     """Finnie's maximum at tan 2α = K/3 (16.85° from the surface for K = 2), found numerically on the law; DNV's
     F(α) at normal incidence and at 30° from the surface, and Oka's ratio at its reference point (104 m/s, 326 µm,
@@ -86,7 +85,6 @@ def wear_law_closed_forms(quick: bool) -> list[Check]:
     ]
 
 
-@register("wear")
 def deformation_wear_onset(quick: bool) -> list[Check]:
     """Bitter's deformation wear is the impact's plastic work / ε: nothing below the speed at which the plate first
     yields, Thornton's (1997) V_y (normal impacts on Thornton's law just below and above it)."""
@@ -153,7 +151,6 @@ def _inside(quantity: str, truth: float, value: float, interval: tuple[float, fl
     )
 
 
-@register("wear")
 def calibration_round_trip(quick: bool) -> list[Check]:
     """Data made by each law with known constants at 3 speeds × 10 angles, with 10% log-normal noise (seeded): the
     calibration recovers every constant inside its 95% interval; and a speed exponent from a single speed is
@@ -198,7 +195,6 @@ def calibration_round_trip(quick: bool) -> list[Check]:
     return out
 
 
-@register("wear")
 def laws_against_measured_trends(quick: bool) -> list[Check]:
     """Calibrated on Oka et al.'s (2005) carbon-steel curve at two speeds (30, 60 m/s), the combined law (equation 15 +
     Bitter's deformation wear; K, β, ε free) falls inside the measured ranges of ductile metals: velocity exponent

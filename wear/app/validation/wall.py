@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from wear.app.data import OPENFOAM_BEND
-from wear.app.validation.checks import Check, register, relative
+from wear.app.validation.checks import Check, relative
 from wear.case import default_case
 from wear.wall import ImpactRecords, Wall, erode_component, read_patch_field, read_wall
 from wear.wall.engine import chunk_sums
@@ -38,7 +38,6 @@ def _finnie_case(p: float, psi: float, k: float, c: float):
     )
 
 
-@register("wear")
 def wall_against_openfoam(quick: bool) -> list[Check]:
     """The ``finnie`` law on the bend run's recorded hits (angles from the normal OpenFOAM used) against OpenFOAM's
     eroded volume Q face by face and in total; the particle mass summed per face against the records' mass read
@@ -98,7 +97,6 @@ def _flat_wall(n: int, size: float) -> Wall:
     )
 
 
-@register("wear")
 def wall_uniform_stream(quick: bool) -> list[Check]:
     """A uniform stream at 30° from the normal (α = 60° from the surface, both Finnie branches' boundary far) on a
     flat wall of triangles, the same hits in every face: each face's volume against Finnie's closed form × its

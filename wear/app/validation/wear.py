@@ -25,7 +25,7 @@ from wear import (
     sliding_speed,
     wear_from_impact,
 )
-from wear.app.validation.checks import Check, absolute, register, relative
+from wear.app.validation.checks import Check, absolute, relative
 from wear.case import Case
 from wear.chain.restitution import restitution_sweep
 from wear.chain.single import run
@@ -44,7 +44,6 @@ def _impact(speed=5.0, angle=0.0, restitution=1.0, friction=0.092, normal_model=
     )
 
 
-@register("wear")
 def steady_track(quick: bool) -> list[Check]:
     """A Hertz contact (a, p0) sliding at constant speed v and load: across the track
     h(y) = K v^(β−1) p0^α a (1 − y²/a²)^((α+1)/2) √π Γ(α/2+1)/Γ(α/2+3/2) (closed form; 1% of the max depth)."""
@@ -84,7 +83,6 @@ def steady_track(quick: bool) -> list[Check]:
     return out
 
 
-@register("wear")
 def impulse_identity(quick: bool) -> list[Check]:
     """α = 1, β = 0: the worn volume is K ∫F dt = K m V_n (1 + e) (conservation of momentum), whatever the pressure
     shape that carries the force (0.5%)."""
@@ -130,7 +128,6 @@ def _hertz_impact_profile(rho) -> np.ndarray:
     return np.array([h(r) for r in rho]) / h(0.0)
 
 
-@register("wear")
 def hertz_impact_profile(quick: bool) -> list[Check]:
     """Normal Hertz impact, α = 1, β = 0: the depth profile h(r)/h(0) at r/a_max = 0, 0.25, 0.5, 0.75, 0.9, 1 equals
     1, 0.930, 0.727, 0.409, 0.173, 0 (tabulated; reproduced here by quadrature) within 0.01."""
@@ -167,7 +164,6 @@ def hertz_impact_profile(quick: bool) -> list[Check]:
     ]
 
 
-@register("wear")
 def sliding_and_additivity(quick: bool) -> list[Check]:
     """A normal impact with β > 0 and the gross-sliding speed wears nothing (the contact point never slides);
     without geometry update equation 15 is additive (5 impacts = 5 × one); α = 1, β = 1 in gross sliding gives
@@ -218,7 +214,6 @@ def sliding_and_additivity(quick: bool) -> list[Check]:
     ]
 
 
-@register("wear")
 def fe_table_source(quick: bool) -> list[Check]:
     """The ``"fe"`` pressure source fed with a nodal table of the Hertz profile (equation 16 sampled on 80 graded
     surface nodes at 60 steps, as an FE result would be) gives the wear of the ``"hertz"`` source (1%)."""
@@ -243,7 +238,6 @@ def fe_table_source(quick: bool) -> list[Check]:
     ]
 
 
-@register("wear")
 def erosion_flux_balance(quick: bool) -> list[Check]:
     """Particle-stream erosion on a still-flat plate: the number of impacts is the flux balance
     N = c V cos θ A T / m_p, and the mass loss is N × (one impact's worn volume from the single-impact chain
@@ -284,7 +278,6 @@ def erosion_flux_balance(quick: bool) -> list[Check]:
     ]
 
 
-@register("wear")
 def coupling(quick: bool) -> list[Check]:
     """Two-way impact-FE coupling (wear.run, fem.couple): on an elastic plate the
     coupled normal impact has the Hertz closed-form max force and contact time (errata equations 10-11, 1%); on a
