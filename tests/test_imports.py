@@ -15,6 +15,7 @@ comment saying why.
 from __future__ import annotations
 
 import ast
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -22,10 +23,11 @@ from pathlib import Path
 import pytest
 
 import wear
+from wear.app.cli import JOB_COMMANDS
+from wear.app.sweep.stages import STAGES
 from wear.app.validation.checks import AREAS
 from wear.app.validation.groups import BY_AREA, GROUPS
-from wear.case import JOBS, STAGES
-from wear.case.jobs import resolve
+from wear.case import JOBS
 
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGES = ("contact", "fem", "wear", "meshes")
@@ -217,21 +219,61 @@ def test_the_wear_law_never_imports_the_fe(module):
         assert target.split(".")[0] != "fem", f"{MODULES[module]}:{line}: the wear law imports {target}"
 
 
-def test_the_case_names_the_commands_and_stages_of_its_jobs_without_importing_them():
-    """The job registry (wear.case.JOBS) names each job's command and sweep stages in the command line's room;
-    importing the case loads none of that room, and every name resolves to what its user calls."""
+def test_the_jobs_commands_and_stages_are_listed_above_the_case():
+    """The jobs (wear.case.JOBS) are data: name, tables, default case, plate models. Their commands
+    (wear.app.cli.JOB_COMMANDS) and sweep stages (wear.app.sweep.stages.STAGES) are listed in the command line's
+    room, which imports what they run by name; importing the case loads none of that room. Every job has its
+    command, in the jobs' order, and every stage belongs to a job and runs a function."""
     code = "import sys, wear.case; print(sorted({m.split('.')[1] for m in sys.modules if m.startswith('wear.')}))"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
     assert (
         out.stdout.strip()
         == "['accumulate', 'case', 'integrate', 'law', 'laws', 'pressure', 'pressure_profiles', 'slip']"
     )
-    for job in JOBS.values():
-        command = job.command_module()
-        assert callable(command.configure) and callable(command.main), job.command
-        for stage in job.stages:
-            assert callable(resolve(stage.function)) and STAGES[stage.name] is stage
-            assert all(isinstance(v, str) for v in stage.result_units().values()), stage.units
+    assert tuple(JOB_COMMANDS) == tuple(JOBS)
+    for name, command in JOB_COMMANDS.items():
+        assert callable(command.configure) and callable(command.main) and command.HELP, name
+    order = list(JOBS)
+    assert [order.index(stage.job) for stage in STAGES.values()] == sorted(order.index(s.job) for s in STAGES.values())
+    for name, stage in STAGES.items():
+        assert callable(stage.function) and stage.name == name, name
+        assert all(isinstance(v, str) for v in stage.result_units().values()), name
+
+
+#: A string naming a project object for an import on use: ``"module:attribute"``.
+_REFERENCE = re.compile(r"[A-Za-z_][\w.]*:[A-Za-z_]\w*")
+#: The one module that imports by name on use: the package ``wear``'s lazy re-exports (PEP 562), so that importing
+#: ``wear.case`` (which runs ``wear/__init__.py``) does not load the chains.
+_LAZY = "wear"
+
+
+def _dynamic_imports(tree: ast.Module) -> list[str]:
+    """The calls in ``tree`` that import a module named by a string (``importlib.import_module``, ``__import__``,
+    ``pkgutil.resolve_name``)."""
+    names = ("import_module", "__import__", "resolve_name")
+    return [
+        ast.unparse(node)
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Call) and (getattr(node.func, "attr", None) or getattr(node.func, "id", None)) in names
+    ]
+
+
+@pytest.mark.parametrize("module", sorted(m for m in MODULES if not m.startswith("meshes")))
+def test_the_wiring_is_plain_imports(module):
+    """What calls what is a plain import, which the import graph above and jump-to-definition follow: no
+    ``"module:attribute"`` string names a project object (nor an f-string builds one), no ``resolve`` helper imports
+    one on use, and no module but the package ``wear`` (its lazy re-exports) imports a module named by a string."""
+    tree = TREES[module]
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Constant) and isinstance(node.value, str) and _REFERENCE.fullmatch(node.value):
+            assert _target(node.value.partition(":")[0]) is None, f"{MODULES[module]}:{node.lineno}: {node.value!r}"
+        if isinstance(node, ast.JoinedStr):
+            text = "".join(p.value if isinstance(p, ast.Constant) else "{}" for p in node.values)
+            assert not re.fullmatch(r"\{\}:[A-Za-z_]\w*", text), f"{MODULES[module]}:{node.lineno}: {ast.unparse(node)}"
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            assert node.name != "resolve", f"{MODULES[module]}:{node.lineno}: a resolve() helper"
+    calls = _dynamic_imports(tree)
+    assert module == _LAZY or not calls, f"{MODULES[module]}: imports by name on use: {calls}"
 
 
 VALIDATION = ROOT / "wear" / "app" / "validation"

@@ -1,10 +1,10 @@
 """The ``impactwear`` command line.
 
-Each command is a module of :mod:`wear.app.commands` exposing ``configure(parser)`` and ``main(args) -> int``:
-parse → load the case → call the runner → write. The commands that run a case are the jobs
-(:data:`wear.case.JOBS`, where their help lines and modules are registered); the tools (:data:`TOOLS`: sweep,
-reproduce, validate) run no case of their own and carry their help line as ``HELP``. Bad input (``ValueError``) is
-reported as one line naming the parameter, with exit status 2 and no traceback; so is a write the file system refuses
+Each command is a module of :mod:`wear.app.commands` exposing its help line ``HELP``, ``configure(parser)`` and
+``main(args) -> int``: parse → load the case → call the runner → write. The commands that run a case are the jobs
+(:data:`JOB_COMMANDS`, one for each job of :data:`wear.case.JOBS`, in its order); the tools (:data:`TOOLS`: sweep,
+reproduce, validate) run no case of their own. Bad input (``ValueError``) is reported as one line naming the
+parameter, with exit status 2 and no traceback; so is a write the file system refuses
 (:data:`wear.app.outputs.writer.WRITE_ERRORS`: a full disk, a quota, a read-only or forbidden folder), naming the
 file and the cause.
 """
@@ -16,21 +16,31 @@ import os
 import re
 import sys
 from importlib.metadata import PackageNotFoundError, version
+from types import ModuleType
 from typing import NoReturn
 
 from fem import ConvergenceError
-from wear.app.commands import reproduce, sweep, validate
+from wear.app.commands import calibrate, erode, impact, indent, repeat, reproduce, run, sweep, validate, wall
 from wear.app.outputs.writer import WRITE_ERRORS
-from wear.case import JOBS
 
-#: The commands that are not jobs: name → module (its ``HELP`` is the help line), after the jobs in ``--help``.
-TOOLS = {"sweep": sweep, "reproduce": reproduce, "validate": validate}
+#: The commands that run a case: the job's name (:data:`wear.case.JOBS`, the same order) → its command's module.
+JOB_COMMANDS: dict[str, ModuleType] = {
+    "run": run,
+    "impact": impact,
+    "indent": indent,
+    "repeat": repeat,
+    "erode": erode,
+    "calibrate": calibrate,
+    "wall": wall,
+}
+
+#: The commands that are not jobs: name → module, after the jobs in ``--help``.
+TOOLS: dict[str, ModuleType] = {"sweep": sweep, "reproduce": reproduce, "validate": validate}
 
 
-def commands() -> dict[str, tuple[str, object]]:
+def commands() -> dict[str, tuple[str, ModuleType]]:
     """name → (help line, command module), in the order of ``impactwear --help``: the jobs, then the tools."""
-    jobs = {name: (job.help, job.command_module()) for name, job in JOBS.items()}
-    return {**jobs, **{name: (module.HELP, module) for name, module in TOOLS.items()}}
+    return {name: (module.HELP, module) for name, module in {**JOB_COMMANDS, **TOOLS}.items()}
 
 
 class _Parser(argparse.ArgumentParser):

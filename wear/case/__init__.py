@@ -14,7 +14,7 @@ ValueError: impact.angle=120 is out of range: impact angle from the plate normal
 
 from wear.case.case import Case
 from wear.case.check import check_job_case
-from wear.case.jobs import JOBS, STAGES, Job, Stage, default_case
+from wear.case.jobs import JOBS, Job, default_case
 from wear.case.schema import Key, Table, key
 from wear.case.tables import (
     COUPLINGS,
@@ -61,8 +61,6 @@ __all__ = [
     "OutputSpec",
     "PlateSpec",
     "RepeatSpec",
-    "STAGES",
-    "Stage",
     "Table",
     "WallSpec",
     "WearSpec",

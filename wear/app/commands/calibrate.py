@@ -26,6 +26,8 @@ from wear.case import LAWS
 from wear.chain.calibrate import calibrate
 from wear.chain.calibration_data import read_data
 
+HELP = "fit a wear law's constants to measured wear (least squares on logs, with intervals); write calibrated.toml"
+
 DEFAULT_OUT = "impactwear-calibrate"
 
 

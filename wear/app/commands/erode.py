@@ -26,6 +26,8 @@ from wear.app.outputs.erosion import ENTRIES, write_erosion, write_erosion_angle
 from wear.app.outputs.folder import check_output_folder
 from wear.erosion.run import MAX_STREAM_ANGLE, erode_angles, erode_case
 
+HELP = "erode a plate patch by a stream of particles (surface feedback); mass loss and erosion rate vs time or angle"
+
 
 def configure(parser: argparse.ArgumentParser) -> None:
     add_case_options(parser, "erode")

@@ -16,6 +16,8 @@ from wear.app.commands.common import add_case_options, case_from_args, case_json
 from wear.case import Case
 from wear.case.tables import NORMAL_MODELS, SCHEMES, TANGENTIAL_MODELS
 
+HELP = "simulate one oblique ball-on-plate impact (H-DD model) and print rebound, forces and timings"
+
 
 def _one_of(choices: tuple[str, ...]) -> str:
     """The case schema's choices as help text: "a, b or c"."""

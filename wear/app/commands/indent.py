@@ -29,6 +29,8 @@ from wear.app.outputs.folder import check_output_folder
 from wear.app.outputs.indent import ENTRIES, write_indent
 from wear.chain.indent import indent_case, largest_force
 
+HELP = "press the ball into the axisymmetric FE plate and unload; write F-δ, pressures, first yield, mesh, figures"
+
 DEFAULT_OUT = "impactwear-indent"
 #: Largest hardening modulus (Pa): the case schema's largest Young's modulus.
 MAX_HARDENING = 1e13

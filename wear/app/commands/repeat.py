@@ -26,6 +26,8 @@ from wear.app.outputs.folder import output_folder
 from wear.app.outputs.repeat import ENTRIES, RepeatWriter
 from wear.chain.repeated_impacts import repeat
 
+HELP = "N impacts of the same ball at one site on the plate the previous ones left: dent, wear, shakedown"
+
 DEFAULT_OUT = "impactwear-repeat"
 
 

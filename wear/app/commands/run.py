@@ -24,6 +24,8 @@ from wear.app.outputs.folder import check_output_folder
 from wear.app.outputs.run import ENTRIES, write_run
 from wear.chain.single import STAGES, run
 
+HELP = "run one impact case through impact, FE plate, coupling and wear; write meshes, numbers and figures"
+
 DEFAULT_OUT = "impactwear-run"
 
 #: Stages shown by the progress bar: the chain's, then the writer's.

@@ -17,7 +17,8 @@ from wear.app.figures.sweep import plot_sweep
 from wear.app.outputs.fields import with_units
 from wear.app.outputs.writer import write_text
 from wear.app.sweep.spec import SweepSpec, flatten
-from wear.case import STAGES, TABLES
+from wear.app.sweep.stages import STAGES
+from wear.case import TABLES
 
 __all__ = ["column_names", "results_table", "write_outputs"]
 

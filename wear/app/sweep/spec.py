@@ -3,7 +3,7 @@
 A sweep file has three parts::
 
     [sweep]
-    stage = "impact"                 # a stage of wear.case.STAGES: "impact", "indent", "run", "erode", ...
+    stage = "impact"                 # a stage of wear.app.sweep.stages.STAGES: "impact", "indent", "run", ...
 
     [base]                           # optional: a case, same tables as a case file; keys left out take
     impact.speed = 3.9               # the stage's default case's values (see wear.app.sweep.stages)
@@ -41,8 +41,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from wear.app.sweep.stages import check_stage_case
-from wear.case import STAGES, read_toml, read_toml_text
+from wear.app.sweep.stages import STAGES, check_stage_case
+from wear.case import read_toml, read_toml_text
 
 __all__ = ["SweepSpec", "SweepCase", "load_sweep", "parse_sweep", "case_id", "flatten", "MAX_CASES"]
 

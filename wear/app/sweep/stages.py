@@ -1,10 +1,11 @@
-"""The functions of the sweep stages, and the function a worker process calls for one case.
+"""The functions of the sweep stages, their listing (:data:`STAGES`), and the function a worker process calls for
+one case.
 
-The stages are registered with their jobs (:data:`wear.case.STAGES`: name, tables, description, units). A stage's
-function is ``case -> dict``: it takes one full, validated case (tables of values,
-:meth:`wear.Case.to_dict`, SI units, angles in degrees from the plate normal) and returns a flat dict of
-JSON scalars (float, int, bool, str or None). The stage's ``tables`` list the case tables it reads: only those
-enter the case id, so a change elsewhere in the schema does not invalidate finished cases.
+Each stage is a :class:`wear.app.sweep.stage.Stage` (name, job, tables, description, function, units). A stage's
+function is ``case -> dict``: it takes one full, validated case (tables of values, :meth:`wear.Case.to_dict`, SI
+units, angles in degrees from the plate normal) and returns a flat dict of JSON scalars (float, int, bool, str or
+None). The stage's ``tables`` list the case tables it reads: only those enter the case id, so a change elsewhere in
+the schema does not invalidate finished cases.
 
 This module is imported by every worker (local pool or Dask).
 """
@@ -26,7 +27,8 @@ from contact import simulate_impact
 from contact.results import OUTPUT_UNITS
 from fem import worst_regime
 from wear.app.outputs.fields import unit_of
-from wear.case import STAGES, TABLES, Case, check_job_case, default_case
+from wear.app.sweep.stage import Stage
+from wear.case import TABLES, Case, check_job_case, default_case
 from wear.chain.axisymmetric_run import one_way
 from wear.chain.calibrate import calibrate
 from wear.chain.calibration_data import read_data
@@ -268,6 +270,70 @@ WALL_UNITS = {
     "results.min_remaining_life_year": "year",
     "results.max_wear_depth_m": "m",
     "results.allowable_sand_rate_kg_s": "kg/s",
+}
+
+
+#: The sweep stages by name (``[sweep] stage``), job by job in the order of :data:`wear.case.JOBS`.
+STAGES: dict[str, Stage] = {
+    stage.name: stage
+    for stage in (
+        Stage(
+            "run",
+            "run",
+            ("ball", "plate", "impact", "wear", "fem"),
+            "the whole chain impact -> FE -> coupling -> wear (wear.run)",
+            run_stage,
+            RUN_UNITS,
+        ),
+        Stage(
+            "indent",
+            "run",
+            ("ball", "plate", "impact", "fem"),
+            "the FE plate along the impact's overlap history (fem.indent_impact)",
+            indent_stage,
+            INDENT_UNITS,
+        ),
+        Stage(
+            "impact",
+            "impact",
+            ("ball", "plate", "impact"),
+            "one H-DD impact (contact.simulate_impact)",
+            impact_stage,
+            OUTPUT_UNITS,
+        ),
+        Stage(
+            "repeat",
+            "repeat",
+            ("ball", "plate", "impact", "wear", "fem", "repeat"),
+            "repeated impacts at one site (wear.repeat)",
+            repeat_stage,
+            REPEAT_UNITS,
+        ),
+        Stage(
+            "erode",
+            "erode",
+            ("ball", "plate", "impact", "wear", "erosion"),
+            "particle-stream erosion of a plate patch (wear.erode_case)",
+            erode_stage,
+            ERODE_UNITS,
+        ),
+        Stage(
+            "calibrate",
+            "calibrate",
+            ("ball", "plate", "impact", "wear", "fem", "calibration"),
+            "a calibration of the wear law to measured wear (wear.chain.calibrate)",
+            calibrate_stage,
+            CALIBRATE_UNITS,
+        ),
+        Stage(
+            "wall",
+            "wall",
+            ("ball", "plate", "impact", "wear", "wall"),
+            "the erosion of a component's wall from CFD or DEM impact records (wear.wall.erode_component)",
+            wall_stage,
+            WALL_UNITS,
+        ),
+    )
 }
 
 
