@@ -35,12 +35,12 @@ from wear.wall.component import erode_component, read_wall
 from wear.wall.hits import NORMALS
 from wear.wall.law_keys import check_law_keys
 
+__all__ = ["HELP", "configure", "main"]
+
 HELP = (
     "erode a component's wall from CFD or DEM impact records: per-face rates (mm/year), remaining life, hot "
     "spots and the worn wall"
 )
-
-__all__ = ["HELP", "configure", "main"]
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
