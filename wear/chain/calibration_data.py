@@ -65,6 +65,30 @@ def read_data(path: str | os.PathLike) -> CalibrationData:
     """Read and check a data file (CSV with a header row; see the module docstring). Errors are one line naming
     the file, the column and the row (rows counted from 1 after the header)."""
     p = Path(path)
+    rows = _read_rows(p)
+    header, body = [h.strip() for h in rows[0]], [r for r in rows[1:] if any(c.strip() for c in r)]
+    quantity, keys = _check_columns(header, p)
+    if not body:
+        raise ValueError(f"data={str(p)!r} has no rows: give one row per measurement")
+    try:  # a bad cell is named by its column and row, and the file
+        angle, speed, value, extra = _parse_rows(header, body, quantity, keys)
+    except ValueError as exc:
+        raise ValueError(f"data={str(p)!r}: {exc}") from None
+    data = CalibrationData(
+        np.array(angle),
+        np.array(speed),
+        quantity,
+        np.array(value),
+        {k: np.array(v) for k, v in extra.items()},
+        str(p),
+    )
+    if not data.fitted.any():
+        raise ValueError(f"{quantity} is empty in every row of data={str(p)!r}: no measured row to fit")
+    return data
+
+
+def _read_rows(p: Path) -> list[list[str]]:
+    """The CSV rows of the UTF-8 text file ``p`` (at least the header row)."""
     if not p.is_file():
         raise ValueError(f"data={str(p)!r} is not a file")
     try:
@@ -80,7 +104,13 @@ def read_data(path: str | os.PathLike) -> CalibrationData:
         ) from None
     if not rows:
         raise ValueError(f"data={str(p)!r} is empty: give a header row and one row per measurement")
-    header, body = [h.strip() for h in rows[0]], [r for r in rows[1:] if any(c.strip() for c in r)]
+    return rows
+
+
+def _check_columns(header: list[str], p: Path) -> tuple[str, list[str]]:
+    """The measured quantity's column of ``header`` (the columns of the file ``p``) and its case-key columns:
+    each column named once, angle and speed present, exactly one of :data:`QUANTITIES`, and the rest numeric case
+    keys."""
     for name in header:
         if header.count(name) > 1:
             raise ValueError(
@@ -108,48 +138,44 @@ def read_data(path: str | os.PathLike) -> CalibrationData:
             )
         if TABLES[table].keys()[name].type not in (int, float):
             raise ValueError(f"column {k!r} of data={str(p)!r} is not a numeric case key")
-    if not body:
-        raise ValueError(f"data={str(p)!r} has no rows: give one row per measurement")
+    return measured[0], keys
+
+
+def _parse_rows(
+    header: list[str], body: list[list[str]], quantity: str, keys: list[str]
+) -> tuple[list[float], list[float], list[float], dict[str, list[float]]]:
+    """Angles (deg), speeds (m/s), measured values (NaN where empty: predicted only) and the case keys' values of
+    the data rows ``body``, checked cell by cell; a ValueError names the column and the row (from 1)."""
     angle, speed, value = [], [], []
     extra: dict[str, list[float]] = {k: [] for k in keys}
-    try:  # a bad cell is named by its column and row, and the file
-        for i, row in enumerate(body, start=1):
-            if len(row) != len(header):
-                raise ValueError(f"row {i} has {len(row)} values for {len(header)} columns")
-            cells = dict(zip(header, (c.strip() for c in row), strict=True))
-            a = _number(cells["angle_deg"], "angle_deg", i)
-            if not 0.0 <= a < 90.0:
-                raise ValueError(
-                    f"angle_deg={a:g} in row {i} is out of range: the angle from the normal must be in [0, 90) deg"
-                )
-            v = _number(cells["speed_m_s"], "speed_m_s", i)
-            if not 0.0 < v <= 1000.0:
-                raise ValueError(f"speed_m_s={v:g} in row {i} is out of range: must be in (0, 1000] m/s")
-            text = cells[measured[0]]
-            if text == "":
-                m = math.nan
-            else:
-                m = _number(text, measured[0], i)
-                if m <= 0.0:
-                    raise ValueError(
-                        f"{measured[0]}={m:g} in row {i} is out of range: must be > 0 (its log is fitted); "
-                        "leave it empty to predict the row"
-                    )
-            angle.append(a)
-            speed.append(v)
-            value.append(m)
-            for k in keys:
-                extra[k].append(_number(cells[k], k, i))
-    except ValueError as exc:
-        raise ValueError(f"data={str(p)!r}: {exc}") from None
-    data = CalibrationData(
-        np.array(angle),
-        np.array(speed),
-        measured[0],
-        np.array(value),
-        {k: np.array(v) for k, v in extra.items()},
-        str(p),
-    )
-    if not data.fitted.any():
-        raise ValueError(f"{measured[0]} is empty in every row of data={str(p)!r}: no measured row to fit")
-    return data
+    for i, row in enumerate(body, start=1):
+        if len(row) != len(header):
+            raise ValueError(f"row {i} has {len(row)} values for {len(header)} columns")
+        cells = dict(zip(header, (c.strip() for c in row), strict=True))
+        a = _number(cells["angle_deg"], "angle_deg", i)
+        if not 0.0 <= a < 90.0:
+            raise ValueError(
+                f"angle_deg={a:g} in row {i} is out of range: the angle from the normal must be in [0, 90) deg"
+            )
+        v = _number(cells["speed_m_s"], "speed_m_s", i)
+        if not 0.0 < v <= 1000.0:
+            raise ValueError(f"speed_m_s={v:g} in row {i} is out of range: must be in (0, 1000] m/s")
+        angle.append(a)
+        speed.append(v)
+        value.append(_measured(cells[quantity], quantity, i))
+        for k in keys:
+            extra[k].append(_number(cells[k], k, i))
+    return angle, speed, value, extra
+
+
+def _measured(text: str, quantity: str, row: int) -> float:
+    """The measured value of a cell: NaN if empty (the row is predicted, not fitted), else a number > 0."""
+    if text == "":
+        return math.nan
+    m = _number(text, quantity, row)
+    if m <= 0.0:
+        raise ValueError(
+            f"{quantity}={m:g} in row {row} is out of range: must be > 0 (its log is fitted); "
+            "leave it empty to predict the row"
+        )
+    return m

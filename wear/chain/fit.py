@@ -103,28 +103,15 @@ def log_fit(
         pred = np.asarray(predict(values_of(x)), float)
         return np.log(np.maximum(pred, 1e-300)) - log_measured
 
-    x0 = np.array([c.to_coordinate(c.start) for c in constants])
-    low, high = (np.array(b) for b in zip(*(c.bounds() for c in constants), strict=True))
-    inside = 1e-9 * (1.0 + np.abs(np.where(np.isfinite(low), low, 0.0)))
-    x0 = np.clip(x0, np.where(np.isfinite(low), low + inside, low), np.where(np.isfinite(high), high - inside, high))
+    x0, low, high = _start_inside_bounds(constants)
     solution = least_squares(
         residuals, x0, bounds=(low, high), method="trf", xtol=1e-12, ftol=1e-12, gtol=1e-12, max_nfev=2000
     )
     r = solution.fun
     n, p = r.size, len(constants)
     dof = n - p
-    jac = np.asarray(solution.jac, float)
-    u, sv, vt = np.linalg.svd(jac, full_matrices=False)
-    null = [vt[k] for k in range(len(sv)) if sv[k] <= SINGULAR * max(sv[0], 1e-300)]
-    null += [vt[k] for k in range(len(sv), p)] if len(sv) < p else []
-    determined = [all(abs(v[k]) <= LOADING for v in null) for k in range(p)]
-    statements = []
-    for v in null:
-        names = [constants[k].name for k in range(p) if abs(v[k]) > LOADING]
-        statements.append(
-            f"the data cannot determine {' and '.join(names)} separately: the residuals do not change "
-            f"along a combination of them (e.g. a speed exponent from a single speed)"
-        )
+    _, sv, vt = np.linalg.svd(np.asarray(solution.jac, float), full_matrices=False)
+    determined, statements = _undetermined(constants, sv, vt)
     s2 = float(r @ r / dof) if dof > 0 else math.nan
     if dof <= 0:
         statements.append(
@@ -133,46 +120,11 @@ def log_fit(
     inv_sv = np.where(sv > SINGULAR * max(sv[0], 1e-300), 1.0 / np.maximum(sv, 1e-300), 0.0)
     # the correlations do not depend on s², so they are given without residual degrees of freedom too
     shape = (vt.T * inv_sv**2) @ vt
-    cov = shape * s2
-    intervals: list[tuple[float, float] | None] = []
-    quantile = float(student_t.ppf(0.975, dof)) if dof > 0 else math.nan
-    for k, c in enumerate(constants):
-        if not determined[k] or not math.isfinite(s2):
-            intervals.append(None)
-            continue
-        half = quantile * math.sqrt(max(cov[k, k], 0.0))
-        lo, hi = (
-            c.from_coordinate(float(x)) for x in np.clip([solution.x[k] - half, solution.x[k] + half], low[k], high[k])
-        )
-        # once more in the constant's own units: exp(ln b) may differ from the bound b by a rounding
-        bottom, top = -math.inf if c.low is None else c.low, math.inf if c.high is None else c.high
-        intervals.append((min(max(lo, bottom), top), min(max(hi, bottom), top)))
-    sd = np.sqrt(np.maximum(np.diag(shape), 0.0))
-    with np.errstate(invalid="ignore", divide="ignore"):
-        corr = shape / np.outer(sd, sd)
-    corr[~np.isfinite(corr)] = math.nan
-    for k in range(p):
-        if not determined[k]:
-            corr[k, :] = corr[:, k] = math.nan
-    for j in range(p):
-        for k in range(j + 1, p):
-            rho = float(corr[j, k])
-            if abs(rho) > INTERCHANGEABLE:
-                statements.append(
-                    f"the data hardly tell {constants[j].name} and {constants[k].name} apart: they are nearly "
-                    f"interchangeable (correlation {'-' if rho < 0 else '+'}(1 - {1.0 - abs(rho):.2g})), so each "
-                    "interval is "
-                    f"{1.0 / math.sqrt(max(1.0 - rho * rho, 1e-300)):.3g} times as wide as with the other held; "
-                    "fix one of them to determine the other"
-                )
+    intervals = _intervals(constants, solution.x, shape * s2, s2, dof, determined, low, high)
+    corr = _correlations(shape, determined)
+    statements += _interchangeable(constants, corr)
     on_bound = [_on_bound(x, lo, hi) for x, lo, hi in zip(solution.x, low, high, strict=True)]
-    for c, x, side in zip(constants, solution.x, on_bound, strict=True):
-        if side is not None:
-            valid = f"[{c.low if c.low is not None else '-inf'}, {c.high if c.high is not None else 'inf'}]"
-            statements.append(
-                f"{c.name} = {c.from_coordinate(float(x)):.6g} sits on the {'lower' if side == 'low' else 'upper'} "
-                f"bound of its valid range {valid}: the data pull it further; its interval is cut there"
-            )
+    statements += _on_bound_statements(constants, solution.x, on_bound)
     return LogFit(
         names=tuple(c.name for c in constants),
         values=tuple(c.from_coordinate(float(v)) for c, v in zip(constants, solution.x, strict=True)),
@@ -186,6 +138,106 @@ def log_fit(
         evaluations=evaluations[0],
         on_bound=tuple(on_bound),
     )
+
+
+def _start_inside_bounds(constants: list[Constant]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The start (in the constants' coordinates) and the lower and upper bounds (±inf where unbounded); the start
+    is moved just inside a finite bound, where least_squares requires it to be."""
+    x0 = np.array([c.to_coordinate(c.start) for c in constants])
+    low, high = (np.array(b) for b in zip(*(c.bounds() for c in constants), strict=True))
+    inside = 1e-9 * (1.0 + np.abs(np.where(np.isfinite(low), low, 0.0)))
+    x0 = np.clip(x0, np.where(np.isfinite(low), low + inside, low), np.where(np.isfinite(high), high - inside, high))
+    return x0, low, high
+
+
+def _undetermined(constants: list[Constant], sv: np.ndarray, vt: np.ndarray) -> tuple[list[bool], list[str]]:
+    """Per constant, whether the data determine it, and a statement per direction they do not: the right singular
+    vectors ``vt`` of the Jacobian whose singular values ``sv`` are below :data:`SINGULAR` × the largest (or that
+    it lacks, with fewer rows than constants)."""
+    p = len(constants)
+    null = [vt[k] for k in range(len(sv)) if sv[k] <= SINGULAR * max(sv[0], 1e-300)]
+    null += [vt[k] for k in range(len(sv), p)] if len(sv) < p else []
+    determined = [all(abs(v[k]) <= LOADING for v in null) for k in range(p)]
+    statements = []
+    for v in null:
+        names = [constants[k].name for k in range(p) if abs(v[k]) > LOADING]
+        statements.append(
+            f"the data cannot determine {' and '.join(names)} separately: the residuals do not change "
+            f"along a combination of them (e.g. a speed exponent from a single speed)"
+        )
+    return determined, statements
+
+
+def _intervals(
+    constants: list[Constant],
+    x: np.ndarray,
+    cov: np.ndarray,
+    s2: float,
+    dof: int,
+    determined: list[bool],
+    low: np.ndarray,
+    high: np.ndarray,
+) -> list[tuple[float, float] | None]:
+    """The 95% interval of each constant in its own units (None where not determined or without residual degrees
+    of freedom): Student's t on the coordinates ``x`` with covariance ``cov``, clipped to the bounds."""
+    intervals: list[tuple[float, float] | None] = []
+    quantile = float(student_t.ppf(0.975, dof)) if dof > 0 else math.nan
+    for k, c in enumerate(constants):
+        if not determined[k] or not math.isfinite(s2):
+            intervals.append(None)
+            continue
+        half = quantile * math.sqrt(max(cov[k, k], 0.0))
+        lo, hi = (c.from_coordinate(float(v)) for v in np.clip([x[k] - half, x[k] + half], low[k], high[k]))
+        # once more in the constant's own units: exp(ln b) may differ from the bound b by a rounding
+        bottom, top = -math.inf if c.low is None else c.low, math.inf if c.high is None else c.high
+        intervals.append((min(max(lo, bottom), top), min(max(hi, bottom), top)))
+    return intervals
+
+
+def _correlations(shape: np.ndarray, determined: list[bool]) -> np.ndarray:
+    """The correlation matrix of the covariance ``shape`` (up to s²), NaN where undefined or for a constant that is
+    not determined."""
+    sd = np.sqrt(np.maximum(np.diag(shape), 0.0))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        corr = shape / np.outer(sd, sd)
+    corr[~np.isfinite(corr)] = math.nan
+    for k in range(len(determined)):
+        if not determined[k]:
+            corr[k, :] = corr[:, k] = math.nan
+    return corr
+
+
+def _interchangeable(constants: list[Constant], corr: np.ndarray) -> list[str]:
+    """A statement per pair of constants correlated beyond :data:`INTERCHANGEABLE`, with how much wider that makes
+    each interval."""
+    statements = []
+    p = len(constants)
+    for j in range(p):
+        for k in range(j + 1, p):
+            rho = float(corr[j, k])
+            if abs(rho) > INTERCHANGEABLE:
+                statements.append(
+                    f"the data hardly tell {constants[j].name} and {constants[k].name} apart: they are nearly "
+                    f"interchangeable (correlation {'-' if rho < 0 else '+'}(1 - {1.0 - abs(rho):.2g})), so each "
+                    "interval is "
+                    f"{1.0 / math.sqrt(max(1.0 - rho * rho, 1e-300)):.3g} times as wide as with the other held; "
+                    "fix one of them to determine the other"
+                )
+    return statements
+
+
+def _on_bound_statements(constants: list[Constant], x: np.ndarray, on_bound: list[str | None]) -> list[str]:
+    """A statement per constant the fit leaves on a bound of its valid range (``on_bound``: "low", "high" or None
+    per constant, at the coordinates ``x``)."""
+    statements = []
+    for c, v, side in zip(constants, x, on_bound, strict=True):
+        if side is not None:
+            valid = f"[{c.low if c.low is not None else '-inf'}, {c.high if c.high is not None else 'inf'}]"
+            statements.append(
+                f"{c.name} = {c.from_coordinate(float(v)):.6g} sits on the {'lower' if side == 'low' else 'upper'} "
+                f"bound of its valid range {valid}: the data pull it further; its interval is cut there"
+            )
+    return statements
 
 
 def _on_bound(x: float, low: float, high: float) -> str | None:

@@ -33,7 +33,8 @@ angle. Mass loss = ρ_plate h² Σ w; erosion rate = mass loss / mass of particl
 
 from __future__ import annotations
 
-import math
+from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
 from tqdm import tqdm
@@ -41,15 +42,26 @@ from tqdm import tqdm
 from contact.checks import check_bool, check_choice, check_number
 from contact.theory import speed_components
 from wear.erosion.memory import check_patch_memory
+from wear.erosion.patch_grid import (
+    PatchGrid,
+    StampArguments,
+    footprint_extent,
+    particle_direction,
+    patch_grid,
+    stamp_arguments,
+)
 from wear.erosion.result import ErosionResult
 from wear.erosion.stamp import stamp_impacts, stamp_impacts_numpy
-from wear.erosion.stream import Stream, impacts_on_patch
+from wear.erosion.stream import Stream
 from wear.erosion.table import ResponseTable
 
 __all__ = ["erode", "footprint_on_grid", "MAX_IMPACTS"]
 
 #: Largest number of impacts one run accepts.
 MAX_IMPACTS = 2_000_000_000
+
+#: The stamping kernels by engine name (same arguments, same update).
+KERNELS: dict[str, Callable[..., None]] = {"numba": stamp_impacts, "numpy": stamp_impacts_numpy}
 
 
 def _rms_slope(surface: np.ndarray, h: float) -> float:
@@ -102,133 +114,130 @@ def erode(
     check_patch_memory(n, frames)
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
         raise ValueError(f"seed={seed!r} is out of range: must be an integer >= 0")
-    stream.check_packing(table.particle_mass / (4.0 / 3.0 * math.pi * table.particle_radius**3))
-    theta = math.radians(stream.angle)
-    vn_nominal = stream.speed * math.cos(theta)
-    tol = 1e-9 * stream.speed
-    if not (
-        table.normal_speed[0] - tol <= vn_nominal <= table.normal_speed[-1] + tol
-        and table.angle[0] - 1e-9 <= stream.angle <= table.angle[-1] + 1e-9
-    ):
-        raise ValueError(
-            f"table does not cover the stream: its normal speed {vn_nominal:.6g} m/s and angle {stream.angle:g} deg "
-            f"must lie in [{table.normal_speed[0]:.6g}, {table.normal_speed[-1]:.6g}] m/s x "
-            f"[{table.angle[0]:g}, {table.angle[-1]:g}] deg (build it with table_axes(speed, angle))"
-        )
-    _, _, l_nominal = table.interpolate(vn_nominal, stream.angle)
-    derived = patch_size is None
-    if derived:
-        patch_size = n * l_nominal / cells_per_radius
-    patch_size = check_number("patch_size", patch_size, low=0.0, low_open=True, high=10.0, units="m")
-    h = patch_size / n
-    diameter = 2.0 * table.particle_radius
-    u_ext = max(abs(table.u[0]), abs(table.u[-1])) + abs(table.v[-1])
-    footprint = 2.0 * u_ext * float(table.length_scale.max())
-    if derived and (patch_size < diameter or footprint > 0.5 * patch_size):
-        needed = max(diameter, 2.0 * footprint)
-        raise ValueError(
-            f"grid={n} is out of range for this stream: the patch it gives ({patch_size:.6g} m = grid x contact "
-            f"radius / {cells_per_radius:g}) must be larger than the particle diameter ({diameter:.6g} m) and twice "
-            f"the largest footprint ({footprint:.6g} m): use grid >= {math.ceil(needed * cells_per_radius / l_nominal)}"
-            " or set patch_size"
-        )
-    if patch_size < diameter or footprint > 0.5 * patch_size:
-        raise ValueError(
-            f"patch_size={patch_size:.6g} is out of range: the patch must be larger than the particle diameter "
-            f"({diameter:.6g} m) and twice the largest footprint ({footprint:.6g} m), "
-            f"i.e. > {max(diameter, 2 * footprint):.6g} m"
-        )
-    if float(table.length_scale.min()) < 1.5 * h:
-        raise ValueError(
-            f"grid={n} is out of range for patch_size={patch_size:.6g} m: the spacing {h:.4g} m must be at most "
-            f"2/3 of the smallest contact radius ({table.length_scale.min():.4g} m): use more grid nodes or a "
-            f"patch smaller than {n * table.length_scale.min() / 1.5:.4g} m"
-        )
-    expected = impacts_on_patch(stream, table.particle_mass, patch_size**2)
-    if expected > max_impacts:
-        raise ValueError(
-            f"exposure_time={stream.exposure_time:g} is out of range: it gives {expected:.4g} impacts on the patch "
-            f"(more than {max_impacts:g}); shorten it or use a smaller patch"
-        )
-    n_impacts = int(round(expected))
-    if n_impacts < 1:
-        raise ValueError(
-            f"exposure_time={stream.exposure_time:g} is out of range: it gives {expected:.3g} impacts on the patch "
-            "(less than 1); lengthen it or use a larger patch"
-        )
-    if slope_cells is None:
-        slope_cells = max(1, round(l_nominal / h))
-    slope_cells = int(
-        check_number("slope_cells", slope_cells, low=1, high=n // 4, what="radius of the slope-fit disc (nodes)")
-    )
-
-    disc, disc_norm = _slope_disc(slope_cells, h)
-    direction = _direction(stream.angle, stream.azimuth)
-    wear = np.zeros((n, n))
+    patch = patch_grid(table, stream, n, patch_size, cells_per_radius, slope_cells, max_impacts)
     has_dent = table.dent is not None
+    args = stamp_arguments(table, patch, particle_direction(stream.angle, stream.azimuth), stream.speed, has_dent)
     if initial is not None:
         initial = np.array(initial, dtype=float)
         if initial.shape != (n, n) or not np.all(np.isfinite(initial)):
             raise ValueError(f"initial has shape {initial.shape}: must be a finite ({n}, {n}) depth field (m)")
+    wear = np.zeros((n, n))
     # relief: everything of the surface that is not worn (initial shape + dents); the slope sees wear + relief
     relief = np.zeros((n, n)) if initial is None else initial.copy()
-    dent_table = np.ascontiguousarray(table.dent) if has_dent else np.zeros((0, 0, 0, 0))
-    side = int(math.ceil(footprint / h)) + 4
-    scratch = np.zeros(side * side)
-    dent_scratch = np.zeros(side * side if has_dent else 1)
-    counts = np.zeros(2, dtype=np.int64)
-    removed = np.zeros(1)
-    du = float(table.u[1] - table.u[0])
-    kernel = stamp_impacts if engine == "numba" else stamp_impacts_numpy
-    shape = np.ascontiguousarray(table.shape)
-    rng = np.random.default_rng(seed)
+    series = _run_stream(
+        KERNELS[engine], args, wear, relief, patch, table.plate_density, seed, samples, frames, progress
+    )
+    dent = (relief - initial if initial is not None else relief) if has_dent else None
+    return _erosion_result(table, stream, patch, series, args, wear, dent, initial, int(seed))
 
+
+@dataclass(frozen=True)
+class StreamSeries:
+    """What :func:`_run_stream` records: per sample row the ``impacts`` so far, the worn ``mass`` (kg), the
+    ``max_depth`` of the surface (m) and its RMS ``slope``; the ``frames`` (surface depth, m) and the impacts at
+    each (``frame_impacts``)."""
+
+    impacts: list[int]
+    mass: list[float]
+    max_depth: list[float]
+    slope: list[float]
+    frames: list[np.ndarray]
+    frame_impacts: list[int]
+
+
+def _erosion_result(
+    table: ResponseTable,
+    stream: Stream,
+    patch: PatchGrid,
+    series: StreamSeries,
+    args: StampArguments,
+    wear: np.ndarray,
+    dent: np.ndarray | None,
+    initial: np.ndarray | None,
+    seed: int,
+) -> ErosionResult:
+    """The :class:`ErosionResult` of a run: the time series in time (s), delivered particle mass (kg) and erosion
+    rate (kg/kg, 0 before the first particle), and the kernels' counts."""
+    impacts = np.asarray(series.impacts, dtype=np.int64)
+    delivered = impacts * table.particle_mass
+    mass = np.asarray(series.mass)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        rate = np.where(delivered > 0, mass / np.where(delivered > 0, delivered, 1.0), 0.0)
+    per_impact = stream.exposure_time / patch.impacts
+    x = patch.spacing * np.arange(patch.nodes)
+    return ErosionResult(
+        x=x,
+        y=x.copy(),
+        wear=wear,
+        dent=dent,
+        initial=initial,
+        time=impacts * per_impact,
+        impacts=impacts,
+        particle_mass_kg=delivered,
+        mass_loss_kg=mass,
+        erosion_rate=rate,
+        max_depth_m=np.asarray(series.max_depth),
+        rms_slope=np.asarray(series.slope),
+        frame_time=np.asarray(series.frame_impacts, dtype=float) * per_impact,
+        frames=np.asarray(series.frames),
+        n_impacts=patch.impacts,
+        shadowed=int(args.counts[0]),
+        clamped=int(args.counts[1]),
+        removed_m3=float(args.removed[0]),
+        stream=stream,
+        table=table,
+        seed=seed,
+    )
+
+
+def _stops(n_impacts: int, samples: int, frames: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Impact counts at which the run samples the time series and keeps a frame, and every count at which it
+    stops stamping: those two and regular steps in between (so that the progress bar moves)."""
     sample_at = np.unique(np.round(np.linspace(0, n_impacts, samples + 1)).astype(np.int64))
     frame_at = np.unique(np.round(np.linspace(0, n_impacts, frames + 1)[1:]).astype(np.int64))
     stops = np.union1d(sample_at[1:], frame_at)
     step = max(1, min(50_000, n_impacts // 200))
     stops = np.union1d(stops, np.arange(step, n_impacts, step))
+    return sample_at, frame_at, stops
+
+
+def _run_stream(
+    kernel: Callable[..., None],
+    args: StampArguments,
+    wear: np.ndarray,
+    relief: np.ndarray,
+    patch: PatchGrid,
+    plate_density: float,
+    seed: int,
+    samples: int,
+    frames: int,
+    progress: bool,
+) -> StreamSeries:
+    """Stamp the patch's impacts at uniform random points (``default_rng(seed)``, drawn batch by batch in this
+    order so that a seed gives the same run) onto ``wear`` and ``relief`` (m, in place), recording the time series
+    and the frames."""
+    sample_at, frame_at, stops = _stops(patch.impacts, samples, frames)
+    h = patch.spacing
+    rng = np.random.default_rng(seed)
     rows = {"impacts": [0], "mass": [0.0], "max_depth": [0.0], "slope": [0.0]}
     frame_list, frame_impacts = [], []
     bar = None
     if progress:
-        bar = tqdm(total=n_impacts, unit="impact", desc="erode", leave=False)
+        bar = tqdm(total=patch.impacts, unit="impact", desc="erode", leave=False)
     done = 0
     sample_set, frame_set = set(sample_at.tolist()), set(frame_at.tolist())
     try:
         for stop in stops:
             count = int(stop) - done
-            positions = rng.random((count, 2)) * patch_size
-            kernel(
-                wear,
-                relief,
-                positions,
-                h,
-                disc,
-                disc_norm,
-                direction,
-                stream.speed,
-                table.normal_speed,
-                table.angle,
-                shape,
-                table.volume_m3,
-                table.length_scale,
-                dent_table,
-                float(table.u[0]),
-                float(table.v[0]),
-                du,
-                scratch,
-                dent_scratch,
-                counts,
-                removed,
-            )
+            positions = rng.random((count, 2)) * patch.size
+            args.stamp(kernel, wear, relief, positions)
             done = int(stop)
             if bar is not None:
                 bar.update(count)
             surface = wear + relief
             if done in sample_set:
                 rows["impacts"].append(done)
-                rows["mass"].append(table.plate_density * h * h * float(wear.sum()))
+                rows["mass"].append(plate_density * h * h * float(wear.sum()))
                 rows["max_depth"].append(float(surface.max()))
                 rows["slope"].append(_rms_slope(surface, h))
             if done in frame_set:
@@ -237,59 +246,7 @@ def erode(
     finally:
         if bar is not None:
             bar.close()
-    impacts = np.asarray(rows["impacts"], dtype=np.int64)
-    delivered = impacts * table.particle_mass
-    mass = np.asarray(rows["mass"])
-    with np.errstate(invalid="ignore", divide="ignore"):
-        rate = np.where(delivered > 0, mass / np.where(delivered > 0, delivered, 1.0), 0.0)
-    per_impact = stream.exposure_time / n_impacts
-    x = h * np.arange(n)
-    return ErosionResult(
-        x=x,
-        y=x.copy(),
-        wear=wear,
-        dent=(relief - initial if initial is not None else relief) if has_dent else None,
-        initial=initial,
-        time=impacts * per_impact,
-        impacts=impacts,
-        particle_mass_kg=delivered,
-        mass_loss_kg=mass,
-        erosion_rate=rate,
-        max_depth_m=np.asarray(rows["max_depth"]),
-        rms_slope=np.asarray(rows["slope"]),
-        frame_time=np.asarray(frame_impacts, dtype=float) * per_impact,
-        frames=np.asarray(frame_list),
-        n_impacts=n_impacts,
-        shadowed=int(counts[0]),
-        clamped=int(counts[1]),
-        removed_m3=float(removed[0]),
-        stream=stream,
-        table=table,
-        seed=int(seed),
-    )
-
-
-def _slope_disc(slope_cells: int, h: float) -> tuple[np.ndarray, float]:
-    """Node offsets (p, q) of the disc p² + q² ≤ slope_cells² and 1/(h Σ p²): the least-squares slope weights."""
-    k = np.arange(-slope_cells, slope_cells + 1)
-    pp, qq = np.meshgrid(k, k)
-    inside = pp**2 + qq**2 <= slope_cells**2
-    disc = np.ascontiguousarray(np.column_stack([pp[inside], qq[inside]]).astype(np.int64))
-    return disc, 1.0 / (h * float(np.sum(disc[:, 0] ** 2)))
-
-
-def _direction(angle: float, azimuth: float) -> np.ndarray:
-    """(sin θ cos ψ, sin θ sin ψ, cos θ, cos ψ, sin ψ) of a particle at ``angle`` θ and ``azimuth`` ψ (deg)."""
-    theta, psi = math.radians(angle), math.radians(azimuth)
-    return np.array(
-        [
-            math.sin(theta) * math.cos(psi),
-            math.sin(theta) * math.sin(psi),
-            math.cos(theta),
-            math.cos(psi),
-            math.sin(psi),
-        ]
-    )
+    return StreamSeries(rows["impacts"], rows["mass"], rows["max_depth"], rows["slope"], frame_list, frame_impacts)
 
 
 def footprint_on_grid(
@@ -313,7 +270,8 @@ def footprint_on_grid(
     angle = check_number("angle", angle, low=0.0, high=85.0, units="deg")
     check_number("azimuth", azimuth, low=-360.0, high=360.0, units="deg")
     n = int(check_number("grid", grid, low=16, high=8192))
-    h = check_number("patch_size", patch_size, low=0.0, low_open=True, high=10.0, units="m") / n
+    size = check_number("patch_size", patch_size, low=0.0, low_open=True, high=10.0, units="m")
+    h = size / n
     check_choice("engine", engine, ("numba", "numpy"))
     relief = np.zeros((n, n)) if surface is None else np.array(surface, dtype=float)
     if relief.shape != (n, n):
@@ -321,32 +279,10 @@ def footprint_on_grid(
     if slope_cells is None:
         _, _, length = table.interpolate(speed_components(speed, angle)[0], angle)
         slope_cells = max(1, round(length / h))
-    disc, disc_norm = _slope_disc(int(check_number("slope_cells", slope_cells, low=1, high=n // 4)), h)
+    slope_cells = int(check_number("slope_cells", slope_cells, low=1, high=n // 4))
+    # one impact: no time series, no impact count; the dents are left out (the worn depth only)
+    patch = PatchGrid(n, size, h, footprint_extent(table), 1, slope_cells)
+    args = stamp_arguments(table, patch, particle_direction(angle, azimuth), speed, with_dent=False)
     wear = np.zeros((n, n))
-    footprint = 2.0 * (max(abs(table.u[0]), abs(table.u[-1])) + abs(table.v[-1])) * float(table.length_scale.max())
-    side = int(math.ceil(footprint / h)) + 4
-    kernel = stamp_impacts if engine == "numba" else stamp_impacts_numpy
-    kernel(
-        wear,
-        relief,
-        np.array([point], dtype=float),
-        h,
-        disc,
-        disc_norm,
-        _direction(angle, azimuth),
-        speed,
-        table.normal_speed,
-        table.angle,
-        np.ascontiguousarray(table.shape),
-        table.volume_m3,
-        table.length_scale,
-        np.zeros((0, 0, 0, 0)),
-        float(table.u[0]),
-        float(table.v[0]),
-        float(table.u[1] - table.u[0]),
-        np.zeros(side * side),
-        np.zeros(1),
-        np.zeros(2, dtype=np.int64),
-        np.zeros(1),
-    )
+    args.stamp(KERNELS[engine], wear, relief, np.array([point], dtype=float))
     return wear

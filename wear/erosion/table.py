@@ -28,6 +28,7 @@ more speeds (``erosion.table_speeds``) resolve it.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numba
@@ -37,6 +38,10 @@ from scipy.interpolate import RegularGridInterpolator
 from contact.checks import check_array, check_number
 from contact.theory import speed_components
 from wear.erosion.response import Footprint, ImpactResponse
+
+#: What builds the table's footprints: a callable (normal_speed m/s, angle deg) -> Footprint, or an object with a
+#: batched ``many`` (an :class:`ImpactResponse`).
+Response = ImpactResponse | Callable[[float, float], Footprint]
 
 __all__ = ["ResponseTable", "build_response_table", "table_axes", "table_entries", "MAX_TABLE_ENTRIES"]
 
@@ -208,69 +213,14 @@ def build_response_table(
     ``particle_radius`` (m), ``particle_mass`` (kg), ``plate_density`` (kg/m³): taken from an
     :class:`ImpactResponse` when not given.
     """
-    vn = check_array("normal_speeds", normal_speeds, low=0.0, low_open=True, units="m/s")
-    theta = check_array("angles", angles, low=0.0, high=89.0, units="deg")
-    for name, axis in (("normal_speeds", vn), ("angles", theta)):
-        if axis.size >= 2 and np.any(np.diff(axis) <= 0.0):
-            raise ValueError(f"{name} must be strictly increasing")
-    ppl = int(check_number("points_per_length", points_per_length, low=4, high=64))
-    if vn.size * theta.size > MAX_TABLE_ENTRIES:
-        raise ValueError(
-            f"normal_speeds, angles: {vn.size} x {theta.size} = {vn.size * theta.size} table entries (one impact "
-            f"each): at most {MAX_TABLE_ENTRIES}; use fewer speeds or a coarser angle step"
-        )
-    if isinstance(response, ImpactResponse):
-        particle_radius = response.radius if particle_radius is None else particle_radius
-        particle_mass = response.particle_mass if particle_mass is None else particle_mass
-        plate_density = response.plate.density if plate_density is None else plate_density
-    for name, value, units in (
-        ("particle_radius", particle_radius, "m"),
-        ("particle_mass", particle_mass, "kg"),
-        ("plate_density", plate_density, "kg/m^3"),
-    ):
-        if value is None:
-            raise ValueError(f"{name}=None: give it ({units}) when response is not an ImpactResponse")
-        check_number(name, value, low=0.0, low_open=True, units=units)
-    grid_v, grid_a = np.meshgrid(vn, theta, indexing="ij")
-    flat_v, flat_a = grid_v.ravel(), grid_a.ravel()
-    if hasattr(response, "many"):
-        prints = list(response.many(flat_v, flat_a))
-    else:
-        prints = [response(float(s), float(a)) for s, a in zip(flat_v, flat_a, strict=True)]
-    if len(prints) != flat_v.size or not all(isinstance(p, Footprint) for p in prints):
-        raise ValueError("response must return one wear.erosion.response.Footprint per (normal_speed, angle)")
-    has_dent = prints[0].dent is not None
-    if any((p.dent is not None) != has_dent for p in prints):
-        raise ValueError("response returned a dent for some footprints only")
-    # common normalised box, one cell of margin
-    lo_u = min(float(p.x[0]) / p.length_scale for p in prints)
-    hi_u = max(float(p.x[-1]) / p.length_scale for p in prints)
-    hi_v = max(float(np.abs(p.y).max()) / p.length_scale for p in prints)
+    vn, theta, ppl = _check_axes(normal_speeds, angles, points_per_length)
+    particle_radius, particle_mass, plate_density = _particle_and_plate(
+        response, particle_radius, particle_mass, plate_density
+    )
+    prints = _footprints(response, vn, theta)
     du = 1.0 / ppl
-    u = du * np.arange(math.floor(lo_u / du) - 1, math.ceil(hi_u / du) + 2)
-    half = math.ceil(hi_v / du) + 1
-    v = du * np.arange(-half, half + 1)
-    uu, vv = np.meshgrid(u, v)
-    shape = np.zeros((vn.size, theta.size, v.size, u.size))
-    dent = np.zeros_like(shape) if has_dent else None
-    length = np.zeros((vn.size, theta.size))
-    cutting = np.zeros_like(length)
-    deform = np.zeros_like(length)
-    for k, p in enumerate(prints):
-        i, j = divmod(k, theta.size)
-        L = check_number("length_scale", p.length_scale, low=0.0, low_open=True, units="m")
-        length[i, j] = L
-        cutting[i, j] = p.cutting_volume_m3
-        deform[i, j] = p.deformation_volume_m3
-        pts = np.column_stack([(vv * L).ravel(), (uu * L).ravel()])
-        resample = RegularGridInterpolator((p.y, p.x), p.wear, bounds_error=False, fill_value=0.0)
-        s = np.maximum(resample(pts).reshape(uu.shape), 0.0)
-        total = s.sum() * du * du
-        if total > 0.0 and p.volume_m3 > 0.0:
-            shape[i, j] = s / total
-        if has_dent:
-            rd = RegularGridInterpolator((p.y, p.x), p.dent, bounds_error=False, fill_value=0.0)
-            dent[i, j] = rd(pts).reshape(uu.shape) / L
+    u, v = _normalised_axes(prints, du)
+    shape, dent, length, cutting, deform = _resample(prints, vn.size, theta.size, u, v, du)
     return ResponseTable(
         normal_speed=vn,
         angle=theta,
@@ -287,3 +237,100 @@ def build_response_table(
         description=description or type(response).__name__,
         dent=dent,
     )
+
+
+def _check_axes(normal_speeds, angles, points_per_length: int) -> tuple[np.ndarray, np.ndarray, int]:
+    """The table's normal speeds (m/s) and angles (deg), checked strictly increasing and within
+    :data:`MAX_TABLE_ENTRIES` entries, and the footprint grid points per L."""
+    vn = check_array("normal_speeds", normal_speeds, low=0.0, low_open=True, units="m/s")
+    theta = check_array("angles", angles, low=0.0, high=89.0, units="deg")
+    for name, axis in (("normal_speeds", vn), ("angles", theta)):
+        if axis.size >= 2 and np.any(np.diff(axis) <= 0.0):
+            raise ValueError(f"{name} must be strictly increasing")
+    ppl = int(check_number("points_per_length", points_per_length, low=4, high=64))
+    if vn.size * theta.size > MAX_TABLE_ENTRIES:
+        raise ValueError(
+            f"normal_speeds, angles: {vn.size} x {theta.size} = {vn.size * theta.size} table entries (one impact "
+            f"each): at most {MAX_TABLE_ENTRIES}; use fewer speeds or a coarser angle step"
+        )
+    return vn, theta, ppl
+
+
+def _particle_and_plate(
+    response: Response, particle_radius: float | None, particle_mass: float | None, plate_density: float | None
+) -> tuple[float, float, float]:
+    """The particle radius (m) and mass (kg) and the plate density (kg/m³): as given, else an
+    :class:`ImpactResponse`'s; each must be known and positive."""
+    if isinstance(response, ImpactResponse):
+        particle_radius = response.radius if particle_radius is None else particle_radius
+        particle_mass = response.particle_mass if particle_mass is None else particle_mass
+        plate_density = response.plate.density if plate_density is None else plate_density
+    for name, value, units in (
+        ("particle_radius", particle_radius, "m"),
+        ("particle_mass", particle_mass, "kg"),
+        ("plate_density", plate_density, "kg/m^3"),
+    ):
+        if value is None:
+            raise ValueError(f"{name}=None: give it ({units}) when response is not an ImpactResponse")
+        check_number(name, value, low=0.0, low_open=True, units=units)
+    return particle_radius, particle_mass, plate_density
+
+
+def _footprints(response: Response, vn: np.ndarray, theta: np.ndarray) -> list[Footprint]:
+    """One :class:`Footprint` per (normal speed, angle), speed-major: batched through ``response.many`` where it
+    has one; all with a dent or none."""
+    grid_v, grid_a = np.meshgrid(vn, theta, indexing="ij")
+    flat_v, flat_a = grid_v.ravel(), grid_a.ravel()
+    if hasattr(response, "many"):
+        prints = list(response.many(flat_v, flat_a))
+    else:
+        prints = [response(float(s), float(a)) for s, a in zip(flat_v, flat_a, strict=True)]
+    if len(prints) != flat_v.size or not all(isinstance(p, Footprint) for p in prints):
+        raise ValueError("response must return one wear.erosion.response.Footprint per (normal_speed, angle)")
+    has_dent = prints[0].dent is not None
+    if any((p.dent is not None) != has_dent for p in prints):
+        raise ValueError("response returned a dent for some footprints only")
+    return prints
+
+
+def _normalised_axes(prints: list[Footprint], du: float) -> tuple[np.ndarray, np.ndarray]:
+    """The u and v axes (units of L, spacing ``du``) of a box holding every footprint of ``prints``, with one cell
+    of margin, symmetric in v."""
+    lo_u = min(float(p.x[0]) / p.length_scale for p in prints)
+    hi_u = max(float(p.x[-1]) / p.length_scale for p in prints)
+    hi_v = max(float(np.abs(p.y).max()) / p.length_scale for p in prints)
+    u = du * np.arange(math.floor(lo_u / du) - 1, math.ceil(hi_u / du) + 2)
+    half = math.ceil(hi_v / du) + 1
+    v = du * np.arange(-half, half + 1)
+    return u, v
+
+
+def _resample(
+    prints: list[Footprint], n_speeds: int, n_angles: int, u: np.ndarray, v: np.ndarray, du: float
+) -> tuple[np.ndarray, np.ndarray | None, np.ndarray, np.ndarray, np.ndarray]:
+    """The footprints ``prints`` (speed-major) on the normalised grid (``u``, ``v``, spacing ``du``): shapes of
+    unit integral (0 where an entry wears nothing), dents / L (or None), L (m), cutting and deformation volumes
+    (m³)."""
+    has_dent = prints[0].dent is not None
+    uu, vv = np.meshgrid(u, v)
+    shape = np.zeros((n_speeds, n_angles, v.size, u.size))
+    dent = np.zeros_like(shape) if has_dent else None
+    length = np.zeros((n_speeds, n_angles))
+    cutting = np.zeros_like(length)
+    deform = np.zeros_like(length)
+    for k, p in enumerate(prints):
+        i, j = divmod(k, n_angles)
+        L = check_number("length_scale", p.length_scale, low=0.0, low_open=True, units="m")
+        length[i, j] = L
+        cutting[i, j] = p.cutting_volume_m3
+        deform[i, j] = p.deformation_volume_m3
+        pts = np.column_stack([(vv * L).ravel(), (uu * L).ravel()])
+        resample = RegularGridInterpolator((p.y, p.x), p.wear, bounds_error=False, fill_value=0.0)
+        s = np.maximum(resample(pts).reshape(uu.shape), 0.0)
+        total = s.sum() * du * du
+        if total > 0.0 and p.volume_m3 > 0.0:
+            shape[i, j] = s / total
+        if has_dent:
+            rd = RegularGridInterpolator((p.y, p.x), p.dent, bounds_error=False, fill_value=0.0)
+            dent[i, j] = rd(pts).reshape(uu.shape) / L
+    return shape, dent, length, cutting, deform

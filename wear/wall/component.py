@@ -39,7 +39,7 @@ from wear.wall.foam import DecomposedCaseError, polymesh_folder, read_polymesh
 from wear.wall.law_keys import check_law_keys
 from wear.wall.laws import records_refusal, wall_law
 from wear.wall.mesh import Wall, concat_walls, duplicate_faces, read_surface
-from wear.wall.sources import plan_chunks, record_files, record_format
+from wear.wall.sources import Chunk, plan_chunks, record_files, record_format
 from wear.wall.trust import check_exposure, check_records_fit, note_inputs, note_results
 from wear.wall.worn import SECONDS_PER_YEAR, HotSpots, WallWear, hot_spots, remaining_life, wall_wear, worn_mesh
 
@@ -248,26 +248,14 @@ def erode_component(
     (:func:`wear.wall.law_keys.check_law_keys`), and so are records that do not lie on the wall as a CFD run's do
     and an exposure too short for the rates, before any work (:mod:`wear.wall.trust`, which also warns of values
     that look like other units)."""
-    check_instance("case", case, Case, "a wear.Case: wear.case.default_case('wall') or wear.case.load_case(path)")
-    if isinstance(wall, (str, os.PathLike)):
-        raise ValueError(f"wall={str(wall)!r} is a path: give the Wall it holds, wear.wall.read_wall({str(wall)!r})")
-    check_instance("wall", wall, Wall, "a wear.wall.Wall: wear.wall.read_wall(path)")
-    check_count("workers", workers, low=1, what="processes")
-    check_law_keys(case, default_case("wall"))
+    _check_arguments(case, wall, workers)
     spec = case.wall
     if spec.exposure is not None:
         check_exposure(spec.exposure, "wall.exposure")
-    paths = record_files(records)
-    if chunk_rows is None:
-        formats = {record_format(p) for p in paths}
-        chunk_rows = min(chunk_rows_for(wall, None, f) for f in formats)
-    chunks = plan_chunks(paths, chunk_rows)
+    chunks = _plan_records(records, wall, chunk_rows)
     # before the law's table, which may take half a minute
     check_records_fit(chunks, wall, normal, records_refusal(case))
-    thickness = np.full(len(wall), np.nan if spec.thickness is None else spec.thickness)
-    from_file = wall.thickness_m is not None and bool(np.isfinite(wall.thickness_m).any())
-    if wall.thickness_m is not None:
-        thickness = np.where(np.isfinite(wall.thickness_m), wall.thickness_m, thickness)
+    thickness, from_file = _thickness(wall, spec.thickness)
     note_inputs(case, thickness, from_file)
     seconds: dict[str, float] = {}
     t0 = time.perf_counter()
@@ -286,15 +274,7 @@ def erode_component(
         tolerance=tolerance,
     )
     seconds["records"] = time.perf_counter() - t0
-    if spec.exposure is not None:
-        exposure, source = spec.exposure, "wall.exposure"
-    else:
-        exposure, source = sums.time_last_s - sums.time_first_s, "the records' time span"
-        if not exposure > 0.0:
-            raise ValueError(
-                f"wall.exposure: the records span {max(exposure, 0.0):g} s (first hit {sums.time_first_s:g} s, last "
-                f"{sums.time_last_s:g} s), so they give no time to turn volumes into rates; give wall.exposure (s)"
-            )
+    exposure, source = _exposure(spec.exposure, sums)
     check_exposure(exposure, source)
     scale = spec.rate_scale()
     wear = wall_wear(wall, sums.volume_m3 * scale, exposure, case.plate.density)
@@ -315,3 +295,48 @@ def erode_component(
         law_description=getattr(law, "description", case.wear.law),
         seconds=seconds,
     )
+
+
+def _check_arguments(case: Case, wall: Wall, workers: int) -> None:
+    """Refuse a ``case`` that is not a Case or sets keys its law does not read, a ``wall`` that is not a Wall (a
+    path is named as such), and a ``workers`` count below 1."""
+    check_instance("case", case, Case, "a wear.Case: wear.case.default_case('wall') or wear.case.load_case(path)")
+    if isinstance(wall, (str, os.PathLike)):
+        raise ValueError(f"wall={str(wall)!r} is a path: give the Wall it holds, wear.wall.read_wall({str(wall)!r})")
+    check_instance("wall", wall, Wall, "a wear.wall.Wall: wear.wall.read_wall(path)")
+    check_count("workers", workers, low=1, what="processes")
+    check_law_keys(case, default_case("wall"))
+
+
+def _plan_records(records: str | Path | Sequence[str | Path], wall: Wall, chunk_rows: int | None) -> list[Chunk]:
+    """The chunks of ``chunk_rows`` records each (default: the most that fit the memory budget for every format
+    among the files) of the record files ``records`` names."""
+    paths = record_files(records)
+    if chunk_rows is None:
+        formats = {record_format(p) for p in paths}
+        chunk_rows = min(chunk_rows_for(wall, None, f) for f in formats)
+    return plan_chunks(paths, chunk_rows)
+
+
+def _thickness(wall: Wall, thickness: float | None) -> tuple[np.ndarray, bool]:
+    """Each face's wall thickness (m): the wall file's ``thickness_m`` where finite, else ``thickness`` (the
+    ``wall.thickness`` key; NaN without it); and whether the file gave any."""
+    per_face = np.full(len(wall), np.nan if thickness is None else thickness)
+    from_file = wall.thickness_m is not None and bool(np.isfinite(wall.thickness_m).any())
+    if wall.thickness_m is not None:
+        per_face = np.where(np.isfinite(wall.thickness_m), wall.thickness_m, per_face)
+    return per_face, from_file
+
+
+def _exposure(exposure: float | None, sums: WallSums) -> tuple[float, str]:
+    """The exposure time (s) the records stand for and where it came from: ``exposure`` (``wall.exposure``) if
+    given, else the span of the records' hit times, which must be positive."""
+    if exposure is not None:
+        return exposure, "wall.exposure"
+    span = sums.time_last_s - sums.time_first_s
+    if not span > 0.0:
+        raise ValueError(
+            f"wall.exposure: the records span {max(span, 0.0):g} s (first hit {sums.time_first_s:g} s, last "
+            f"{sums.time_last_s:g} s), so they give no time to turn volumes into rates; give wall.exposure (s)"
+        )
+    return span, "the records' time span"

@@ -13,11 +13,15 @@ import ctypes.util
 import math
 import os
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import meshio
 import numpy as np
 
 from wear.app.outputs.writer import atomic_write
+
+if TYPE_CHECKING:  # pyvista loads VTK: at run time only once rendering is known to be available
+    import pyvista as pv
 
 __all__ = [
     "DEBIAN_PACKAGES",
@@ -143,31 +147,64 @@ def render_surface(
     if not ok:
         raise RuntimeError(why)
     import pyvista as pv  # heavy (VTK), and only where rendering is available
-    from vtkmodules.vtkCommonCore import vtkLogger, vtkObject, vtkStringArray
+
+    _silence_vtk()
+    factor = default_exaggeration(mesh) if exaggeration is None else float(exaggeration)
+    if factor <= 0:
+        raise ValueError(f"exaggeration={factor:g} is out of range: must be > 0")
+    faces = _vtk_faces(mesh)
+    # in-plane coordinates in mm, depth in mm × factor, so the camera sees a unit-sized scene
+    points = np.asarray(mesh.points, dtype=float) * 1e3
+    points[:, 2] *= factor
+    poly = pv.PolyData(points, faces)
+    plotter = pv.Plotter(off_screen=True, window_size=list(window_size))
+    plotter.set_background("white")
+    _add_coloured_surface(plotter, poly, mesh, scalar)
+    plotter.add_text(
+        f"{title + ':   ' if title else ''}depth (z) exaggerated ×{factor:g}",
+        position="upper_left",
+        font_size=12,
+        color="black",
+    )
+    _add_true_axes(plotter, poly, mesh, factor)
+    plotter.camera_position = "iso"
+    plotter.camera.elevation = -10
+    plotter.camera.zoom(1.0)
+    try:
+        return atomic_write(path, lambda name: plotter.screenshot(name), mode="path")
+    finally:
+        plotter.close()
+
+
+def _silence_vtk() -> None:
+    """Turn VTK's stderr log and warning windows off."""
+    # VTK is imported here, not at the top: only once rendering_available() has found the OpenGL libraries
+    from vtkmodules.vtkCommonCore import vtkLogger, vtkObject
 
     # VTK logs to stderr (with colour codes) when it probes an X server it then does without ("bad X server
     # connection" off-screen): the render succeeds, and the user's terminal is not VTK's
     vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
     vtkObject.GlobalWarningDisplayOff()
 
-    factor = default_exaggeration(mesh) if exaggeration is None else float(exaggeration)
-    if factor <= 0:
-        raise ValueError(f"exaggeration={factor:g} is out of range: must be > 0")
+
+def _vtk_faces(mesh: meshio.Mesh) -> np.ndarray:
+    """The surface cells of ``mesh`` (its quads, else its triangles) as VTK's flat face array: (count, nodes...)
+    per cell."""
     cells = mesh.cells_dict
     if "quad" in cells:
-        faces = np.hstack([np.full((len(cells["quad"]), 1), 4), cells["quad"]]).ravel()
-    elif "triangle" in cells:
-        faces = np.hstack([np.full((len(cells["triangle"]), 1), 3), cells["triangle"]]).ravel()
-    else:
-        raise ValueError("mesh has no quad or triangle cells: render_surface needs a surface mesh")
-    # in-plane coordinates in mm, depth in mm × factor, so the camera sees a unit-sized scene
-    points = np.asarray(mesh.points, dtype=float) * 1e3
-    points[:, 2] *= factor
-    poly = pv.PolyData(points, faces)
+        return np.hstack([np.full((len(cells["quad"]), 1), 4), cells["quad"]]).ravel()
+    if "triangle" in cells:
+        return np.hstack([np.full((len(cells["triangle"]), 1), 3), cells["triangle"]]).ravel()
+    raise ValueError("mesh has no quad or triangle cells: render_surface needs a surface mesh")
+
+
+def _add_coloured_surface(plotter: pv.Plotter, poly: pv.PolyData, mesh: meshio.Mesh, scalar: str) -> None:
+    """Add ``poly`` to ``plotter`` coloured by ``mesh``'s point data ``scalar`` (m; default the depth −z) in µm,
+    with a colour bar labelled at round values."""
+    import pyvista as pv  # see _silence_vtk: VTK only once rendering is known to be available
+
     values = np.asarray(mesh.point_data.get(scalar, -mesh.points[:, 2]), dtype=float) * 1e6
     poly.point_data[f"{scalar} (µm)"] = values
-    plotter = pv.Plotter(off_screen=True, window_size=list(window_size))
-    plotter.set_background("white")
     bar_title = f"{scalar.replace('_', ' ')} (µm)"
     plotter.add_mesh(
         poly,
@@ -182,15 +219,16 @@ def render_surface(
     bar = plotter.scalar_bars[bar_title]
     bar.SetUseCustomLabels(True)
     bar.SetCustomLabels(pv.convert_array(ticks))
-    plotter.add_text(
-        f"{title + ':   ' if title else ''}depth (z) exaggerated ×{factor:g}",
-        position="upper_left",
-        font_size=12,
-        color="black",
-    )
-    # box axes label the true coordinates: x, y in mm, and z in µm although it is drawn × factor. VTK puts x and
-    # y labels at round values itself; on the short z axis it would crowd ~8 of them, so z gets a few round
-    # values of our own (the box's z extent widened to them) that carry the unit, as VTK draws no z title there
+
+
+def _add_true_axes(plotter: pv.Plotter, poly: pv.PolyData, mesh: meshio.Mesh, factor: float) -> None:
+    """Box axes around ``poly`` (drawn in mm, z × ``factor``) labelled with ``mesh``'s true coordinates: x, y in mm
+    and z in µm."""
+    from vtkmodules.vtkCommonCore import vtkStringArray  # see _silence_vtk
+
+    # VTK puts x and y labels at round values itself; on the short z axis it would crowd ~8 of them, so z gets a
+    # few round values of our own (the box's z extent widened to them) that carry the unit, as VTK draws no z
+    # title there
     z_ticks = _outward_ticks(float(mesh.points[:, 2].min()) * 1e6, float(mesh.points[:, 2].max()) * 1e6)
     bounds = list(poly.bounds)
     bounds[4:] = [z_ticks[0] * 1e-3 * factor, z_ticks[-1] * 1e-3 * factor]
@@ -211,10 +249,3 @@ def render_surface(
     for value in z_ticks:
         z_labels.InsertNextValue(f"{value:.3g} µm")
     axes.SetAxisLabels(2, z_labels)
-    plotter.camera_position = "iso"
-    plotter.camera.elevation = -10
-    plotter.camera.zoom(1.0)
-    try:
-        return atomic_write(path, lambda name: plotter.screenshot(name), mode="path")
-    finally:
-        plotter.close()

@@ -119,7 +119,13 @@ def closed_forms(quick: bool) -> list[Check]:
     """Closed forms against published numbers and against quadrature: MOOSE Hertz benchmark, exact first-yield
     coefficient C(0.3) = 1.6128 at z = 0.481a (Johnson 1985 §6.2; errata equation 18), Green's (2005) fit, and the
     force carried by the equation 16 and equation 19 profiles (scipy quadrature)."""
-    out = [
+    return [*_hertz_benchmark(), *_first_yield(), _green_fit(), _hertz_profile_force(), _mesarovic_johnson_force()]
+
+
+def _hertz_benchmark() -> list[Check]:
+    """Contact radius (m) and overlap (m) of the MOOSE contact module's Hertz benchmark: E* = 7.5 MPa, R = 1 m,
+    F = 1e4 N."""
+    return [
         relative(
             "contact",
             "Hertz contact radius",
@@ -140,6 +146,12 @@ def closed_forms(quick: bool) -> list[Check]:
             1e-6,
             "m",
         ),
+    ]
+
+
+def _first_yield() -> list[Check]:
+    """The exact first-yield coefficient C(0.3) = p0/Y and its depth z/a at ν = 0.3 (Johnson 1985 §6.2)."""
+    return [
         absolute(
             "contact",
             "first-yield coefficient C(ν) = p0/Y",
@@ -159,34 +171,44 @@ def closed_forms(quick: bool) -> list[Check]:
             1e-3,
         ),
     ]
+
+
+def _green_fit() -> Check:
+    """C(ν) against Green's (2005) fit at the ν in [0.10, 0.45] where they differ most (the fit claims 0.1%)."""
     nus = np.linspace(0.1, 0.45, 8)
     dev = [abs(theory.yield_coefficient(n) / float(theory.green_yield_coefficient(n)) - 1) for n in nus]
     k = int(np.argmax(dev))
-    out.append(
-        relative(
-            "contact",
-            f"C(ν) vs Green's fit (worst ν = {nus[k]:.2f})",
-            "ν = 0.10-0.45",
-            float(theory.green_yield_coefficient(nus[k])),
-            "Green 2005, Proc. IMechE J 219 (fit within 0.1%)",
-            theory.yield_coefficient(nus[k]),
-            1e-3,
-        )
+    return relative(
+        "contact",
+        f"C(ν) vs Green's fit (worst ν = {nus[k]:.2f})",
+        "ν = 0.10-0.45",
+        float(theory.green_yield_coefficient(nus[k])),
+        "Green 2005, Proc. IMechE J 219 (fit within 0.1%)",
+        theory.yield_coefficient(nus[k]),
+        1e-3,
     )
+
+
+def _hertz_profile_force() -> Check:
+    """The force (N) of Eq. 16's pressure profile by quadrature of 2πr p(r) against 2πa²p0/3, for a = 0.1 mm and
+    p0 = 2 GPa."""
     a, p0 = 1e-4, 2e9
     force = 2 * math.pi * quad(lambda r: r * float(theory.hertz_pressure(r, a, p0)), 0, a, epsrel=1e-12)[0]
-    out.append(
-        relative(
-            "contact",
-            "∫ p dA of Eq. 16 (corrected Hertz profile)",
-            "a 0.1 mm, p0 2 GPa",
-            2 / 3 * math.pi * a * a * p0,
-            "Johnson 1985: F = 2πa²p0/3",
-            force,
-            1e-8,
-            "N",
-        )
+    return relative(
+        "contact",
+        "∫ p dA of Eq. 16 (corrected Hertz profile)",
+        "a 0.1 mm, p0 2 GPa",
+        2 / 3 * math.pi * a * a * p0,
+        "Johnson 1985: F = 2πa²p0/3",
+        force,
+        1e-8,
+        "N",
     )
+
+
+def _mesarovic_johnson_force() -> Check:
+    """The force (N) of Eq. 19's unloading pressure profile by quadrature against its closed form, at a/a* = 0.6
+    for a* = 0.2 mm and p* = 1.5 GPa."""
     a_star, p_star, x = 2e-4, 1.5e9, 0.6
     f_mj = (
         2
@@ -199,19 +221,16 @@ def closed_forms(quick: bool) -> list[Check]:
             limit=200,
         )[0]
     )
-    out.append(
-        relative(
-            "contact",
-            "∫ p dA of Eq. 19 at a/a* = 0.6",
-            "a* 0.2 mm, p* 1.5 GPa",
-            float(theory.mesarovic_johnson_force(x * a_star, a_star, p_star)),
-            "Mesarovic & Johnson 2000: F/F* = (2/π)[asin x − x√(1−x²)]",
-            f_mj,
-            1e-6,
-            "N",
-        )
+    return relative(
+        "contact",
+        "∫ p dA of Eq. 19 at a/a* = 0.6",
+        "a* 0.2 mm, p* 1.5 GPa",
+        float(theory.mesarovic_johnson_force(x * a_star, a_star, p_star)),
+        "Mesarovic & Johnson 2000: F/F* = (2/π)[asin x − x√(1−x²)]",
+        f_mj,
+        1e-6,
+        "N",
     )
-    return out
 
 
 def thornton_table(

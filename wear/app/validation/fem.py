@@ -153,10 +153,21 @@ def fem_elastic_plastic(quick: bool) -> list[Check]:
     a/a* = 0.75 and 0.5 within 15% RMS of p* of Mesarovic & Johnson (equation 19) from the FE's own a*, p*."""
     fc = _critical()
     dc = fc.overlap
-    pc, ac = fc.force, math.pi * R * dc
     w_load, w_unload = unloading_path_w(quick)
     path = np.concatenate([w_load, w_unload]) * dc
     res = _indent(R, _plate(), path, (16, 10) if quick else (32, 20))
+    k_star = w_load.size - 1  # the last loading step: unloading starts from w = 50
+    return [
+        *_kogut_etsion_loading(res, w_load, fc.force, math.pi * R * dc),
+        _plastic_zone_surface(res, w_load),
+        _unloading_stiffness(res, path, k_star),
+        *_unloading_pressures(res, path, k_star),
+    ]
+
+
+def _kogut_etsion_loading(res: fem.IndentationResult, w_load: np.ndarray, pc: float, ac: float) -> list[Check]:
+    """P/P_c and A/A_c of the FE run ``res`` at w = :data:`KE_W` against Kogut & Etsion's fits; ``w_load``: the
+    loading path's w = δ/δ_c, ``pc`` the first-yield force (N), ``ac`` = πRδ_c its contact area (m²)."""
     src = "Kogut & Etsion 2002, J. Appl. Mech. 69:657"
     out = []
     for w in KE_W:
@@ -174,43 +185,57 @@ def fem_elastic_plastic(quick: bool) -> list[Check]:
                 0.15,
             )
         )
+    return out
+
+
+def _plastic_zone_surface(res: fem.IndentationResult, w_load: np.ndarray) -> Check:
+    """The first w = δ/δ_c of the loading path ``w_load`` at which the plastic zone of ``res`` reaches the surface
+    (inf if it never does), against Kogut & Etsion's 4 ≤ w ≤ 10."""
     regimes = [res.regime[i] for i in range(w_load.size)]
     surface = [w for w, g in zip(w_load, regimes, strict=True) if g in ("surface-plastic", "fully-plastic")]
     w_surface = float(surface[0]) if surface else math.inf
-    out.append(
-        Check(
-            "fem",
-            "w at which the plastic zone reaches the surface",
-            CASE + ", Y 210 MPa",
-            "4 ≤ w ≤ 10",
-            "Kogut & Etsion 2002",
-            w_surface,
-            max(4.0 - w_surface, w_surface - 10.0, 0.0),
-            0.0,
-            "distance outside [4, 10]",
-        )
+    return Check(
+        "fem",
+        "w at which the plastic zone reaches the surface",
+        CASE + ", Y 210 MPa",
+        "4 ≤ w ≤ 10",
+        "Kogut & Etsion 2002",
+        w_surface,
+        max(4.0 - w_surface, w_surface - 10.0, 0.0),
+        0.0,
+        "distance outside [4, 10]",
     )
-    k_star = w_load.size - 1
+
+
+def _unloading_stiffness(res: fem.IndentationResult, path: np.ndarray, k_star: int) -> Check:
+    """The FE's first unloading stiffness dF/dδ (N/m) from step ``k_star`` of the overlaps ``path`` (m), against
+    the exact elastic 2E*a at the mean contact radius of that step."""
     k1 = k_star + 1
     stiffness = (res.force[k_star] - res.force[k1]) / (path[k_star] - path[k1])
     a_mid = 0.5 * (res.contact_radius[k_star] + res.contact_radius[k1])
-    out.append(
-        relative(
-            "fem",
-            "unloading stiffness dF/dδ at w = 50",
-            CASE + ", Y 210 MPa",
-            2 * E_STAR * a_mid,
-            "exact for elastic unloading: 2E*a (Johnson 1985 Eq. 3.22)",
-            stiffness,
-            0.03,
-            "N/m",
-        )
+    return relative(
+        "fem",
+        "unloading stiffness dF/dδ at w = 50",
+        CASE + ", Y 210 MPa",
+        2 * E_STAR * a_mid,
+        "exact for elastic unloading: 2E*a (Johnson 1985 Eq. 3.22)",
+        stiffness,
+        0.03,
+        "N/m",
     )
+
+
+def _unloading_pressures(res: fem.IndentationResult, path: np.ndarray, k_star: int) -> list[Check]:
+    """The FE's surface pressure (Pa) on unloading from step ``k_star`` at a/a* ≈ 0.75 and 0.5 against
+    Mesarovic & Johnson's Eq. 19 with the FE's own a* (m) and p* = F*/(πa*²) (Pa): the value on the axis, and the
+    RMS difference over r ≤ a* relative to p*."""
+    k1 = k_star + 1
     a_star, f_star = float(res.contact_radius[k_star]), float(res.force[k_star])
     p_star = f_star / (math.pi * a_star**2)
     r = np.asarray(res.surface_r)
     axis = int(np.argmin(r))
     after = np.arange(k1, path.size)
+    out = []
     for frac in (0.75, 0.5):
         k = int(after[np.argmin(np.abs(res.contact_radius[after] / a_star - frac))])
         a = float(res.contact_radius[k])
