@@ -15,7 +15,7 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.linalg import solve_banded
 
-__all__ = ["sphere_surface", "contact_radius", "pressure_from_reactions"]
+__all__ = ["sphere_surface", "contact_radius", "contact_radius_around", "pressure_from_reactions"]
 
 
 def sphere_surface(r: np.ndarray, overlap: float, radius: float) -> np.ndarray:
@@ -46,6 +46,40 @@ def contact_radius(surface_r: np.ndarray, active: np.ndarray, gap: np.ndarray) -
         return float(0.5 * (lo + hi))
     a = hi - g1 * (r[n_active + 1] - hi) / (g2 - g1)
     return float(np.clip(a, lo, hi))
+
+
+def contact_radius_around(distance: np.ndarray, active: np.ndarray, gap: np.ndarray, band: float) -> float:
+    r"""Contact radius (m) of a patch around the sphere's axis from nodes in any layout (the 3-D plate's surface
+    nodes at ``distance`` ρ from the axis, m; ``active`` in contact; ``gap`` m).
+
+    The edge asymptote of :func:`contact_radius`, on scattered nodes: outside a smooth contact edge the gap opens
+    like (ρ − a)^{3/2}, so g^{2/3} is fitted linear in ρ by least squares over the free nodes within ``band`` (m)
+    of the nearest free node and extrapolated to g = 0. The area of the nodes in contact would give a staircase
+    in δ, one step per ring of nodes (a quarter of a at four elements across the contact radius); the fit moves
+    with the edge between the rings. Where the free nodes do not open outward (a fit whose g^{2/3} falls with ρ),
+    the midpoint of the outermost node in contact and the nearest free node.
+
+    >>> rho = np.array([0.0, 1.0, 2.0, 3.0, 4.0])
+    >>> round(contact_radius_around(rho, rho < 1.5, np.maximum(rho - 1.8, 0.0) ** 1.5, band=2.0), 6)
+    1.8
+    """
+    if not active.any():
+        return 0.0
+    inside = float(distance[active].max())
+    free = ~active
+    if not free.any():
+        return inside
+    rho, g = distance[free], np.maximum(gap[free], 0.0) ** (2.0 / 3.0)
+    nearest = float(rho.min())
+    near = rho <= nearest + band
+    if np.count_nonzero(near) < 2:
+        near = rho <= np.partition(rho, 1)[1]
+    x, y = rho[near], g[near]
+    dx = x - x.mean()
+    slope = float(dx @ (y - y.mean())) / max(float(dx @ dx), 1e-300)
+    if slope <= 0.0:
+        return 0.5 * (inside + nearest)
+    return float(x.mean() - y.mean() / slope)
 
 
 def pressure_from_reactions(

@@ -24,6 +24,7 @@ from contact.materials import Material
 from fem.core.increments import WorkCounters
 from fem.core.material import check_small_strain, estimate_contact_radius, plate_model
 from fem.core.plasticity import J2Material, von_mises
+from fem.core.sphere import contact_radius_around
 from fem.solid.mesh import generate_block, scale_block
 from fem.solid.solver import SolidSolver
 from fem.solid.state import SolidState
@@ -40,8 +41,9 @@ class SolidIndentation:
     """The 3-D plate along a path (arrays: one entry per step).
 
     ``overlap`` δ, ``centre`` c, ``slide`` ξ (m); ``normal_force`` P and ``tangential_force`` Q (x) on the whole
-    plate (N); ``contact_radius`` √(A/π) and ``stick_radius`` √(A_stick/π) of the contact and stick areas (m;
-    areas summed over the surface vertices' hats, so the edge falls midway between a vertex in and one out);
+    plate (N); ``contact_radius`` (m: the edge found from the gaps of the free surface nodes beside it,
+    :meth:`SolidRecorder.contact_radius`) and ``stick_radius`` √(A_stick/π) of the stick area (m; summed over
+    the sticking surface vertices' hats, so its edge falls midway between a vertex in and one out);
     ``max_pressure`` (Pa); ``max_equivalent_plastic_strain``; ``newton_iterations``; ``surface_vertices`` (n, 3)
     reference coordinates of the surface vertices (m); ``pressure`` (steps, n) and ``shear`` (steps, n, 2) the
     contact tractions on the plate at those vertices (Pa, linear between them: the ball's force on each vertex's
@@ -219,7 +221,7 @@ class SolidRecorder:
         return {
             "P": 2.0 * float(normal[state.contact].sum()),
             "Q": 2.0 * float(shear[:, 0].sum()),
-            "a": math.sqrt(2.0 * float(d.surface_area[in_contact].sum()) / math.pi),
+            "a": self.contact_radius(state, in_contact),
             "c": math.sqrt(2.0 * float(d.surface_area[sticking].sum()) / math.pi),
             "pmax": float(np.max(pressure, initial=0.0)),
             "eps": float(np.max(state.alpha, initial=0.0)),
@@ -233,6 +235,19 @@ class SolidRecorder:
             # the node sticks: over a mid-edge node between a pressed vertex and a free one too
             "node_slip": np.where(((d.surface_hats.T @ pressure > 0.0) & ~node_sticks)[:, None], node_slip, 0.0),
         }
+
+    def contact_radius(self, state: SolidState, in_contact: np.ndarray) -> float:
+        """The contact radius (m) of ``state`` (``in_contact``: its surface vertices in contact): the edge found
+        from the gaps of the free surface nodes within one element of it (:func:`fem.core.sphere.contact_radius_around`;
+        the element's size from the area of the vertices in contact)."""
+        if not in_contact.any():
+            return 0.0
+        solver, d = self.solver, self.solver.disc
+        gap = solver.obstacle(state.overlap, state.centre) - state.u[solver.uz]
+        xy = d.surface_xy
+        distance = np.hypot(xy[:, 0] - state.centre, xy[:, 1])
+        element = math.sqrt(float(np.median(d.surface_area[in_contact])))
+        return contact_radius_around(distance, state.contact, gap, band=element)
 
     def add(self, state: SolidState) -> None:
         """Record a converged step."""
