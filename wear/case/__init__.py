@@ -1,5 +1,5 @@
-"""The case: every table and key defined once (:mod:`wear.case.tables`), the whole case (:mod:`wear.case.case`),
-each job's default case (:mod:`wear.case.jobs`) and case files (:mod:`wear.case.toml`).
+"""The case: every table and key defined once (gathered by :mod:`wear.case.tables`), the whole case
+(:mod:`wear.case.case`), each job's default case (:mod:`wear.case.jobs`) and case files (:mod:`wear.case.toml`).
 
 >>> from wear.case import Case, default_case, dump_case
 >>> Case().impact.speed                      # impactwear run's default (m/s)
@@ -14,23 +14,13 @@ ValueError: impact.angle=120 is out of range: impact angle from the plate normal
 
 from wear.case.case import Case
 from wear.case.check import check_job_case
+from wear.case.choices import COUPLINGS, FEM_MODELS
+from wear.case.impact_tables import BallSpec, ImpactSpec, PlateSpec
+from wear.case.job_tables import CalibrationSpec, ErosionSpec, RepeatSpec, WallSpec
 from wear.case.jobs import JOBS, Job, default_case
+from wear.case.model_tables import FemSpec, OutputSpec, WearSpec
 from wear.case.schema import Key, Table, key
-from wear.case.tables import (
-    COUPLINGS,
-    FEM_MODELS,
-    TABLES,
-    BallSpec,
-    CalibrationSpec,
-    ErosionSpec,
-    FemSpec,
-    ImpactSpec,
-    OutputSpec,
-    PlateSpec,
-    RepeatSpec,
-    WallSpec,
-    WearSpec,
-)
+from wear.case.tables import TABLES
 from wear.case.toml import (
     apply_override,
     dump_case,

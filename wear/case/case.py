@@ -1,4 +1,4 @@
-"""The whole case, :class:`Case`: one frozen table of :mod:`wear.case.tables` per TOML table, built over a base case
+"""The whole case, :class:`Case`: one frozen table (:mod:`wear.case.tables`) per TOML table, built over a base case
 from tables of values, checked key by key and against the Hertz contact time of its impact. SI units; angles in
 degrees from the plate normal.
 """
@@ -13,19 +13,10 @@ from typing import Any
 from contact import effective_modulus
 from contact.theory import hertz_impact, speed_components, sphere_mass
 from contact.timestep import check_time_step
-from wear.case.tables import (
-    TABLES,
-    BallSpec,
-    CalibrationSpec,
-    ErosionSpec,
-    FemSpec,
-    ImpactSpec,
-    OutputSpec,
-    PlateSpec,
-    RepeatSpec,
-    WallSpec,
-    WearSpec,
-)
+from wear.case.impact_tables import BallSpec, ImpactSpec, PlateSpec
+from wear.case.job_tables import CalibrationSpec, ErosionSpec, RepeatSpec, WallSpec
+from wear.case.model_tables import FemSpec, OutputSpec, WearSpec
+from wear.case.tables import TABLES
 
 __all__ = ["Case"]
 

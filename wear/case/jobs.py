@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from wear.case.case import Case
-from wear.case.tables import FEM_MODELS
+from wear.case.choices import FEM_MODELS
 
 __all__ = ["Job", "JOBS", "default_case"]
 

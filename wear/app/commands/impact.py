@@ -14,7 +14,7 @@ import math
 from contact import simulate_impact
 from wear.app.commands.common import add_case_options, case_from_args, case_json, print_default, print_json
 from wear.case import Case
-from wear.case.tables import NORMAL_MODELS, SCHEMES, TANGENTIAL_MODELS
+from wear.case.choices import NORMAL_MODELS, SCHEMES, TANGENTIAL_MODELS
 
 HELP = "simulate one oblique ball-on-plate impact (H-DD model) and print rebound, forces and timings"
 

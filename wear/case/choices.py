@@ -1,0 +1,20 @@
+"""The choices of the case's string keys that name a model: the impact–plate couplings (``fem.coupling``), the FE
+plate models (``fem.model``), the impact's normal and tangential force laws (``impact.normal_model``,
+``impact.tangential_model``) and its time integration schemes (``impact.scheme``).
+"""
+
+from __future__ import annotations
+
+from contact.impact import TANGENTIAL_MODELS as ENGINE_TANGENTIAL_MODELS
+
+__all__ = ["COUPLINGS", "FEM_MODELS", "NORMAL_MODELS", "TANGENTIAL_MODELS", "SCHEMES"]
+
+#: The impact–plate couplings: the impact on the FE plate's own force law, the FE plate along the closed-form
+#: impact, or no FE plate.
+COUPLINGS = ("two-way", "one-way", "none")
+#: The FE plate models: the axisymmetric (r, z) frictionless plate, or the 3-D half plate with Coulomb friction.
+FEM_MODELS = ("axisymmetric", "3d")
+NORMAL_MODELS = ("hertz", "thornton")
+#: The impact engine's tangential laws (:data:`contact.impact.TANGENTIAL_MODELS`).
+TANGENTIAL_MODELS = tuple(ENGINE_TANGENTIAL_MODELS)
+SCHEMES = ("verlet", "paper")
