@@ -24,7 +24,8 @@ from contact.materials import Material
 from wear import Case, WearLaw, integrate_wear, pressure_history, run, sliding_speed, surface_grid
 from wear.accumulate import accumulate_depth, powered_table
 from wear.app.outputs.run import write_run
-from wear.integrate import integrate_wear_numpy, wear_substeps
+from wear.integrate import integrate_wear_numpy
+from wear.substeps import wear_substeps
 
 TARGET_UPDATES_PER_S = 1e8
 

@@ -3,8 +3,8 @@
 Rooms, lowest first (a module may import from its own room and the rooms below it, never above): ``contact`` ←
 the FE core (``fem.core``: knows no plate) ← the plates (``fem.axisymmetric``, ``fem.solid``: neither imports the
 other) ← the plates' face and couplings (``fem``) ← the wear law (``wear.law``, ``wear.laws``, ``wear.pressure``,
-``wear.slip``, ``wear.pressure_profiles``, ``wear.integrate``, ``wear.accumulate``, ``wear.solid_wear``,
-``wear.triangle_finder``, ``wear.surface``) ← the case
+``wear.slip``, ``wear.pressure_profiles``, ``wear.integrate``, ``wear.substeps``, ``wear.accumulate``,
+``wear.solid_wear``, ``wear.triangle_finder``, ``wear.surface``) ← the case
 (``wear.case``) ← erosion (``wear.erosion``) ← a component's wall (``wear.wall``: impact records, the wall, per-face
 sums; never the chains nor the command line) ← the chains (``wear.chain``) ← the command line (``wear.app``).
 ``meshes`` is data: only its ``__main__`` (which regenerates the mesh) imports ``fem``. No import cycle between the
@@ -43,6 +43,7 @@ ROOMS = (
         "wear.slip",
         "wear.pressure_profiles",
         "wear.integrate",
+        "wear.substeps",
         "wear.accumulate",
         "wear.solid_wear",
         "wear.triangle_finder",
@@ -228,7 +229,7 @@ def test_the_jobs_commands_and_stages_are_listed_above_the_case():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
     assert (
         out.stdout.strip()
-        == "['accumulate', 'case', 'integrate', 'law', 'laws', 'pressure', 'pressure_profiles', 'slip']"
+        == "['accumulate', 'case', 'integrate', 'law', 'laws', 'pressure', 'pressure_profiles', 'slip', 'substeps']"
     )
     assert tuple(JOB_COMMANDS) == tuple(JOBS)
     for name, command in JOB_COMMANDS.items():

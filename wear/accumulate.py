@@ -1,4 +1,4 @@
-"""The kernels that add one impact's wear onto the depth grid: the sub-steps of :class:`wear.integrate.SubSteps`
+"""The kernels that add one impact's wear onto the depth grid: the sub-steps of :class:`wear.substeps.SubSteps`
 summed at every node the moving contact patch covers, in numba (parallel over grid rows) or in plain numpy (the
 reference, one sub-step at a time).
 

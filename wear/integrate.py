@@ -4,7 +4,7 @@ r"""Integration of the wear law (errata equation 15) over one impact on a 2-D gr
 
 x runs along the impact direction on the plate, y across it; x_c(t) is the contact centre
 (``PressureHistory.contact_x``). The time axis is the union of the pressure and speed samples, each
-interval cut into sub-steps so that the patch moves less than a quarter cell per sub-step; the
+interval cut into sub-steps (:mod:`wear.substeps`) so that the patch moves less than a quarter cell per sub-step; the
 integral is the trapezoidal rule over those sub-steps, with p interpolated linearly in time at fixed
 (x, y) and v linearly in time. The grid spacing is 2 a_max / ``points_across`` (a_max the largest
 loaded radius), ≥ 40 points across the largest contact diameter; the grid covers the whole scar.
@@ -35,13 +35,12 @@ from wear.accumulate import (
 from wear.law import WearLaw
 from wear.pressure import PressureHistory, pressure_history
 from wear.slip import SlidingSpeed, sliding_speed
+from wear.substeps import wear_substeps
 
 __all__ = [
     "wear_map",
     "WearMap",
-    "SubSteps",
     "surface_grid",
-    "wear_substeps",
     "integrate_wear",
     "integrate_wear_numpy",
     "wear_from_impact",
@@ -55,8 +54,6 @@ __all__ = [
 #: Smallest accepted number of grid points across the largest contact diameter.
 MIN_POINTS_ACROSS = 40
 DEFAULT_POINTS_ACROSS = 64
-#: Largest patch motion per sub-step, in grid cells.
-MAX_CELL_FRACTION = 0.25
 
 
 @dataclass(frozen=True, eq=False)
@@ -129,23 +126,6 @@ def implausible_wear(wm: WearMap, contact_radius: float, ball_mass: float) -> li
     return lines
 
 
-@dataclass(frozen=True, eq=False)
-class SubSteps:
-    """The time quadrature of one impact: per sub-step the contact centre ``contact_x`` (m), the pressure
-    sample ``step`` and time weight ``fraction`` (p = (1−f)·p[step] + f·p[step+1]), and ``weight`` = trapezoid
-    Δt × K v^β (units of K × s × (m/s)^β, so that weight × p^α is a depth in m). With the local slip
-    (:attr:`wear.slip.SlidingSpeed.is_local`) the sub-steps are the midpoints of the intervals, ``weight`` = Δt × K,
-    ``slip`` the contact-point slip velocity (m/s) and ``row`` the interval of the surface's radial motion
-    (:meth:`wear.slip.RadialSlip.rates`) at each; each node's own speed is then taken in the kernel."""
-
-    contact_x: np.ndarray
-    step: np.ndarray
-    fraction: np.ndarray
-    weight: np.ndarray
-    slip: np.ndarray | None = None
-    row: np.ndarray | None = None
-
-
 def surface_grid(
     pressure: PressureHistory, points_across: int = DEFAULT_POINTS_ACROSS
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -168,61 +148,6 @@ def surface_grid(
     half = math.ceil(a_max / dx) + 2
     y = dx * np.arange(-half, half + 1)
     return x, y
-
-
-def wear_substeps(
-    pressure: PressureHistory,
-    speed: SlidingSpeed,
-    law: WearLaw,
-    spacing: float,
-    cell_fraction: float = MAX_CELL_FRACTION,
-) -> SubSteps:
-    """Sub-steps of the time integral for a grid of ``spacing`` (m); drops sub-steps that cannot wear."""
-    spacing = check_number("spacing", spacing, low=0.0, low_open=True, units="m")
-    tp = pressure.time
-    nodes = np.union1d(tp, speed.time[(speed.time > tp[0]) & (speed.time < tp[-1])])
-    if speed.is_local:
-        tr = speed.radial.time
-        nodes = np.union1d(nodes, tr[(tr > tp[0]) & (tr < tp[-1])])
-    xc = np.interp(nodes, tp, pressure.contact_x)
-    pieces = np.maximum(np.ceil(np.abs(np.diff(xc)) / (cell_fraction * spacing)), 1).astype(np.int64)
-    # sub-step times: each interval [t_k, t_k+1] cut into pieces[k] equal parts
-    starts = np.repeat(nodes[:-1], pieces)
-    widths = np.repeat(np.diff(nodes) / pieces, pieces)
-    offsets = np.arange(starts.size) - np.repeat(np.cumsum(pieces) - pieces, pieces)
-    tau = np.append(starts + offsets * widths, nodes[-1])
-    dt = np.diff(tau)
-    slip = row = None
-    if speed.is_local:
-        # the surface's radial rate is constant between its times: the midpoint rule on each sub-interval (one of
-        # them, not the two a trapezoid node between them would straddle)
-        tau = tau[:-1] + 0.5 * dt
-        weight = dt * law.K
-        slip = np.interp(tau, speed.time, speed.slip_velocity, left=0.0, right=0.0)
-        times = speed.radial.time
-        row = np.clip(np.searchsorted(times, tau, side="right") - 1, 0, times.size - 2)
-    else:
-        trap = np.zeros_like(tau)
-        trap[:-1] += 0.5 * dt
-        trap[1:] += 0.5 * dt
-        v = np.interp(tau, speed.time, speed.speed, left=0.0, right=0.0)
-        weight = trap * law.K * v**law.beta
-    step = np.clip(np.searchsorted(tp, tau, side="right") - 1, 0, tp.size - 2)
-    fraction = np.clip((tau - tp[step]) / (tp[step + 1] - tp[step]), 0.0, 1.0)
-    loaded = (pressure.extent[step] > 0.0) | (pressure.extent[step + 1] > 0.0)
-    keep = (weight > 0.0) & loaded
-
-    def kept(values: np.ndarray | None) -> np.ndarray | None:
-        return None if values is None else np.ascontiguousarray(values[keep])
-
-    return SubSteps(
-        contact_x=kept(np.interp(tau, tp, pressure.contact_x)),
-        step=kept(step),
-        fraction=kept(fraction),
-        weight=kept(weight),
-        slip=kept(slip),
-        row=kept(row),
-    )
 
 
 def integrate_volume(x, y, depth) -> float:
