@@ -39,7 +39,7 @@ __all__ = [
 BOUNDARY_NAMES = ("axis", "surface", "bottom", "side")
 
 #: The default mesh shipped as data of the ``meshes`` package (dimensionless: unit length = a_max); ``python -m
-#: meshes`` regenerates it from :data:`DEFAULT_PARAMETERS`.
+#: fem.axisymmetric.regenerate_mesh`` regenerates it from :data:`DEFAULT_PARAMETERS`.
 DEFAULT_MESH_FILE = Path(str(resources.files("meshes").joinpath("indent_default.msh")))
 
 #: Parameters of the default mesh (see :func:`generate_mesh`).
