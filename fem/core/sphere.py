@@ -73,7 +73,7 @@ def contact_radius_around(distance: np.ndarray, active: np.ndarray, gap: np.ndar
     nearest = float(rho.min())
     near = rho <= nearest + band
     if np.count_nonzero(near) < 2:
-        near = rho <= np.partition(rho, 1)[1]
+        near = np.argsort(rho)[:2]  # a single free node gives no slope: the midpoint below
     x, y = rho[near], g[near]
     dx = x - x.mean()
     slope = float(dx @ (y - y.mean())) / max(float(dx @ dx), 1e-300)
