@@ -69,12 +69,12 @@ def contact_radius_around(distance: np.ndarray, active: np.ndarray, gap: np.ndar
     free = ~active
     if not free.any():
         return inside
-    rho, g = distance[free], np.maximum(gap[free], 0.0) ** (2.0 / 3.0)
+    rho, free_gap = distance[free], gap[free]
     nearest = float(rho.min())
     near = rho <= nearest + band
     if np.count_nonzero(near) < 2:
         near = np.argsort(rho)[:2]  # a single free node gives no slope: the midpoint below
-    x, y = rho[near], g[near]
+    x, y = rho[near], np.maximum(free_gap[near], 0.0) ** (2.0 / 3.0)
     dx = x - x.mean()
     slope = float(dx @ (y - y.mean())) / max(float(dx @ dx), 1e-300)
     if slope <= 0.0:
