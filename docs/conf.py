@@ -167,8 +167,65 @@ def _keys_markdown() -> str:
     return key_reference().rstrip() + "\n"
 
 
+def _bibtex_names(authors: list[dict]) -> str:
+    names = []
+    for a in authors:
+        if "family-names" in a:
+            names.append(f"{a['family-names']}, {a.get('given-names', '')}".rstrip(", "))
+        else:
+            names.append("{" + a["name"] + "}")  # an entity: braces keep BibTeX from splitting it into names
+    return " and ".join(names)
+
+
+def _bibtex(kind: str, key: str, work: dict) -> str:
+    fields = {"title": "{" + work["title"] + "}", "author": _bibtex_names(work["authors"])}
+    for cff_key, bib_key in (("journal", "journal"), ("volume", "volume"), ("issue", "number"), ("year", "year")):
+        if cff_key in work:
+            fields[bib_key] = str(work[cff_key])
+    if "start" in work:
+        fields["pages"] = f"{work['start']}--{work['end']}" if "end" in work else str(work["start"])
+    if "doi" in work:
+        fields["doi"] = work["doi"]
+    if "license" in work:
+        fields["note"] = f"License {work['license']}"
+    # lines of at most 88 characters, as every code block of the site: authors broken between names, the rest
+    # between words
+    entries = []
+    for k, v in fields.items():
+        lines = []
+        sep = " and " if k == "author" else " "
+        line = f"  {k} = {{"
+        for j, part in enumerate(v.split(sep)):
+            piece = (sep if j else "") + part
+            if j and len(line) + len(piece) > 86:
+                lines.append(line + sep.rstrip())
+                line, piece = "    ", part
+            line += piece
+        entries.append("\n".join([*lines, line + "}"]))
+    body = ",\n".join(entries)
+    return f"@{kind}{{{key},\n{body}\n}}"
+
+
+def _citation_markdown() -> str:
+    """The message of ``CITATION.cff`` and BibTeX entries of the software and of its references, written from it."""
+    import yaml  # a dependency of myst-parser
+
+    cff = yaml.safe_load((ROOT / "CITATION.cff").read_text(encoding="utf-8"))
+    parts = [" ".join(cff["message"].split()), "", "The software:", "", "```bibtex"]
+    parts += [_bibtex("software", "impactwear", cff), "```", ""]
+    if cff.get("references"):
+        parts += ["The paper whose model it implements (the file's references):", ""]
+    for ref in cff.get("references", []):
+        kind = {"article": "article", "book": "book"}.get(ref.get("type"), "misc")
+        first = ref["authors"][0]
+        key = (first.get("family-names") or first.get("name", "ref")).split()[0].lower() + str(ref.get("year", ""))
+        parts += ["```bibtex", _bibtex(kind, key, ref), "```", ""]
+    return "\n".join(parts)
+
+
 _write_if_changed(GENERATED / "commands.md", _commands_markdown())
 _write_if_changed(GENERATED / "keys.md", _keys_markdown())
+_write_if_changed(GENERATED / "citation.md", _citation_markdown())
 
 # ---------------------------------------------------------------------------------------------------------------
 # Gallery: the examples, executed in quick mode. sphinx-gallery needs a header file in the examples folder; the
