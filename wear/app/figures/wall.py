@@ -101,8 +101,10 @@ def _equal_axes(ax, points: np.ndarray) -> None:
     for axis, c, half in zip("xyz", centre, 0.5 * span, strict=True):
         getattr(ax, f"set_{axis}lim")(c - half, c + half)
         getattr(ax, f"set_{axis}label")(f"{axis} (m)")
-        # ticks in proportion to the axis' length: a short axis of many ticks writes them over each other
-        getattr(ax, f"{axis}axis").set_major_locator(MaxNLocator(max(1, round(5 * half * 2 / span.max()))))
+        # ticks in proportion to the axis' length (a pipe's diameter may get one): a short axis of many ticks
+        # writes them over each other
+        bins = max(1, round(5 * half * 2 / span.max()))
+        getattr(ax, f"{axis}axis").set_major_locator(MaxNLocator(bins, min_n_ticks=1 if bins == 1 else 2))
     ax.set_box_aspect(tuple(span), zoom=1.0)
     ax.tick_params(labelsize=8)
 
