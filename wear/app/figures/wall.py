@@ -174,16 +174,15 @@ def _display(ax, points: np.ndarray) -> np.ndarray:
 def _fill_axes(ax) -> None:
     """Zoom ``ax`` so that its box (the wall's extents) fills :data:`FILL` of the axes: matplotlib leaves room for
     any view, a sixth of the frame for a pipe."""
-    ax.figure.canvas.draw()  # the axes' transforms as they will be drawn
+    ax.apply_aspect()  # the axes' place as it will be drawn (a 3-D axes narrows itself to its box)
     corners = np.array(np.meshgrid(ax.get_xlim(), ax.get_ylim(), ax.get_zlim())).reshape(3, -1).T
     centre = _display(ax, corners.mean(axis=0, keepdims=True))[0]
     offset = _display(ax, corners) - centre
     frame = ax.bbox
     room = [frame.x1 - centre[0], centre[0] - frame.x0, frame.y1 - centre[1], centre[1] - frame.y0]
     need = [offset[:, 0].max(), -offset[:, 0].min(), offset[:, 1].max(), -offset[:, 1].min()]
-    zoom = FILL * min(r / n for r, n in zip(room, need, strict=True) if n > 0)
+    zoom = FILL * min((r / n for r, n in zip(room, need, strict=True) if n > 0), default=1.0 / FILL)
     ax.set_box_aspect(ax.get_box_aspect(), zoom=zoom)
-    ax.figure.canvas.draw()
 
 
 def _drawn_outline(ax, points: np.ndarray) -> Polygon2D:
