@@ -79,10 +79,11 @@ def plot_wall_rate(
     _equal_axes(ax, wall.points)
     ax.view_init(*_view_of(wall, hot_face))
     for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
-        axis.set_pane_color((1.0, 1.0, 1.0, 0.0))  # white behind the wall: a grey pane would hide the unworn faces
+        axis.set_pane_color((1.0, 1.0, 1.0, 0.0))  # the page's white behind the wall: a grey pane hides unworn faces
     bar = fig.colorbar(ScalarMappable(norm=norm, cmap=cmap), cax=fig.add_axes((0.86, 0.3, 0.025, 0.55)))
     bar.set_label("thickness-loss rate (mm/year, log scale)")
-    unworn = Patch(facecolor=UNWORN, edgecolor="0.4", label="no particle hit:\nno wear")
+    # "no wear", not "no hit": a face hit only where the law gives nothing (a grazing hit, a slow one) is unworn too
+    unworn = Patch(facecolor=UNWORN, edgecolor="0.4", label="no wear\n(rate 0)")
     fig.legend(handles=[unworn], loc="lower right", bbox_to_anchor=(0.995, 0.1), fontsize=9, frameon=False)
     if title:
         fig.suptitle(title)
