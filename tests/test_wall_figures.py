@@ -1,7 +1,8 @@
 """The wall's figures show what they say: each face coloured by its own rate on a log scale of three decades below
-the largest, the faces without wear in grey, equal axes the wall fills, the hot spot marked at its face's centre
-with its rate labelled off the wall, the units on the colour bar and the axes; the histograms hold every particle
-in the bins given and say they count particles."""
+the largest, the faces without wear in a light grey a legend names "no wear", equal axes the wall fills, seen from
+a side that shows the hot spot, marked at its face's centre with its rate labelled off the drawn wall (black on
+white) and an arrow to it, the units on the colour bar and the axes; the histograms hold every particle in the bins
+given and say they count particles, per bin of which width."""
 
 from __future__ import annotations
 
@@ -9,11 +10,13 @@ import meshio
 import numpy as np
 import pytest
 from figure_capture import capture_figures
+from matplotlib.text import Text
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 from wall_cases import flat_mesh
 
 import wear.app.figures.wall as wall_figures
-from wear.wall import read_surface
+from wear.app.data import OPENFOAM_BEND
+from wear.wall import read_surface, read_wall
 
 
 @pytest.fixture
@@ -42,8 +45,10 @@ def test_the_wall_is_coloured_face_by_face_with_the_hot_spot_marked(captured, tm
     worn = {tuple(np.round(c, 6)) for c in colours[~grey]}
     assert worn == {tuple(np.round(cmap(np.log10(r / 0.08) / 3.0), 6)) for r in (40.0, 10.0, 80.0)}
     label = next(t for t in ax.texts if "hot spot" in t.get_text())
-    assert "80 mm/year" in label.get_text()
-    assert label.get_position() == (0.02, 0.98) and label.anncoords == "axes fraction"  # in the corner, off the wall
+    assert "80 mm/year" in label.get_text() and label.anncoords == "axes fraction"
+    _assert_label_off_the_wall(fig, ax, label, wall, 11)
+    (unworn,) = [h for legend in fig.legends for h in legend.legend_handles]
+    assert "no wear" in unworn.get_label() and np.allclose(unworn.get_facecolor(), wall_figures.UNWORN)
     marker = ax.collections[-1]._offsets3d
     assert np.allclose([m[0] for m in marker], wall.centre[11])
     # equal axes: each axis' box length in proportion to its range (the 4 cm x 3 cm plate, flat: 5% of 4 cm)
@@ -68,4 +73,49 @@ def test_the_histograms_hold_every_particle(captured, tmp_path):
     assert heights.max() == 10.0
     assert "deg" in ax2.get_xlabel() and ax2.get_xlim() == (0.0, 90.0)
     assert ax2.patches[0].get_path().vertices[:, 1].max() == 5.0
-    assert ax1.get_ylabel() == ax2.get_ylabel() == "particles per bin"
+    assert ax1.get_ylabel() == "particles per speed bin (10 per decade)"  # 50 bins over 5 decades
+    assert ax2.get_ylabel() == "particles per angle bin (10 deg)"
+    uneven = np.array([0.0, 30.0, 60.0, 75.0, 90.0])
+    wall_figures.plot_impact_histograms(speed_edges, speed, uneven, angle[:4], tmp_path / "uneven.png", "t")
+    assert captured["uneven.png"].axes[1].get_ylabel() == "particles per angle bin"  # no single width to name
+
+
+def _assert_label_off_the_wall(fig, ax, label, wall, face) -> None:
+    """The hot-spot label's text box, as drawn, lies outside the convex hull of the drawn wall, in black on white,
+    and its arrow ends on the face's centre as drawn."""
+    fig.canvas.draw()
+    outline = wall_figures._drawn_outline(ax, wall.points)
+    box = Text.get_window_extent(label, fig.canvas.get_renderer())
+    assert not outline.intersects_bbox(box), (box, outline.get_extents())
+    assert label.get_color() == "black" and label.get_bbox_patch().get_facecolor()[:3] == (1.0, 1.0, 1.0)
+    end = ax.transData.transform(label.xy)
+    assert end == pytest.approx(wall_figures._display(ax, wall.centre[face : face + 1])[0], abs=0.5)
+
+
+def test_the_bend_fills_its_equal_axes_and_shows_its_hot_spot(captured, tmp_path):
+    """The shipped pipe bend (its hot spot on the outer wall at the bend's top): the axes' box has the wall's
+    extents (equal axes, within 1%), the drawn wall spans most of the axes (it spanned about a sixth of the box
+    when matplotlib's margins were kept), the view sees the hot face from its outer side unhidden, and the label
+    lies off the drawn wall."""
+    wall = read_wall(OPENFOAM_BEND)
+    rate = np.zeros(len(wall))
+    hot = int(np.argmax(wall.centre[:, 2] - np.abs(wall.centre[:, 1])))  # a face on the bend's top
+    rate[::7] = 3.0
+    rate[hot] = 200.0
+    wall_figures.plot_wall_rate(wall, rate, hot, tmp_path / "wall.png", "bend")
+    fig = captured["wall.png"]
+    ax = fig.axes[0]
+    extents = np.ptp(wall.points, axis=0)
+    box = np.array(ax.get_box_aspect())
+    assert box / box.max() == pytest.approx(extents / extents.max(), rel=0.01)
+    fig.canvas.draw()
+    drawn = wall_figures._drawn_outline(ax, wall.points).get_extents()
+    assert max(drawn.width / ax.bbox.width, drawn.height / ax.bbox.height) > 0.7
+    assert ax.bbox.x0 >= 0 and ax.bbox.y0 >= 0  # the zoomed box stays in the figure
+    eye = wall_figures._eye(ax.elev, ax.azim)
+    assert wall.normal[hot] @ eye > 0.5  # the outer side, within 60° of face-on
+    tri, owner = wall.triangles
+    assert not wall_figures._hidden(wall.centre[hot], eye, wall.points[tri[owner != hot]])
+    assert wall_figures._hidden(wall.centre[hot], -eye, wall.points[tri[owner != hot]])  # seen from behind: hidden
+    label = next(t for t in ax.texts if "hot spot" in t.get_text())
+    _assert_label_off_the_wall(fig, ax, label, wall, hot)
