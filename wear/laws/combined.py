@@ -1,0 +1,39 @@
+"""The combined law: a cutting law (:data:`CUTTING_LAWS`, the case key ``wear.cutting``) plus Bitter's deformation
+wear (:mod:`wear.laws.deformation`), each share reported. SI units.
+"""
+
+from __future__ import annotations
+
+from contact import ImpactResult
+from wear.laws import deformation, finnie, local
+from wear.laws.declaration import Constants, Law
+
+__all__ = ["CUTTING_LAWS", "LAW"]
+
+#: The cutting laws the combined law may add to deformation, by name.
+CUTTING_LAWS = {law.name: law for law in (local.LAW, finnie.LAW)}
+
+
+def _parts(constants: Constants) -> tuple[Law, ...]:
+    """The laws it adds: its cutting law (``constants["cutting"]``) and deformation."""
+    return CUTTING_LAWS[str(constants.get("cutting"))], deformation.LAW
+
+
+def _volumes(
+    constants: Constants, impact: ImpactResult, *, local: float | None, plate_work: float | None
+) -> dict[str, float]:
+    """The cutting and the deformation wear of one impact."""
+    cutting = CUTTING_LAWS[str(constants.get("cutting"))].volumes(constants, impact, local=local, plate_work=plate_work)
+    return {
+        "cutting": cutting["cutting"],
+        "deformation": deformation.deformation_of(constants, impact, plate_work, "combined"),
+    }
+
+
+LAW = Law(
+    name="combined",
+    description="a cutting law (local or finnie) + deformation",
+    volumes=_volumes,
+    inputs=("cutting",),
+    parts=_parts,
+)
