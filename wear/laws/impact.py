@@ -12,8 +12,8 @@ import numpy as np
 from contact import ImpactResult, Material
 from wear.integrate import WearMap, integrate_wear, surface_grid, wear_map
 from wear.law import WearLaw
-from wear.laws import local
 from wear.laws.declaration import Constants
+from wear.laws.local import LAW as LOCAL_LAW
 from wear.laws.registry import closed_form_laws, law_named, parts_of
 from wear.pressure import PressureHistory
 from wear.slip import SlidingSpeed
@@ -102,7 +102,7 @@ def wear_of_impact(
     wear = impact_wear(
         law, constants, impact, local=None if local_map is None else local_map.volume_m3, plate_work=plate_work
     )
-    if parts == (local.LAW,):
+    if parts == (LOCAL_LAW,):
         return local_map, wear
     if local_map is not None:
         grid = local_map
