@@ -1,6 +1,7 @@
 """A wear law is one module and one registry entry: a toy law declared below the way each law of ``wear/laws/``
 declares itself, added to :data:`wear.laws.registry.LAWS` for one test, is run, calibrated, eroded with and put on a
-wall by the commands, end to end, on the fast inputs of the output-folder tests."""
+wall by the commands, end to end, on the fast inputs of the output-folder tests. Its one constant is a key the
+case schema has (``wear.cutting_fraction``, its c): a constant of its own would be a field of ``[wear]`` too."""
 
 from __future__ import annotations
 
@@ -101,9 +102,18 @@ def test_run_wears_by_the_toy_law(toy, tmp_path):
 
 
 def test_erode_erodes_by_the_toy_law(toy, tmp_path):
+    """The stream's response table holds the toy law's volume of each normal speed, c ½ m V_n² / p at every angle."""
     assert main(_toy_args("erode", tmp_path)) == 0
-    summary = _summary(tmp_path / "out")
-    assert summary["case"]["wear"]["law"] == "toy" and summary["results"]["mass_loss_kg"] > 0.0
+    out = tmp_path / "out"
+    assert _summary(out)["results"]["mass_loss_kg"] > 0.0
+    case = default_case("erode")
+    mass = sphere_mass(case.ball.radius, case.ball.density)
+    with (out / "response_table.csv").open() as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) > 1
+    for row in rows:
+        expected = toy_volume(mass, float(row["normal_speed_m_s"]), 0.0, HARDNESS, case.wear.cutting_fraction)
+        assert float(row["volume_m3"]) == pytest.approx(float(expected), rel=1e-9)
 
 
 def test_calibrate_fits_the_toy_laws_scale(toy, tmp_path):
