@@ -19,7 +19,7 @@ import numpy as np
 from wear.app.validation.laws import CASE
 from wear.chain.calibrate import calibrate
 from wear.chain.calibration_data import CalibrationData
-from wear.laws import oka_erosion_ratio
+from wear.laws.oka import oka_erosion_ratio
 
 TARGET_S = 120.0
 

@@ -3,7 +3,7 @@
 Side by side in one run, on a synthetic pipe wall of ``--faces`` triangles (10⁵; normals out of the fluid):
 
 1. impacts per second per core of the per-impact work on records in memory, faces given: a closed-form law
-   (Finnie, :func:`wear.laws.finnie_volume`) and a response-table lookup (the numba
+   (Finnie, :func:`wear.laws.finnie.finnie_volume`) and a response-table lookup (the numba
    :func:`wear.erosion.table.table_entries` of the erosion response table, on a synthetic 9 × 17 table: the
    lookup an FE-informed law does per impact), each with the per-face sums (volume, mass, count, speed, angle
    histogram); and the whole chunk path of :func:`wear.wall.engine.chunk_sums` (impact table checks, the angle
@@ -37,7 +37,7 @@ import numpy as np
 
 from wear.case.workers import worker_pool
 from wear.erosion.table import table_entries
-from wear.laws import finnie_volume
+from wear.laws.finnie import finnie_volume
 from wear.wall.engine import DEFAULT_ANGLE_EDGES_DEG, chunk_sums, erode_wall
 from wear.wall.grid import face_grid
 from wear.wall.locate import nearest_faces

@@ -14,7 +14,7 @@ from wear.case import default_case, load_case
 from wear.chain.calibrate import calibrate
 from wear.chain.calibration_data import CalibrationData, read_data
 from wear.chain.forward_model import ForwardModel
-from wear.laws import oka_erosion_ratio
+from wear.laws.oka import oka_erosion_ratio
 
 ANGLES = (0.0, 15.0, 30.0, 45.0, 60.0, 70.0, 80.0)
 

@@ -13,7 +13,7 @@ from wear.app.cli import main
 from wear.case import default_case
 from wear.chain.calibrate import calibrate
 from wear.chain.calibration_data import read_data
-from wear.laws import oka_erosion_ratio
+from wear.laws.oka import oka_erosion_ratio
 
 ANGLES = (10.0, 20.0, 30.0, 45.0, 60.0, 75.0)
 

@@ -10,7 +10,7 @@ from contact import Material, yield_velocity
 from contact.theory import sphere_mass, thornton_restitution
 from wear import WearLaw
 from wear.erosion import Footprint, ImpactResponse, Stream, build_response_table, erode, table_axes
-from wear.laws import bitter_threshold_velocity
+from wear.laws.deformation import bitter_threshold_velocity
 
 SAND = Material(E=94e9, nu=0.17, density=2650.0, name="silica")
 STEEL = Material(E=200e9, nu=0.3, density=7850.0, yield_strength=350e6, name="steel")

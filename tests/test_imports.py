@@ -15,6 +15,7 @@ imports of them, each with a comment saying why.
 from __future__ import annotations
 
 import ast
+import importlib
 import re
 import subprocess
 import sys
@@ -28,6 +29,7 @@ from wear.app.sweep.stages import STAGES
 from wear.app.validation.checks import AREAS
 from wear.app.validation.groups import BY_AREA, GROUPS
 from wear.case import JOBS
+from wear.laws.registry import LAWS
 
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGES = ("contact", "fem", "wear", "meshes")
@@ -192,7 +194,9 @@ def test_function_level_imports_are_few_and_say_why():
     assert len(inner) <= 10, inner
 
 
-@pytest.mark.parametrize("module", ["contact", "wear.law", "wear.laws", "wear.solid_wear", "wear.case"])
+@pytest.mark.parametrize(
+    "module", ["contact", "wear.law", "wear.laws", "wear.laws.registry", "wear.solid_wear", "wear.case"]
+)
 def test_light_modules_do_not_load_the_fe_plate(module):
     """The impact engine and the wear law work without the FE plate: importing them (in a fresh interpreter)
     loads neither ``fem`` nor scikit-fem, so that ``wear/__init__.py`` re-exporting the chains costs nothing."""
@@ -208,6 +212,15 @@ def test_the_chains_load_no_matplotlib():
     code = "import sys, wear.chain; print(sorted(m for m in sys.modules if m.startswith('matplotlib')))"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
     assert out.stdout.strip() == "[]", f"import wear.chain loads {out.stdout.strip()}"
+
+
+def test_each_wear_law_is_one_module_of_the_registry():
+    """The registry (:data:`wear.laws.registry.LAWS`) lists the law modules' declarations by plain imports: each law
+    is ``wear.laws.<name>.LAW``, and no ``"module:attribute"`` string names one."""
+    for name, law in LAWS.items():
+        assert importlib.import_module(f"wear.laws.{name}").LAW is law
+    text = (ROOT / "wear" / "laws" / "registry.py").read_text(encoding="utf-8")
+    assert not re.search(r"[\"']wear\.[\w.]+:\w+", text)
 
 
 WEAR_LAW_ROOM = next(room for room in ROOMS if "wear.law" in room)
@@ -228,10 +241,8 @@ def test_the_jobs_commands_and_stages_are_listed_above_the_case():
     command, in the jobs' order, and every stage belongs to a job and runs a function."""
     code = "import sys, wear.case; print(sorted({m.split('.')[1] for m in sys.modules if m.startswith('wear.')}))"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
-    assert (
-        out.stdout.strip()
-        == "['accumulate', 'case', 'integrate', 'law', 'laws', 'pressure', 'pressure_profiles', 'slip', 'substeps']"
-    )
+    # the case reads the wear laws' registry (their names and keys), not their per-impact wear (wear.laws.impact)
+    assert out.stdout.strip() == "['case', 'law', 'laws', 'pressure', 'pressure_profiles', 'slip']"
     assert tuple(JOB_COMMANDS) == tuple(JOBS)
     for name, command in JOB_COMMANDS.items():
         assert callable(command.configure) and callable(command.main) and command.HELP, name

@@ -12,7 +12,7 @@ from wear.app.cli import main
 from wear.case import default_case, dump_case, load_case
 from wear.chain.calibrate import calibrate
 from wear.chain.calibration_data import read_data
-from wear.laws import dnv_erosion_ratio
+from wear.laws.dnv import dnv_erosion_ratio
 
 ANGLES = (15.0, 30.0, 45.0, 60.0, 75.0)
 SPEEDS = (20.0, 40.0, 80.0)

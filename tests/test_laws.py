@@ -1,4 +1,4 @@
-"""The wear laws side by side (wear/laws.py) against their closed forms, and where they meet the FE plate."""
+"""The wear laws side by side (wear/laws/) against their closed forms, and where they meet the FE plate."""
 
 import math
 
@@ -11,15 +11,12 @@ from wear import Case, WearLaw, integrate_wear, pressure_history, repeat, run, s
 from wear.case import default_case
 from wear.chain.axisymmetric_repeat import impact_on_plate
 from wear.chain.trends import law_trends
-from wear.laws import (
-    deformation_volume,
-    dnv_angle_function,
-    finnie_peak_angle,
-    finnie_volume,
-    impact_wear,
-    local_volume,
-    oka_erosion_ratio,
-)
+from wear.laws.deformation import deformation_volume
+from wear.laws.dnv import dnv_angle_function
+from wear.laws.finnie import finnie_peak_angle, finnie_volume
+from wear.laws.impact import impact_wear
+from wear.laws.local import local_volume
+from wear.laws.oka import oka_erosion_ratio
 
 SAND = Material(E=94e9, nu=0.17, density=2650.0)
 STEEL = Material(E=200e9, nu=0.3, density=7850.0, yield_strength=350e6)

@@ -48,7 +48,7 @@ import numpy as np
 import pytest
 from wall_cases import BEND, OUTPUTS, RECORDS
 
-from wear.laws import dnv_erosion_ratio
+from wear.laws.dnv import dnv_erosion_ratio
 from wear.wall import face_sum, hits_on_wall, read_patch_post_processing, read_polymesh, wall_wear
 
 SECONDS_PER_YEAR = 365.25 * 86400.0

@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 from wall_cases import flat_mesh
 
-from wear.laws import finnie_volume
+from wear.laws.finnie import finnie_volume
 from wear.wall import face_sum, hits_on_wall, read_surface
 from wear.wall.fluent import count_fluent_rows, read_fluent_dpm
 

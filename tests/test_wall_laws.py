@@ -1,4 +1,4 @@
-"""Every registered wear law per impact record of a wall (wear.wall.laws.wall_law).
+"""Every registered wear law per impact record of a wall (wear.wall.per_record.wall_law).
 
 References, coded here from the sources (not taken from impactwear):
 - Finnie (1960), "Erosion of surfaces by solid particles", Wear 3: 87–103: the volume cut by a particle of mass m at
@@ -31,9 +31,12 @@ from contact import yield_velocity
 from contact.theory import thornton_restitution
 from wear.case import Case, default_case, dump_case, key_reference, load_case
 from wear.erosion.run import impact_response
+from wear.laws.dnv import DnvLaw
+from wear.laws.finnie import FinnieLaw
+from wear.laws.oka import OkaLaw
 from wear.wall import ImpactRecords, face_sum, hits_on_wall, read_surface, record_volumes, wall_law
-from wear.wall.law_keys import check_law_keys, keys_read
-from wear.wall.laws import DnvLaw, FinnieLaw, OkaLaw, TableLaw
+from wear.wall.case_keys import check_law_keys, keys_read
+from wear.wall.per_record import TableLaw
 
 #: Silica sand on a carbon steel, Thornton's normal law and pressure, no FE plate (impactwear calibrate's default).
 SAND_ON_STEEL = default_case("calibrate")

@@ -19,8 +19,8 @@ from wear.app.cli import main
 from wear.app.outputs.folder import MANIFEST
 from wear.case import default_case
 from wear.wall import hits_on_wall, read_table
-from wear.wall.laws import wall_law
 from wear.wall.mesh import read_surface
+from wear.wall.per_record import wall_law
 
 HEADER = ["x_m", "y_m", "z_m", "u_m_s", "v_m_s", "w_m_s", "diameter_m", "density_kg_m3", "time_s"]
 QUIET = ["--no-figures", "--quiet"]

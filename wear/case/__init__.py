@@ -32,13 +32,11 @@ from wear.case.toml import (
     read_toml_text,
     toml_value,
 )
-from wear.laws import LAWS
 
 __all__ = [
     "COUPLINGS",
     "FEM_MODELS",
     "JOBS",
-    "LAWS",
     "TABLES",
     "BallSpec",
     "CalibrationSpec",

@@ -303,7 +303,7 @@ class WallSpec(Table):
     def _check_table_reach(self) -> None:
         r"""Refuse a response table whose impacts would exceed the engine's :data:`contact.impact.SPEED_MAX`. Its
         normal speeds run geometrically, a ratio :math:`r = (V_{max} / (V_{min}\cos\theta_{top}))^{1/(n-1)}`
-        apart (:func:`wear.wall.laws.table_axes_of`); a record of speed up to :math:`V_{max}` at angle θ is
+        apart (:func:`wear.wall.per_record.table_axes_of`); a record of speed up to :math:`V_{max}` at angle θ is
         interpolated between the nodes around :math:`V\cos\theta`, the upper one up to :math:`r V_{max}\cos\theta`
         in normal speed, :math:`r V_{max}` in speed."""
         low = self.table_normal_speed_min()

@@ -12,7 +12,8 @@ from typing import ClassVar
 from wear.case.choices import COUPLINGS, FEM_MODELS
 from wear.case.schema import Table, key
 from wear.law import WearLaw
-from wear.laws import CUTTING_LAWS, LAWS
+from wear.laws.combined import CUTTING_LAWS
+from wear.laws.registry import LAWS, wear_keys
 from wear.pressure import PRESSURE_SOURCES
 from wear.slip import SPEED_MODELS
 
@@ -21,15 +22,15 @@ __all__ = ["WearSpec", "FemSpec", "OutputSpec"]
 
 @dataclass(frozen=True)
 class WearSpec(Table):
-    """The wear law (:mod:`wear.laws`): ``law`` by name; the local law (errata equation 15, dw/dt = K p^α v^β): ``K``
-    (m^(1−β) s^(β−1) Pa^(−α)), ``alpha``, ``beta``, the ``pressure`` source along the impact, the sliding ``speed``
-    model, ``points_across`` grid points across the largest contact diameter; Finnie's cutting: ``cutting_fraction``,
-    ``force_ratio``, ``depth_ratio`` (and the plate's ``hardness``); Bitter's deformation wear:
-    ``deformation_factor`` ε (J/m³); ``combined``: the ``cutting`` law plus deformation; the correlations: ``oka_e90``,
-    ``oka_k2``, ``dnv_K``, ``dnv_n``."""
+    """The wear law (:mod:`wear.laws`): ``law`` by name (one of :data:`wear.laws.registry.LAWS`); the local law (errata
+    equation 15, dw/dt = K p^α v^β): ``K`` (m^(1−β) s^(β−1) Pa^(−α)), ``alpha``, ``beta``, the ``pressure`` source along
+    the impact, the sliding ``speed`` model, ``points_across`` grid points across the largest contact diameter; Finnie's
+    cutting: ``cutting_fraction``, ``force_ratio``, ``depth_ratio`` (and the plate's ``hardness``); Bitter's deformation
+    wear: ``deformation_factor`` ε (J/m³); ``combined``: the ``cutting`` law plus deformation; the correlations:
+    ``oka_e90``, ``oka_k2``, ``dnv_K``, ``dnv_n``."""
 
     table: ClassVar[str] = "wear"
-    law: str = key(str, "local", "wear law (wear.laws)", choices=tuple(LAWS))
+    law: str = key(str, "local", "wear law (wear.laws)", choices=LAWS)
     K: float = key(float, 1e-11, "wear coefficient of Eq. 15", "m^(1-beta) s^(beta-1) Pa^(-alpha)", low=0.0, high=1e-3)
     alpha: float = key(float, 1.0, "pressure exponent of Eq. 15", low=0.0, high=4.0)
     beta: float = key(float, 0.3, "sliding-speed exponent of Eq. 15", low=0.0, high=4.0)
@@ -87,7 +88,8 @@ class WearSpec(Table):
     def check_deformation_factor(self, fitted: bool) -> None:
         """A one-line ``ValueError`` if the law needs Bitter's ε and the case gives none, unless a calibration
         ``fitted`` it (it then starts from the data)."""
-        if self.law in ("deformation", "combined") and self.deformation_factor is None and not fitted:
+        reads = "deformation_factor" in wear_keys(self.law, self.values())
+        if reads and self.deformation_factor is None and not fitted:
             raise ValueError(
                 f"wear.deformation_factor=None: wear.law={self.law!r} needs Bitter's deformation wear "
                 "factor epsilon (J/m^3)"

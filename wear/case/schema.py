@@ -17,6 +17,7 @@ with units) and converts it to its type (a TOML integer given for a float key be
 from __future__ import annotations
 
 import math
+from collections.abc import Collection
 from dataclasses import dataclass, field, fields
 from typing import Any, ClassVar
 
@@ -48,7 +49,9 @@ class Key:
     low_open: bool = False
     high_open: bool = False
     allow_inf: bool = False
-    choices: tuple[str, ...] = ()
+    #: read at each check: a registry's live mapping (e.g. :data:`wear.laws.registry.LAWS`) takes the entries added
+    #: to it
+    choices: Collection[str] = ()
     optional: bool = False
     absent: str = ""
     inf_is_absent: bool = False

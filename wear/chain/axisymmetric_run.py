@@ -15,7 +15,7 @@ from fem.solid_coupling import SolidCoupledImpact
 from wear.case import Case
 from wear.chain.plate import case_mesh, check_impact_overlap, plate_sliding_speed, wear_constants
 from wear.integrate import WearMap, axisymmetric_wear_depth
-from wear.laws import ImpactWear, wear_of_impact
+from wear.laws.impact import ImpactWear, wear_of_impact
 from wear.pressure import PressureHistory, pressure_history
 from wear.surface import DeformedSurface
 
@@ -31,7 +31,7 @@ def impact_wear(
     """Stage ``wear``: the pressure history p(r, t) of ``impact`` (``case.wear.pressure``; ``fe_table`` the FE
     (time s, r m, pressure Pa) table where it is "fe"), the sliding speed (``case.wear.speed``; ``radial_table`` the
     FE surface's (time s, r m, u_r m) where it is "local"), the wear map (m) and the worn volumes of the case's wear
-    law (:func:`wear.laws.wear_of_impact`; ``plate_work`` the FE plate's plastic dissipation, J)."""
+    law (:func:`wear.laws.impact.wear_of_impact`; ``plate_work`` the FE plate's plastic dissipation, J)."""
     w = case.wear
     ph = pressure_history(impact, w.pressure, fe=fe_table, limiting_pressure=case.impact.limiting_pressure)
     wm, worn = wear_of_impact(

@@ -1,5 +1,5 @@
 """Calibration of a wear law's constants to measured wear: the forward model (:mod:`wear.chain.forward_model`:
-batched impacts and the law of :mod:`wear.laws`) fitted by least squares on log residuals (:mod:`wear.chain.fit`)
+batched impacts and the law of :mod:`wear.laws.impact`) fitted by least squares on log residuals (:mod:`wear.chain.fit`)
 to the data (:mod:`wear.chain.calibration_data`). SI units; angles in degrees from the plate normal.
 """
 
@@ -18,31 +18,27 @@ from wear.chain.calibration_data import CalibrationData
 from wear.chain.fit import Constant, LogFit, log_fit
 from wear.chain.forward_model import ForwardModel, check_rows, fe_coupled
 from wear.chain.plate import wear_constants
-from wear.laws import LAW_CONSTANTS, oka_constants
+from wear.laws.registry import LAWS, parts_of, wear_keys
 
 __all__ = ["CalibrationResult", "calibrate", "check_data_keys", "law_constants"]
 
-#: The constant fitted when none is named: each law's scale.
-_SCALE = {
-    "local": "K",
-    "finnie": "cutting_fraction",
-    "deformation": "deformation_factor",
-    "oka": "oka_e90",
-    "dnv": "dnv_K",
-}
-#: Constants fitted in log coordinates (positive scales); the others (exponents) as they are.
-_LOG = {"K", "cutting_fraction", "force_ratio", "depth_ratio", "deformation_factor", "oka_e90", "dnv_K"}
-#: How each scale enters its law: the worn volume of its part is proportional to scale ** power.
-_SCALE_POWER = {"K": 1.0, "cutting_fraction": 1.0, "deformation_factor": -1.0, "oka_e90": 1.0, "dnv_K": 1.0}
+
+def _log_constants() -> set[str]:
+    """The constants fitted in log coordinates (positive scales) of every law; the others (exponents) as they are."""
+    return {name for law in LAWS.values() for name in law.log_constants}
+
+
+def _scale_powers() -> dict[str, float]:
+    """How each law's scale enters it: the worn volume of its part is proportional to scale ** power."""
+    return {law.scale: law.scale_power for law in LAWS.values() if law.scale is not None}
 
 
 def law_constants(case: Case) -> tuple[tuple[str, ...], tuple[str, ...]]:
-    """(the constants of the case's wear law a calibration may fit, those it fits when none is named)."""
-    law = case.wear.law
-    if law == "combined":
-        cut = case.wear.cutting
-        return LAW_CONSTANTS[cut] + LAW_CONSTANTS["deformation"], (_SCALE[cut], _SCALE["deformation"])
-    return LAW_CONSTANTS[law], (_SCALE[law],)
+    """(the constants of the case's wear law a calibration may fit, those it fits when none is named: the scale of
+    each law it adds up, :func:`wear.laws.registry.parts_of`)."""
+    parts = parts_of(case.wear.law, case.wear.values())
+    constants = tuple(name for part in parts for name in part.constants)
+    return constants, tuple(part.scale for part in parts if part.scale is not None)
 
 
 @dataclass(frozen=True, eq=False)
@@ -82,9 +78,10 @@ class CalibrationResult:
                 "on_bound": f.on_bound[k],
                 "units": TABLES["wear"].keys()[name].units,
             }
+        law = self.case.wear.law
         return {
-            "law": self.case.wear.law,
-            "cutting": self.case.wear.cutting if self.case.wear.law == "combined" else None,
+            "law": law,
+            "cutting": self.case.wear.cutting if "cutting" in wear_keys(law, self.case.wear.values()) else None,
             "quantity": self.data.quantity,
             "data": self.data.source,
             "rows": int(self.data.angle.size),
@@ -133,34 +130,45 @@ def check_data_keys(case: Case, data: CalibrationData, free: tuple[str, ...]) ->
 
 def _constant(name: str, start: float) -> Constant:
     spec = TABLES["wear"].keys()[name]
-    return Constant(name, start, name in _LOG, spec.low, spec.high)
+    return Constant(name, start, name in _log_constants(), spec.low, spec.high)
+
+
+def _absent_value(case: Case, constants: dict, name: str) -> float | None:
+    """The value the case's law takes for its constant ``name`` absent from ``constants`` (Oka's E90 and k2 from the
+    plate's hardness), or None."""
+    for part in parts_of(case.wear.law, constants):
+        if part.absent_values is not None and name in part.constants:
+            return part.absent_values(constants, case.plate.material()).get(name)
+    return None
 
 
 def _start(case: Case, model: ForwardModel, rows: np.ndarray, free: tuple[str, ...]) -> dict[str, float]:
     r"""The start of the fit: the case's values of the free exponents (Oka's E90 and k2 from the hardness where not
-    given, :func:`wear.laws.oka_constants`) and free scales from the data. The prediction is linear in :math:`u_j =
-    s_j^{q_j}` of each free scale :math:`s_j` (:data:`_SCALE_POWER`): :math:`y_i = y^0_i + \sum_j c_j t_{ij}`, with
-    :math:`t_{ij}` the part of row i that :math:`u_j` multiplies (found by doubling it) and :math:`y^0_i` the rest; the
-    :math:`c_j \ge 0` minimising :math:`\sum_i ((y^0_i + \sum_j c_j t_{ij}) / m_i - 1)^2` (non-negative least squares on
-    relative errors) scale each :math:`u_j`. A part the data do not need starts at 1% of the data."""
+    given, :attr:`wear.laws.declaration.Law.absent_values`) and free scales from the data. The prediction is linear in
+    :math:`u_j = s_j^{q_j}` of each free scale :math:`s_j` (:attr:`wear.laws.declaration.Law.scale_power`): :math:`y_i =
+    y^0_i + \sum_j c_j t_{ij}`, with :math:`t_{ij}` the part of row i that :math:`u_j` multiplies (found by doubling it)
+    and :math:`y^0_i` the rest; the :math:`c_j \ge 0` minimising :math:`\sum_i ((y^0_i + \sum_j c_j t_{ij}) / m_i -
+    1)^2` (non-negative least squares on relative errors) scale each :math:`u_j`. A part the data do not need starts at
+    1% of the data."""
     base = wear_constants(case)
+    powers = _scale_powers()
     start = {}
     for name in free:
         value = base[name]
-        if value is None and name in ("oka_e90", "oka_k2"):
-            value = oka_constants(base, case.plate.material())[("oka_e90", "oka_k2").index(name)]
-        if value is None and name not in _SCALE_POWER:
+        if value is None:
+            value = _absent_value(case, base, name)
+        if value is None and name not in powers:
             raise ValueError(f"wear.{name}=None: give a starting value for the free constant {name}")
         # a scale without a value (Bitter's ε) starts anywhere positive: it is rescaled by the data just below
         start[name] = 1.0 if value is None else float(value)
-    scales = [name for name in free if name in _SCALE_POWER]
+    scales = [name for name in free if name in powers]
     if not scales:
         return start
     measured = model.data.measured[rows]
     at = model.predict(start)[rows]
     parts = []
     for name in scales:
-        doubled = {**start, name: start[name] * 2.0 ** (1.0 / _SCALE_POWER[name])}
+        doubled = {**start, name: start[name] * 2.0 ** (1.0 / powers[name])}
         parts.append(model.predict(doubled)[rows] - at)
     parts_m = np.array(parts).T
     rest = at - parts_m.sum(axis=1)
@@ -174,7 +182,7 @@ def _start(case: Case, model: ForwardModel, rows: np.ndarray, free: tuple[str, .
         if not own.any():
             continue
         floor = 0.01 * float(np.exp(np.mean(np.log(measured[useful][own] / parts_m[useful, j][own]))))
-        start[name] *= max(float(scale[j]), floor) ** (1.0 / _SCALE_POWER[name])
+        start[name] *= max(float(scale[j]), floor) ** (1.0 / powers[name])
     return start
 
 

@@ -4,9 +4,9 @@ normal.
 
 The impacts do not depend on the wear law's constants, so they are computed once (``contact.simulate_impacts``,
 one batch per group of rows with the same case keys); each evaluation only re-evaluates the law: the Eq. 15 volume
-K ∫ v^β ∫ p^α dA dt on the stored pressure histories (:func:`wear.laws.local_volume`), or the plastic work. A
-closed-form law (:data:`wear.laws.CLOSED_FORM_LAWS`: Finnie, Oka, DNV) needs no impact at all: its formula
-(:func:`wear.laws.closed_form_volume`) is evaluated on the speeds and angles of each group of rows. With
+K ∫ v^β ∫ p^α dA dt on the stored pressure histories (:func:`wear.laws.local.local_volume`), or the plastic work.
+A closed-form law (:func:`wear.laws.registry.closed_form_laws`: Finnie, Oka, DNV) needs no impact at all: its formula
+(:func:`wear.laws.impact.closed_form_volume`) is evaluated on the speeds and angles of each group of rows. With
 ``fem.coupling = "two-way"`` and a law that uses the FE (the ``"fe"`` pressure, or the plastic work of the
 deformation laws) each row's coupled FE impact is computed once too (seconds per row).
 """
@@ -27,7 +27,9 @@ from wear.chain.calibration_data import CalibrationData
 from wear.chain.plate import case_plate, coupling_settings, impact_on_law, plate_sliding_speed, wear_constants
 from wear.chain.single import estimate_arguments, estimate_impact
 from wear.law import WearLaw
-from wear.laws import CLOSED_FORM_LAWS, closed_form_volume, impact_wear, local_volume, pressed_area
+from wear.laws.impact import closed_form_volume, impact_wear
+from wear.laws.local import local_volume, pressed_area
+from wear.laws.registry import law_named, parts_of
 from wear.pressure import PressureHistory, pressure_history
 from wear.slip import SlidingSpeed
 
@@ -45,19 +47,19 @@ __all__ = [
 
 def _uses_local(case: Case) -> bool:
     """Whether the case's law evaluates Eq. 15 on the pressure histories."""
-    return case.wear.law == "local" or (case.wear.law == "combined" and case.wear.cutting == "local")
+    return any(part.uses_local for part in parts_of(case.wear.law, case.wear.values()))
 
 
 def closed_form(case: Case) -> bool:
-    """Whether the case's law is a formula of each row's speed, angle, particle and plate (:data:`CLOSED_FORM_LAWS`),
-    so that the forward model needs no impact."""
-    return case.wear.law in CLOSED_FORM_LAWS
+    """Whether the case's law is a formula of each row's speed, angle, particle and plate
+    (:attr:`wear.laws.declaration.Law.closed_form`), so that the forward model needs no impact."""
+    return law_named(case.wear.law).closed_form is not None
 
 
 def fe_coupled(case: Case) -> bool:
     """Whether the forward model computes each row's coupled FE impact (and so reads ``[fem]``): a two-way coupling
     and a law that uses the FE (its pressure or the plastic work of the deformation laws)."""
-    uses_work = case.wear.law in ("deformation", "combined")
+    uses_work = any(part.uses_work for part in parts_of(case.wear.law, case.wear.values()))
     return case.fem.coupling == "two-way" and ((_uses_local(case) and case.wear.pressure == "fe") or uses_work)
 
 

@@ -41,7 +41,9 @@ from wear.case import JOBS, Case
 from wear.case.work import check_work
 from wear.chain.plates import PlateRun, couple_plate, prepare_case
 from wear.integrate import WearMap, implausible_wear
-from wear.laws import LAWS, ImpactWear
+from wear.laws import local
+from wear.laws.impact import ImpactWear
+from wear.laws.registry import law_named
 from wear.pressure import PressureHistory
 from wear.surface import DeformedSurface
 
@@ -65,7 +67,7 @@ class RunResult:
     ``estimate`` (the impact on the case's own normal model), ``impact`` (:class:`contact.ImpactResult`, the final
     impact: coupled if two-way), ``plate`` (the plate the impact acted on, :class:`wear.chain.plates.PlateRun`:
     what the outputs and figures ask for), ``pressure`` (:class:`wear.PressureHistory`), ``wear``
-    (:class:`wear.WearMap`), ``worn`` (the wear law's volumes by mechanism, :class:`wear.laws.ImpactWear`),
+    (:class:`wear.WearMap`), ``worn`` (the wear law's volumes by mechanism, :class:`wear.laws.impact.ImpactWear`),
     ``surface`` (:class:`wear.surface.DeformedSurface`), ``yield_info`` (dict: ``F_y_paper`` Eq. 18 with C = 1.6,
     ``F_c_exact`` with C(ν), ``fe_first_yield_force`` of the plate the impact ran on, ``V_y`` Thornton's yield
     speed, N and m/s), ``regime`` (str), ``stage_times`` (dict stage → s). ``fe``, ``coupling`` and ``solid`` are
@@ -153,8 +155,8 @@ class RunResult:
                 "scar_length_m": w.scar_length_m,
                 "scar_width_m": w.scar_width_m,
                 "law": str(self.case.wear.wear_law())
-                if self.worn.law == "local"
-                else f"{self.worn.law}: {LAWS[self.worn.law]}",
+                if self.worn.law == local.LAW.name
+                else f"{self.worn.law}: {law_named(self.worn.law).description}",
                 "pressure_source": self.pressure.source,
                 "parts_m3": dict(self.worn.parts),
             },

@@ -24,7 +24,8 @@ from fem.solid_coupling import SolidCoupledImpact, SolidCouplingSettings, couple
 from wear.case import Case
 from wear.chain.plate import impact_on_law, wear_constants
 from wear.integrate import WearMap, wear_map
-from wear.laws import ImpactWear, impact_wear, wear_of_impact
+from wear.laws import local
+from wear.laws.impact import ImpactWear, impact_wear, wear_of_impact
 from wear.pressure import PressureHistory, fe_pressure_history
 from wear.slip import sliding_speed
 from wear.solid_wear import on_half_surface, solid_dent_depth, solid_grid, solid_wear_depth
@@ -133,7 +134,7 @@ def solid_wear(case: Case, coupled: SolidCoupledImpact) -> tuple[PressureHistory
     speed = None if w.speed == "local" else sliding_speed(impact, w.speed)
     constants = wear_constants(case)
     density = case.plate.material().density
-    if w.law != "local":
+    if w.law != local.LAW.name:
         contact_point = speed or sliding_speed(impact, "sliding")
         wm, worn = wear_of_impact(
             w.law, constants, w.wear_law(), impact, ph, contact_point, density=density, points_across=w.points_across
@@ -143,7 +144,7 @@ def solid_wear(case: Case, coupled: SolidCoupledImpact) -> tuple[PressureHistory
     x, y = solid_grid(field, w.points_across)
     depth = solid_wear_depth(field, speed, w.wear_law(), x, y, float(impact.history.t[0]))
     wm = wear_map(x, y, depth, density)
-    return ph, wm, impact_wear("local", constants, impact, local=wm.volume_m3)
+    return ph, wm, impact_wear(local.LAW.name, constants, impact, local=wm.volume_m3)
 
 
 def solid_surface(coupled: SolidCoupledImpact, wm: WearMap) -> DeformedSurface:

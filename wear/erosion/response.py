@@ -31,7 +31,8 @@ from contact import Material, simulate_impacts
 from contact.checks import check_array, check_choice, check_number
 from contact.theory import sphere_mass
 from wear.law import WearLaw
-from wear.laws import LAWS, wear_of_impact
+from wear.laws.impact import wear_of_impact
+from wear.laws.registry import LAWS
 from wear.pressure import pressure_history
 from wear.slip import sliding_speed
 
@@ -82,7 +83,7 @@ class ImpactResponse:
     ``law`` the local law (Eq. 15, :class:`WearLaw`); ``pressure`` source ``"hertz"``, ``"paper"`` or
     ``"thornton"``; ``speed_model`` ``"sliding"`` or ``"kinematic"``; ``restitution``, ``normal_model``
     (``"hertz"``/``"thornton"``), ``tangential_model`` as in ``contact.simulate_impact``; ``points_across``
-    wear-grid points across the contact diameter; ``wear_law`` the law by name (:data:`wear.laws.LAWS`) and
+    wear-grid points across the contact diameter; ``wear_law`` the law by name (:data:`wear.laws.registry.LAWS`) and
     ``constants`` its constants (the ``[wear]`` keys and the plate's ``hardness``); ``limiting_pressure`` (Pa),
     ``scheme`` and ``time_step`` (s) of the impacts, as in ``contact.simulate_impacts``.
     """
@@ -111,7 +112,7 @@ class ImpactResponse:
             raise ValueError(f"law={self.law!r} is not a wear.WearLaw")
         check_choice("pressure", self.pressure, ("hertz", "paper", "thornton"))
         check_choice("speed_model", self.speed_model, ("sliding", "kinematic"))
-        check_choice("wear_law", self.wear_law, tuple(LAWS))
+        check_choice("wear_law", self.wear_law, LAWS)
 
     @property
     def particle_mass(self) -> float:

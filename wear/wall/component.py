@@ -2,7 +2,7 @@ r"""The erosion of a component's wall, from its impact records to its rates, rem
 ``impactwear wall`` runs (SI units; angles in degrees from the wall normal, into the wall).
 
 :func:`erode_component` reads the wall (:func:`read_wall`), builds the case's wear law per record
-(:func:`wear.wall.laws.wall_law`), sums the records face by face in chunks (:func:`wear.wall.engine.erode_wall`)
+(:func:`wear.wall.per_record.wall_law`), sums the records face by face in chunks (:func:`wear.wall.engine.erode_wall`)
 and turns the sums into rates over the exposure time (:func:`wear.wall.worn.wall_wear`):
 
 - **Scaling to the real flow.** Each face's eroded volume is multiplied by :math:`\dot m / \dot m_{CFD}`
@@ -34,11 +34,11 @@ import numpy as np
 from contact.checks import check_count, check_instance, check_path
 from wear.case import Case
 from wear.case.jobs import default_case
+from wear.wall.case_keys import check_law_keys
 from wear.wall.engine import WallSums, chunk_rows_for, erode_wall
 from wear.wall.foam import DecomposedCaseError, polymesh_folder, read_polymesh
-from wear.wall.law_keys import check_law_keys
-from wear.wall.laws import records_refusal, wall_law
 from wear.wall.mesh import Wall, concat_walls, duplicate_faces, read_surface
+from wear.wall.per_record import records_refusal, wall_law
 from wear.wall.sources import Chunk, plan_chunks, record_files, record_format
 from wear.wall.trust import check_exposure, check_records_fit, note_inputs, note_results
 from wear.wall.worn import SECONDS_PER_YEAR, HotSpots, WallWear, hot_spots, remaining_life, wall_wear, worn_mesh
@@ -245,7 +245,7 @@ def erode_component(
     ``progress``, ``skip_bad``, ``normal``, ``tolerance``: as :func:`wear.wall.engine.erode_wall`'s;
     ``chunk_rows``: records per chunk (default: the largest that fits the memory budget). A key of the case that
     the law does not read, at a value other than the default of ``impactwear wall``, is refused
-    (:func:`wear.wall.law_keys.check_law_keys`), and so are records that do not lie on the wall as a CFD run's do
+    (:func:`wear.wall.case_keys.check_law_keys`), and so are records that do not lie on the wall as a CFD run's do
     and an exposure too short for the rates, before any work (:mod:`wear.wall.trust`, which also warns of values
     that look like other units)."""
     _check_arguments(case, wall, workers)

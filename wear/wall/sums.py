@@ -7,7 +7,7 @@ A quantity :math:`q_i` of each record i (kept on face :math:`f_i`) sums per face
 one ``np.bincount`` pass; the sum over the faces equals the sum over the kept records (no record counted twice or
 lost). Sums of chunks of records add face by face, which is how a large table is summed in parts.
 
-The eroded volume of record i by a wear law of :mod:`wear.wall.laws` (:func:`record_volumes`): the law's
+The eroded volume of record i by a wear law of :mod:`wear.wall.per_record` (:func:`record_volumes`): the law's
 volume of one particle at the record's angle and speed, times the particles it stands for, and 0 for a record left
 out of the sums (its face −1). OpenFOAM's ``particleErosion`` is Finnie's law with c = 1 (it has no cutting
 fraction; its ``p``, ``psi`` = ψ and ``K`` are ``plate.hardness``, ``wear.depth_ratio`` and ``wear.force_ratio``).
@@ -31,8 +31,8 @@ def face_sum(n_faces: int, hits: Hits, values: np.ndarray) -> np.ndarray:
 
 def refuse_records(refused, records: ImpactRecords, hits: Hits) -> None:
     """Raise a ``ValueError`` naming the file, row and column of the first record kept on the wall that
-    ``refused(speed_m_s, density_kg_m3)`` (a law's ``refused``, e.g. :meth:`wear.wall.laws.TableLaw.refused`; None:
-    every record taken) gives as (index among the kept, field, why)."""
+    ``refused(speed_m_s, density_kg_m3)`` (a law's ``refused``, e.g. :meth:`wear.wall.per_record.TableLaw.refused`;
+    None: every record taken) gives as (index among the kept, field, why)."""
     if refused is None:
         return
     kept = np.flatnonzero(hits.kept)
@@ -43,7 +43,7 @@ def refuse_records(refused, records: ImpactRecords, hits: Hits) -> None:
 
 
 def record_volumes(law, records: ImpactRecords, hits: Hits) -> np.ndarray:
-    """The eroded volume (m³) of each record by ``law`` (:func:`wear.wall.laws.wall_law`, or any object with its
+    """The eroded volume (m³) of each record by ``law`` (:func:`wear.wall.per_record.wall_law`, or any object with its
     ``volume(angle_deg, speed_m_s, diameter_m, density_kg_m3, count)``); 0 for a skipped record. A record the law
     cannot take (a law's ``refused``, e.g. a speed outside a response table) is a ``ValueError`` naming its file, row
     and column, and so is a volume that is not finite and >= 0 (a law's bug or its constants)."""

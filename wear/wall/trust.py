@@ -13,7 +13,7 @@ warnings, the command's ``note:`` lines) on values that look like other units (S
   and, on a flat wall, on it: the distance does not tell. When at least :data:`SPREAD_RECORDS` distinct hit points
   span less than :data:`SPAN_RATIO` of the wall's extent (the diagonals of their bounding boxes), refused.
 
-- *What the law takes.* A response table's law (:func:`wear.wall.laws.records_refusal`) refuses a record outside
+- *What the law takes.* A response table's law (:func:`wear.wall.per_record.records_refusal`) refuses a record outside
   its speeds or of another particle density: found here rather than after the table's half minute.
 
 **Exposure.** The rates are volume / (area × exposure): an exposure below :data:`EXPOSURE_MIN` (no CFD or DEM
@@ -81,7 +81,7 @@ def check_records_fit(
     """Refuse (``ValueError``, one line naming the records file) records that do not lie on ``wall`` as a CFD
     run's do (module docstring), from the first :data:`SAMPLE_ROWS` rows of the first of ``chunks``; note a
     particle density that looks like g/cm³. A bad row among them is refused as the run would refuse it, and so is
-    one the law will refuse: ``refused(speed_m_s, density_kg_m3)`` (:func:`wear.wall.laws.records_refusal`), which
+    one the law will refuse: ``refused(speed_m_s, density_kg_m3)`` (:func:`wear.wall.per_record.records_refusal`), which
     gives the first such record as (index, field, why) or None."""
     if not chunks:
         return

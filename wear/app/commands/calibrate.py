@@ -22,9 +22,9 @@ from wear.app.commands.common import (
 )
 from wear.app.outputs.calibration import ENTRIES, write_calibration
 from wear.app.outputs.folder import check_output_folder
-from wear.case import LAWS
 from wear.chain.calibrate import calibrate
 from wear.chain.calibration_data import read_data
+from wear.laws.registry import LAWS
 
 HELP = "fit a wear law's constants to measured wear (least squares on logs, with intervals); write calibrated.toml"
 
@@ -34,7 +34,7 @@ DEFAULT_OUT = "impactwear-calibrate"
 def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("data", nargs="?", metavar="DATA.csv", help="measured wear (see above)")
     add_case_options(parser, "calibrate")
-    parser.add_argument("--law", choices=tuple(LAWS), help="the wear law to fit [wear.law]")
+    parser.add_argument("--law", choices=LAWS, help="the wear law to fit [wear.law]")
     parser.add_argument(
         "--free",
         metavar="K,alpha,...",

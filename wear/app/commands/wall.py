@@ -31,9 +31,9 @@ from wear.app.commands.common import (
 from wear.app.outputs.folder import check_output_folder
 from wear.app.outputs.wall import ENTRIES, write_wall
 from wear.case import JOBS
+from wear.wall.case_keys import check_law_keys
 from wear.wall.component import erode_component, read_wall
 from wear.wall.hits import NORMALS
-from wear.wall.law_keys import check_law_keys
 
 __all__ = ["HELP", "configure", "main"]
 

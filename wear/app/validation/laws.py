@@ -22,7 +22,9 @@ from wear.chain.calibrate import calibrate
 from wear.chain.calibration_data import CalibrationData
 from wear.chain.forward_model import ForwardModel
 from wear.chain.trends import law_trends
-from wear.laws import dnv_angle_function, finnie_volume, oka_erosion_ratio
+from wear.laws.dnv import dnv_angle_function
+from wear.laws.finnie import finnie_volume
+from wear.laws.oka import oka_erosion_ratio
 
 #: The calibration case: silica sand on carbon steel (impactwear calibrate's default) of Oka's hardness.
 CASE = default_case("calibrate").with_(

@@ -14,7 +14,7 @@ import numpy as np
 
 from contact import BatchResult, Material, simulate_impacts
 from wear.chain.calibration_data import CalibrationData
-from wear.laws import oka_erosion_ratio
+from wear.laws.oka import oka_erosion_ratio
 
 __all__ = [
     "KHARAZ",
@@ -111,7 +111,7 @@ def unloading_path_w(quick: bool) -> tuple[np.ndarray, np.ndarray]:
 #: 1.4 GPa): their correlation's angle and speed dependence (n₁ = 0.71 H_v^0.14, n₂ = 2.4 H_v^−0.94, k₂ = 2.3
 #: H_v^0.038). Its scale E90 (kg/kg at 104 m/s, 326 µm) is the Ansys Fluent Theory Guide's example value for sand on
 #: a steel of H_v 1.8 GPa (6.154e-4; Oka & Yoshida's own E90, Part 2, Wear 259: 102–109, gives 4.9e-4 for this
-#: steel, :func:`wear.laws.oka_e90`): it only scales the curve, which every law is calibrated to.
+#: steel, :func:`wear.laws.oka.oka_e90`): it only scales the curve, which every law is calibrated to.
 OKA_CARBON_STEEL = {
     "hardness": 1.4e9,
     "diameter": 300e-6,

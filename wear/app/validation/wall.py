@@ -22,7 +22,7 @@ from wear.app.validation.checks import Check, relative
 from wear.case import default_case
 from wear.wall import ImpactRecords, Wall, erode_component, read_patch_field, read_wall
 from wear.wall.engine import chunk_sums
-from wear.wall.laws import wall_law
+from wear.wall.per_record import wall_law
 from wear.wall.sources import plan_chunks, read_chunk
 
 #: OpenFOAM's particleErosion constants of the bend run (its kinematicCloudProperties): p (Pa), ψ, K.

@@ -3,21 +3,22 @@ law object whose :meth:`volume` gives the eroded volume (m³) of every record fr
 normal), speed V (m/s), particle diameter d (m) and density ρ_p (kg/m³) and the particles N it stands for. A
 record delivers the mass N m, :math:`m = \rho_p \pi d^3 / 6`.
 
-The closed forms evaluate their formula (:mod:`wear.laws`, one copy) on whole arrays:
+A law with a closed form evaluates its formula on whole arrays, by its own module's
+:attr:`~wear.laws.declaration.Law.per_record` (one copy):
 
-- ``finnie``: :math:`W = N\,\mathrm{finnie}(m, V, \theta)` (:func:`wear.laws.finnie_volume`; the plate's flow
+- ``finnie``: :math:`W = N\,\mathrm{finnie}(m, V, \theta)` (:class:`wear.laws.finnie.FinnieLaw`; the plate's flow
   pressure ``plate.hardness``, else 3 Y, and ``wear.cutting_fraction``, ``wear.force_ratio``, ``wear.depth_ratio``);
-- ``oka``: :math:`W = N m\,E_{\mathrm{Oka}}(V, \theta, d) / \rho_w` (:func:`wear.laws.oka_erosion_ratio`, at each
+- ``oka``: :math:`W = N m\,E_{\mathrm{Oka}}(V, \theta, d) / \rho_w` (:class:`wear.laws.oka.OkaLaw`, at each
   record's own diameter: not proportional to the mass, as :math:`E \propto d^{0.19}`);
-- ``dnv``: :math:`W = N m\,K V^n F(\alpha) / \rho_w` (:func:`wear.laws.dnv_erosion_ratio`).
+- ``dnv``: :math:`W = N m\,K V^n F(\alpha) / \rho_w` (:class:`wear.laws.dnv.DnvLaw`).
 
-The FE-informed laws (``local``, ``deformation``, ``combined``: they need the impact itself: its pressure, sliding
-and plastic work) go through the erosion's response table (:func:`wear.erosion.table.build_response_table` of the
-case's :func:`wear.erosion.run.impact_response`), built once per law over normal speed × angle
-(:class:`TableLaw`), and looked up per record by :func:`wear.erosion.table.table_entries` (power law in the normal
-speed along a line of constant speed, linear in the angle). Beyond the table's last angle θ_top the volume goes
-linearly to 0 at 90°, where it vanishes for every law (no normal speed: no pressure, no plastic work). A calibrated
-case (``calibrated.toml`` of ``impactwear calibrate``) is a case like any other: its fitted constants are the
+The FE-informed laws (those without a closed form: ``local``, ``deformation``, ``combined``; they need the impact
+itself: its pressure, sliding and plastic work) go through the erosion's response table
+(:func:`wear.erosion.table.build_response_table` of the case's :func:`wear.erosion.run.impact_response`), built once per
+law over normal speed × angle (:class:`TableLaw`), and looked up per record by :func:`wear.erosion.table.table_entries`
+(power law in the normal speed along a line of constant speed, linear in the angle). Beyond the table's last angle θ_top
+the volume goes linearly to 0 at 90°, where it vanishes for every law (no normal speed: no pressure, no plastic work). A
+calibrated case (``calibrated.toml`` of ``impactwear calibrate``) is a case like any other: its fitted constants are the
 ``[wear]`` keys the law reads.
 
 **Size scaling.** The table holds the volume per unit particle mass, :math:`w(V, \theta) = W / m`, at the case's
@@ -52,29 +53,17 @@ import numba
 import numpy as np
 
 from contact.checks import check_instance
-from contact.theory import sphere_mass
 from wear.case import Case
 from wear.case.progress import progress_bar
 from wear.erosion.response import Footprint, ImpactResponse
 from wear.erosion.run import impact_response
 from wear.erosion.table import build_response_table, table_entries
-from wear.laws import (
-    CLOSED_FORM_LAWS,
-    LAWS,
-    dnv_erosion_ratio,
-    finnie_volume,
-    flow_pressure_of,
-    oka_constants,
-    oka_erosion_ratio,
-)
+from wear.laws.records import RecordLaw, particle_mass, record_arrays
+from wear.laws.registry import law_named
 
 __all__ = [
-    "DnvLaw",
-    "FinnieLaw",
-    "OkaLaw",
     "TableLaw",
     "WallLaw",
-    "particle_mass",
     "records_refusal",
     "table_axes_of",
     "table_refusal",
@@ -85,100 +74,6 @@ __all__ = [
 TABLE_BATCH = 32
 #: Relative tolerance of a record's particle density against the table's (a CSV prints ~15 digits).
 DENSITY_TOLERANCE = 1e-9
-
-
-def particle_mass(diameter, density) -> np.ndarray:
-    """Mass (kg) of a spherical particle of ``diameter`` (m) and ``density`` (kg/m³), ρ_p π d³ / 6."""
-    return sphere_mass(0.5 * np.asarray(diameter, float), np.asarray(density, float))
-
-
-def _arrays(angle, speed, diameter, density, count) -> tuple[np.ndarray, ...]:
-    """The five per-record arrays as float arrays of one length, or a one-line ``ValueError``."""
-    arrays = [np.asarray(a, float).reshape(-1) for a in (angle, speed, diameter, density, count)]
-    sizes = {a.size for a in arrays}
-    if len(sizes) > 1:
-        lengths = ", ".join(f"{n}={a.size}" for n, a in zip(_NAMES, arrays, strict=True))
-        raise ValueError(f"the per-record arrays differ in length: {lengths}")
-    theta = arrays[0]
-    if theta.size and not (theta.min() >= 0.0 and theta.max() <= 90.0):
-        i = int(np.flatnonzero(~((theta >= 0.0) & (theta <= 90.0)))[0])
-        raise ValueError(f"angle_deg[{i}]={theta[i]:.6g} is out of range: an impact angle is in [0, 90] deg")
-    return tuple(arrays)
-
-
-_NAMES = ("angle_deg", "speed_m_s", "diameter_m", "density_kg_m3", "count")
-
-
-def _describe(law, constants: str) -> None:
-    """Set a closed form's ``description`` (unless given): the law and its constants."""
-    if not law.description:
-        object.__setattr__(law, "description", f"{LAWS[law.name]}, per record: {constants}")
-
-
-@dataclass(frozen=True)
-class FinnieLaw:
-    """Finnie's (1960) cutting per record (:func:`wear.laws.finnie_volume`): ``flow_pressure`` p (Pa),
-    ``force_ratio`` K, ``depth_ratio`` ψ, ``cutting_fraction`` c."""
-
-    flow_pressure: float
-    force_ratio: float
-    depth_ratio: float
-    cutting_fraction: float
-    name: str = "finnie"
-    description: str = ""
-
-    def __post_init__(self) -> None:
-        k, psi, c = self.force_ratio, self.depth_ratio, self.cutting_fraction
-        _describe(self, f"p = {self.flow_pressure:g} Pa, K = {k:g}, psi = {psi:g}, c = {c:g}")
-
-    def volume(self, angle_deg, speed_m_s, diameter_m, density_kg_m3, count) -> np.ndarray:
-        """Eroded volume (m³) of each record: N finnie(m, V, θ)."""
-        theta, speed, d, rho, n = _arrays(angle_deg, speed_m_s, diameter_m, density_kg_m3, count)
-        mass = particle_mass(d, rho)
-        k, psi, c = self.force_ratio, self.depth_ratio, self.cutting_fraction
-        return n * finnie_volume(mass, speed, theta, self.flow_pressure, k, psi, c)
-
-
-@dataclass(frozen=True)
-class OkaLaw:
-    """Oka et al.'s (2005) erosion ratio per record (:func:`wear.laws.oka_erosion_ratio`): the plate's Vickers
-    ``hardness`` (Pa) and ``plate_density`` (kg/m³), ``e90`` (kg/kg), the speed exponent ``k2``."""
-
-    hardness: float
-    plate_density: float
-    e90: float
-    k2: float
-    name: str = "oka"
-    description: str = ""
-
-    def __post_init__(self) -> None:
-        _describe(self, f"Hv = {self.hardness:g} Pa, E90 = {self.e90:g} kg/kg, k2 = {self.k2:g}, k3 = 0.19")
-
-    def volume(self, angle_deg, speed_m_s, diameter_m, density_kg_m3, count) -> np.ndarray:
-        """Eroded volume (m³) of each record: N m E(V, θ, d) / ρ_w."""
-        theta, speed, d, rho, n = _arrays(angle_deg, speed_m_s, diameter_m, density_kg_m3, count)
-        ratio = oka_erosion_ratio(speed, theta, self.hardness, d, self.e90, self.k2)
-        return n * (particle_mass(d, rho) * ratio / self.plate_density)
-
-
-@dataclass(frozen=True)
-class DnvLaw:
-    """DNV-RP-O501's erosion ratio per record (:func:`wear.laws.dnv_erosion_ratio`): ``K`` ((kg/kg)(m/s)^−n),
-    ``n``, the plate's ``plate_density`` (kg/m³)."""
-
-    K: float
-    n: float
-    plate_density: float
-    name: str = "dnv"
-    description: str = ""
-
-    def __post_init__(self) -> None:
-        _describe(self, f"K = {self.K:g} (kg/kg)(m/s)^-n, n = {self.n:g}")
-
-    def volume(self, angle_deg, speed_m_s, diameter_m, density_kg_m3, count) -> np.ndarray:
-        """Eroded volume (m³) of each record: N m K V^n F(α) / ρ_w."""
-        theta, speed, d, rho, n = _arrays(angle_deg, speed_m_s, diameter_m, density_kg_m3, count)
-        return n * (particle_mass(d, rho) * dnv_erosion_ratio(speed, theta, self.K, self.n) / self.plate_density)
 
 
 @numba.njit(cache=True)
@@ -222,7 +117,7 @@ class TableLaw:
     def volume(self, angle_deg, speed_m_s, diameter_m, density_kg_m3, count) -> np.ndarray:
         """Eroded volume (m³) of each record: N m w(V, θ). A record the table cannot take (:meth:`refused`) is a
         one-line ``ValueError`` naming its index."""
-        theta, speed, d, rho, n = _arrays(angle_deg, speed_m_s, diameter_m, density_kg_m3, count)
+        theta, speed, d, rho, n = record_arrays(angle_deg, speed_m_s, diameter_m, density_kg_m3, count)
         bad = self.refused(speed, rho)
         if bad is not None:
             i, field_name, why = bad
@@ -263,8 +158,9 @@ def table_refusal(
     return None
 
 
-#: The law of a wall: any of these, each with ``name``, ``description`` and ``volume(...)``.
-WallLaw = FinnieLaw | OkaLaw | DnvLaw | TableLaw
+#: The law of a wall: a closed form's per record (:attr:`wear.laws.declaration.Law.per_record`) or an FE-informed
+#: law's response table (:class:`TableLaw`).
+WallLaw = RecordLaw
 
 
 def table_axes_of(case: Case) -> tuple[np.ndarray, np.ndarray]:
@@ -329,9 +225,9 @@ def _table_law(case: Case, progress: bool) -> TableLaw:
     )
     seconds = time.perf_counter() - t0
     impacts = int(np.isfinite(table.volume_m3).sum())
-    cutting = f" (cutting: {case.wear.cutting})" if case.wear.law == "combined" else ""
+    cutting = f" (cutting: {case.wear.cutting})" if law_named(case.wear.law).parts is not None else ""
     description = (
-        f"{LAWS[case.wear.law]}{cutting}, through the response table per unit particle mass: "
+        f"{law_named(case.wear.law).description}{cutting}, through the response table per unit particle mass: "
         f"{speeds.size} normal speeds x {angles.size} angles ({impacts} impacts) for {w.table_speed_min:g} to "
         f"{w.table_speed_max:g} m/s at 0 to {w.table_angle_max:g} deg, built in {seconds:.3g} s; "
         f"ImpactResponse(pressure={response.pressure!r}, normal_model={response.normal_model!r}, law: {response.law})"
@@ -354,28 +250,21 @@ def wall_law(case: Case, progress: bool = False) -> WallLaw:
     """The case's wear law (``wear.law``) per record of a wall (see the module docstring): a closed form, or the
     response table of an FE-informed law (built now: :attr:`TableLaw.seconds`; ``progress``: a bar on stderr)."""
     check_instance("case", case, Case, "a wear.Case: wear.case.default_case('wall') or wear.case.load_case(path)")
-    law, plate = case.wear.law, case.plate
+    law, plate = law_named(case.wear.law), case.plate
     constants = {**case.wear.values(), "hardness": plate.hardness}
     material = plate.material()
-    if law in CLOSED_FORM_LAWS and plate.rigid:
-        raise ValueError(f"plate.rigid=true: wear.law={law!r} erodes the plate, which needs its density (kg/m^3)")
-    w = case.wear
-    if law == "finnie":
-        p = flow_pressure_of(constants, material)
-        return FinnieLaw(p, w.force_ratio, w.depth_ratio, w.cutting_fraction)
-    if law == "oka":
-        e90, k2 = oka_constants(constants, material)
-        return OkaLaw(flow_pressure_of(constants, material), plate.density, e90, k2)
-    if law == "dnv":
-        return DnvLaw(w.dnv_K, w.dnv_n, plate.density)
-    return _table_law(case, progress)
+    if law.per_record is None:
+        return _table_law(case, progress)
+    if plate.rigid:
+        raise ValueError(f"plate.rigid=true: wear.law={law.name!r} erodes the plate, which needs its density (kg/m^3)")
+    return law.per_record(constants, material)
 
 
 def records_refusal(case: Case) -> Callable[[np.ndarray, np.ndarray], tuple[int, str, str] | None] | None:
     """The check of :meth:`TableLaw.refused` the case's law will make on each record, before its table is built
     (the records that table cannot take are found in seconds rather than after it): None for a closed form, which
     takes every record."""
-    if case.wear.law in CLOSED_FORM_LAWS:
+    if law_named(case.wear.law).per_record is not None:
         return None
     w = case.wall
     return functools.partial(

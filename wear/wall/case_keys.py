@@ -1,17 +1,15 @@
-"""The keys a wall's wear law reads (:func:`wear.wall.laws.wall_law`), by law, and the refusal of the others: a key
+"""The case keys a wall's wear law reads (:func:`wear.wall.per_record.wall_law`; a law's own from its declaration,
+:data:`wear.laws.registry.LAWS`), and the refusal of the others: a key
 a wall run accepts is used or refused, never silently ignored. The wall command adds the ``[wall]`` keys it reads
 itself (thickness, exposure, service time, sand rates)."""
 
 from __future__ import annotations
 
 from wear.case import Case
-from wear.laws import CLOSED_FORM_LAWS, LAW_CONSTANTS
+from wear.laws.registry import law_named, wear_keys
 
 __all__ = ["WALL_TABLE_KEYS", "check_law_keys", "keys_read"]
 
-#: The ``[wear]`` keys of each law besides ``wear.law``: its constants, and of the local law its pressure source,
-#: sliding-speed model and wear grid.
-_WEAR_KEYS = {**LAW_CONSTANTS, "local": (*LAW_CONSTANTS["local"], "pressure", "speed", "points_across")}
 #: The ``[wall]`` keys of the response table (the others are the wall command's: thickness, exposure, rates).
 WALL_TABLE_KEYS = ("table_speed_min", "table_speed_max", "table_speeds", "table_angles", "table_angle_max")
 _TABLE_KEYS = {
@@ -38,18 +36,12 @@ def keys_read(case: Case) -> dict[str, tuple[str, ...]]:
     eroded mass), whether it is rigid, and its name; the table laws read the
     particle's material and the impact's models and integration, but neither its speed nor its angle (the
     records')."""
-    law = case.wear.law
-    if law in CLOSED_FORM_LAWS:
+    law = law_named(case.wear.law)
+    wear = wear_keys(law.name, case.wear.values())
+    if law.per_record is not None:
         # the density always: the wall's eroded mass and erosion rate are ρ V (wear.wall.worn)
-        plate = {"dnv": ("rigid", "density", "name")}.get(
-            law, ("rigid", "density", "hardness", "yield_strength", "name")
-        )
-        return {"ball": (), "plate": plate, "impact": (), "wear": ("law", *_WEAR_KEYS[law]), "wall": ()}
-    parts = {"combined": ("cutting", case.wear.cutting, "deformation")}.get(law, (law,))
-    wear = ["law"]
-    for part in parts:
-        wear += [k for k in _WEAR_KEYS.get(part, (part,)) if k not in wear]
-    return {**_TABLE_KEYS, "wear": tuple(wear)}
+        return {"ball": (), "plate": law.plate_keys, "impact": (), "wear": wear, "wall": ()}
+    return {**_TABLE_KEYS, "wear": wear}
 
 
 def check_law_keys(case: Case, default: Case) -> Case:
