@@ -65,3 +65,38 @@ def test_gallery_page_without_figure_is_reported(tmp_path, caplog):
     app, _ = _site(tmp_path / "c", pages, plot_gallery="False")  # the gallery shown without running the examples
     build_checks._check_gallery_figures(app)
     assert _warnings(caplog) == []
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Eq. 15, dw/dt = K p^α v^β at each point",
+        "K in m^(1−β) s^(β−1) Pa^(−α)",
+        "F_y = F·(Y/σ_vm,max)³",
+        "z = −δ + R − √(R² − r²)",
+        "the yield force F_{y} of Eq. 18",
+        "peak pressure p_max at the centre",
+        "restitution e_n 0.91",
+        "p₀ = 3F/(2πa²)",
+        "| Finnie | E ∝ V^2 f(θ) |\n|---|---|\n| a | b |",
+        "```{note}\nthe overlap δ_c\n```",
+    ],
+)
+def test_plain_text_maths_is_reported(text):
+    assert len(build_checks._plain_math(text)) >= 1
+
+
+def test_maths_code_links_and_file_names_are_not_reported():
+    text = (
+        "Eq. 15, $\\mathrm{d}w/\\mathrm{d}t = K\\,p^{\\alpha} v^{\\beta}$, `wear.load_steps`, `p_max`,\n"
+        "[the fig_wear_laws example](auto_examples/plot_wear_laws.md), fig_wear_laws.png, docs/fem.md,\n"
+        "<https://example.org/a_b>, 6.60e-15 m³ in 1e-13…1e-10, 221 mm/year.\n\n"
+        "```python\nw = K * p_max ** alpha\n```\n\n$$\nz = -\\delta + R - \\sqrt{R^2 - r^2}\n$$ (eq-z)\n"
+    )
+    assert build_checks._plain_math(text) == []
+
+
+def test_converted_pages_have_no_plain_text_maths():
+    docs = Path(__file__).resolve().parents[1] / "docs"
+    found = {n: build_checks._plain_math((docs / n).read_text(encoding="utf-8")) for n in build_checks.MATH_PAGES}
+    assert not any(found.values()), found

@@ -15,6 +15,10 @@
   (``/tmp/``) or the home folder, or a Python warning (``...Warning: ...``), and no example's output a traceback:
   what the examples print, and what they write to stderr, is part of the gallery pages.
 - **A figure in every example**: each gallery page (when the gallery is run) shows at least one figure.
+- **Maths as maths**: on the user-guide pages whose equations are MyST maths (:data:`MATH_PAGES`), an equation-like
+  run of plain text outside a math role is reported: ``^`` between word characters (``p^α``, ``m^(1−β)``), ``√``,
+  ``_{``, a subscript between letters (``p_max``, ``e_n``) or a Unicode subscript (``p₀``). Code, maths, links,
+  URLs and file names are not searched. Write ``$p_{\\max}$``; a name of the code goes in backticks.
 """
 
 from __future__ import annotations
@@ -112,6 +116,47 @@ def _check_italics(app, pages: list[Path]) -> None:
             logger.warning(f"{page.relative_to(outdir)}: italics of {len(span)} characters: {span[:40]!r}…")
 
 
+#: The user-guide pages whose equations are written as MyST maths (``$...$``, ``$$...$$``): on these, plain-text
+#: maths is reported. Pages not listed here still write some equations as text.
+MATH_PAGES = ("wear.md", "wear-laws.md", "wall.md", "run.md", "repeat.md")
+#: Plain-text maths: ``^`` between word characters, a root sign, ``_{``, a subscript between letters, a Unicode
+#: subscript.
+_PLAIN_MATH = re.compile(r"\w\^[\w(\-−{]|√|_\{|[^\W\d_]_[^\W_]|[\u2080-\u209c]")
+#: A word that is a URL, a path or a file name (``fig_wear_laws.png``, ``docs/fem.md``): not maths.
+_NOT_MATH_WORD = re.compile(r"^\W*(?:\S*://\S*|www\.\S*|[\w.-]*/[\w./-]*\.\w+|[\w-]+\.[A-Za-z][\w]{0,4})\W*$")
+#: Admonition-like directives whose body is Markdown (searched like the page); other fences are code.
+_PROSE_DIRECTIVES = re.compile(r"^\{(?:note|warning|tip|important|hint|attention|caution|seealso|admonition|dropdown)\}")
+
+
+def _plain_math(text: str, first_line: int = 0) -> list[str]:
+    """The equation-like runs of plain text in a Markdown ``text``, outside code, maths, links and file names."""
+    parser = MarkdownIt("commonmark").enable("table").use(dollarmath_plugin)  # $...$ as MyST reads it
+    found = []
+    for block in parser.parse(text):
+        line = first_line + (block.map[0] + 1 if block.map else 0)
+        if block.type == "fence" and _PROSE_DIRECTIVES.match(block.info.strip()):
+            body = "\n".join(ln for ln in block.content.splitlines() if not re.match(r"^:\w[\w-]*:", ln))
+            found += _plain_math(body, line)
+            continue
+        depth = 0  # inside a link
+        for token in block.children or []:
+            depth += token.type == "link_open"
+            depth -= token.type == "link_close"
+            if token.type != "text" or depth:
+                continue
+            for word in token.content.split():
+                if not _NOT_MATH_WORD.match(word) and _PLAIN_MATH.search(word):
+                    found.append(f"line {line}: {word!r}")
+    return found
+
+
+def _check_plain_math(app) -> None:
+    srcdir = Path(app.srcdir)
+    for name in MATH_PAGES:
+        for problem in _plain_math((srcdir / name).read_text(encoding="utf-8")):
+            logger.warning(f"{name}, {problem}: plain-text maths outside a math role (write $...$)")
+
+
 #: A Python warning as ``warnings`` prints it (``file.py:12: UserWarning: text``).
 _PYTHON_WARNING = re.compile(r"\b[A-Z]\w*Warning: ")
 #: A traceback (a doctest of an error shows one on purpose: only what an example printed is searched).
@@ -174,6 +219,7 @@ def check_build(app, exception: Exception | None) -> None:
     _check_italics(app, pages)
     _check_machine_text(app, pages)
     _check_gallery_figures(app)
+    _check_plain_math(app)
 
 
 def setup(app) -> dict:
