@@ -75,6 +75,7 @@ def test_gallery_page_without_figure_is_reported(tmp_path, caplog):
         "F_y = F·(Y/σ_vm,max)³",
         "z = −δ + R − √(R² − r²)",
         "the yield force F_{y} of Eq. 18",
+        "overlaps δ (k/n)^{3/2} up to the maximum",
         "peak pressure p_max at the centre",
         "restitution e_n 0.91",
         "p₀ = 3F/(2πa²)",

@@ -16,7 +16,8 @@
   what the examples print, and what they write to stderr, is part of the gallery pages.
 - **A figure in every example**: each gallery page (when the gallery is run) shows at least one figure.
 - **Maths as maths**: on the user-guide pages whose equations are MyST maths (:data:`MATH_PAGES`), an equation-like
-  run of plain text outside a math role is reported: ``^`` between word characters (``p^α``, ``m^(1−β)``), ``√``,
+  run of plain text outside a math role is reported: ``^`` between word characters (``p^α``, ``m^(1−β)``,
+  ``(k/n)^{3/2}``), ``√``,
   ``_{``, a subscript between letters (``p_max``, ``e_n``) or a Unicode subscript (``p₀``). Code, maths, links,
   URLs and file names are not searched. Write ``$p_{\\max}$``; a name of the code goes in backticks.
 """
@@ -119,9 +120,9 @@ def _check_italics(app, pages: list[Path]) -> None:
 #: The user-guide pages whose equations are written as MyST maths (``$...$``, ``$$...$$``): on these, plain-text
 #: maths is reported. Pages not listed here still write some equations as text.
 MATH_PAGES = ("wear.md", "wear-laws.md", "wall.md", "run.md", "repeat.md")
-#: Plain-text maths: ``^`` between word characters, a root sign, ``_{``, a subscript between letters, a Unicode
+#: Plain-text maths: ``^`` after a word character or ``)``, a root sign, ``_{``, a subscript between letters, a Unicode
 #: subscript.
-_PLAIN_MATH = re.compile(r"\w\^[\w(\-−{]|√|_\{|[^\W\d_]_[^\W_]|[\u2080-\u209c]")
+_PLAIN_MATH = re.compile(r"[\w)]\^[\w(\-−{]|√|_\{|[^\W\d_]_[^\W_]|[\u2080-\u209c]")
 #: A word that is a URL, a path or a file name (``fig_wear_laws.png``, ``docs/fem.md``): not maths.
 _NOT_MATH_WORD = re.compile(r"^\W*(?:\S*://\S*|www\.\S*|[\w.-]*/[\w./-]*\.\w+|[\w-]+\.[A-Za-z][\w]{0,4})\W*$")
 #: Admonition-like directives whose body is Markdown (searched like the page); other fences are code.
