@@ -119,7 +119,7 @@ def _check_italics(app, pages: list[Path]) -> None:
 
 #: The user-guide pages whose equations are written as MyST maths (``$...$``, ``$$...$$``): on these, plain-text
 #: maths is reported. Pages not listed here still write some equations as text.
-MATH_PAGES = ("wear.md", "wear-laws.md", "wall.md", "run.md", "repeat.md")
+MATH_PAGES = ("wear.md", "wear-laws.md", "wall.md", "run.md", "repeat.md", "fem.md")
 #: Plain-text maths: ``^`` after a word character or ``)``, a root sign, ``_{``, a subscript between letters, a Unicode
 #: subscript.
 _PLAIN_MATH = re.compile(r"[\w)]\^[\w(\-−{]|√|_\{|[^\W\d_]_[^\W_]|[\u2080-\u209c]")
