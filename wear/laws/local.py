@@ -1,4 +1,4 @@
-r"""The local law, errata Eq. 15: dw/dt = K p^α v^β over the moving contact patch (:class:`wear.law.WearLaw`;
+r"""The local law dw/dt = K p^α v^β over the moving contact patch (errata Equation 15, :class:`wear.law.WearLaw`;
 Archard's law is α = β = 1). Its volume over a whole impact is :func:`local_volume`; its map on the surface grid is
 :func:`wear.integrate_wear`'s. SI units.
 """
