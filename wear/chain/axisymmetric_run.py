@@ -107,7 +107,7 @@ class NoPlateRun:
         return None
 
     def summary_blocks(self) -> dict:
-        return {"plate_3d": None}
+        return {}
 
     def pressure_arrays(self) -> dict[str, np.ndarray]:
         return {}
@@ -175,7 +175,7 @@ class AxisymmetricRun:
         }
 
     def summary_blocks(self) -> dict:
-        return {"plate_3d": None}
+        return {}
 
     def pressure_arrays(self) -> dict[str, np.ndarray]:
         if self.coupled is None:

@@ -80,7 +80,7 @@ class PlateRun(Protocol):
         ...
 
     def summary_blocks(self) -> dict:
-        """The plate's own blocks of summary.json."""
+        """The plate's own blocks of summary.json (``plate_3d``: the 3-D plate's; null where a plate has none)."""
         ...
 
     def pressure_arrays(self) -> dict[str, np.ndarray]:

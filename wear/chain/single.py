@@ -165,7 +165,7 @@ class RunResult:
                 "model": self.fem_model or "axisymmetric",
             },
             "coupling": self.plate.coupling_summary(self.estimate),
-            "plate_3d": blocks["plate_3d"],
+            "plate_3d": blocks.get("plate_3d"),
             "stage_times_s": dict(self.stage_times),
         }
 
