@@ -16,7 +16,7 @@ import pytest
 from wear.app.cli import main
 from wear.app.sweep.spec import parse_sweep
 from wear.case import FEM_MODELS, JOBS, Case, dump_case
-from wear.case.check import FEM_KEYS_OF_MODEL
+from wear.case.choices import FEM_KEYS_OF_MODEL
 from wear.case.work import FE_WORK
 from wear.chain.calibrate import calibrate
 from wear.chain.calibration_data import read_data

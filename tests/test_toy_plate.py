@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 import contact.checks
-import wear.case.check
+import wear.case.choices
 import wear.case.schema
 import wear.case.work
 from contact import ImpactResult, effective_modulus
@@ -183,7 +183,7 @@ def halfspace(monkeypatch):
     monkeypatch.setattr(wear.case.schema, "check_choice", with_halfspace)
     for job in ("run", "repeat"):
         monkeypatch.setitem(JOBS, job, dataclasses.replace(JOBS[job], fem_models=(*JOBS[job].fem_models, NAME)))
-    monkeypatch.setitem(wear.case.check.FEM_KEYS_OF_MODEL, NAME, ())
+    monkeypatch.setitem(wear.case.choices.FEM_KEYS_OF_MODEL, NAME, ())
     monkeypatch.setitem(wear.case.work.FE_WORK, NAME, lambda case, job: None)  # closed forms: no FE work
 
 
