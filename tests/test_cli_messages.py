@@ -11,8 +11,8 @@ from refusal import refused
 from contact import effective_modulus
 from wear.app.cli import build_parser, main
 from wear.case import default_case
+from wear.chain.estimate import estimate_impact
 from wear.chain.indent import largest_force
-from wear.chain.single import estimate_impact
 
 
 @pytest.mark.parametrize(

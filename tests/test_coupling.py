@@ -26,8 +26,8 @@ from contact.theory import (
 from fem.coupling import fixed_point
 from wear import Case, restitution_sweep, run
 from wear.app.figures.run import restitution_comparison
+from wear.chain.estimate import estimate_impact
 from wear.chain.plate import coupling_settings, impact_on_law
-from wear.chain.single import estimate_impact
 
 BALL = Material(E=210e9, nu=0.3, density=7850.0, name="steel")
 

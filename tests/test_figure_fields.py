@@ -112,7 +112,7 @@ def test_plastic_zone_fills_the_whole_section_up_to_the_surface(captured, tmp_pa
     points, triangles = _section(6 * a, 5 * a, 24)
     centroid = points[triangles].mean(axis=1)
     strain = 0.03 * np.clip(1.0 - np.hypot(centroid[:, 0] - 0.5 * a, centroid[:, 1]) / (1.5 * a), 0.0, None)
-    plate = SimpleNamespace(plastic_section=lambda: (points, triangles, strain, a))
+    plate = SimpleNamespace(fields={"plastic_section": (points, triangles, strain, a)})
     result = SimpleNamespace(
         plate=plate,
         surface=SimpleNamespace(dent_centre=(0.5 * a, 0.0)),

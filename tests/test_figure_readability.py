@@ -338,7 +338,7 @@ def _run_result(three_d: bool):
         regime="plastic",
         surface=surface,
         plate=SimpleNamespace(
-            start_dent=lambda: (r_fe, 3.8e-6 * np.clip(1.0 - (r_fe / 200e-6) ** 2, 0.0, None)) if three_d else None
+            fields={"start_dent": (r_fe, 3.8e-6 * np.clip(1.0 - (r_fe / 200e-6) ** 2, 0.0, None))} if three_d else {}
         ),
     )
 

@@ -153,6 +153,25 @@ def test_neither_plate_imports_the_other(module):
         assert other not in PLATES or other == own, f"{MODULES[module]}:{line}: the plate {own} imports {other}"
 
 
+@pytest.mark.parametrize("module", sorted(m for m in MODULES if m == "fem.core" or m.startswith("fem.core.")))
+def test_the_core_imports_no_plate(module):
+    for target, line, _ in _imports(module):
+        plate = _prefix(target) if target.startswith("fem.") else None
+        assert plate not in PLATES, f"{MODULES[module]}:{line}: the FE core imports the plate {plate}"
+
+
+#: The FE solvers: the core and each plate's folder (the command line asks the chains and fem's face, never these).
+SOLVERS = ("fem.core", *PLATES)
+
+
+@pytest.mark.parametrize("module", sorted(m for m in MODULES if m.startswith("wear.app")))
+def test_the_command_line_imports_no_solver_module(module):
+    for target, line, _ in _imports(module):
+        assert not target.startswith(tuple(f"{s}." for s in SOLVERS)) and target not in SOLVERS, (
+            f"{MODULES[module]}:{line}: the command line imports the solver module {target}"
+        )
+
+
 def test_meshes_is_data():
     modules = [m for m in MODULES if m.startswith("meshes")]
     assert modules, "the data package meshes is not found"

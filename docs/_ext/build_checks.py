@@ -126,7 +126,9 @@ _PLAIN_MATH = re.compile(r"[\w)]\^[\w(\-−{]|√|_\{|[^\W\d_]_[^\W_]|[\u2080-\u
 #: A word that is a URL, a path or a file name (``fig_wear_laws.png``, ``docs/fem.md``): not maths.
 _NOT_MATH_WORD = re.compile(r"^\W*(?:\S*://\S*|www\.\S*|[\w.-]*/[\w./-]*\.\w+|[\w-]+\.[A-Za-z][\w]{0,4})\W*$")
 #: Admonition-like directives whose body is Markdown (searched like the page); other fences are code.
-_PROSE_DIRECTIVES = re.compile(r"^\{(?:note|warning|tip|important|hint|attention|caution|seealso|admonition|dropdown)\}")
+_PROSE_DIRECTIVES = re.compile(
+    r"^\{(?:note|warning|tip|important|hint|attention|caution|seealso|admonition|dropdown)\}"
+)
 
 
 def _plain_math(text: str, first_line: int = 0) -> list[str]:

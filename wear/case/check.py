@@ -4,10 +4,11 @@ key, its value and what the job accepts)."""
 from __future__ import annotations
 
 from wear.case.case import Case
+from wear.case.choices import FEM_KEYS_OF_MODEL
 from wear.case.jobs import JOBS
 from wear.case.work import check_work
 
-__all__ = ["FEM_KEYS_OF_COUPLING", "FEM_KEYS_OF_MODEL", "SOLID_FEM_KEYS", "on_plate", "check_job_case", "fem_keys_read"]
+__all__ = ["FEM_KEYS_OF_COUPLING", "on_plate", "check_job_case", "fem_keys_read"]
 
 #: The ``[fem]`` keys each coupling reads, besides ``fem.model`` and ``fem.coupling``.
 FEM_KEYS_OF_COUPLING: dict[str, tuple[str, ...]] = {
@@ -15,15 +16,12 @@ FEM_KEYS_OF_COUPLING: dict[str, tuple[str, ...]] = {
     "one-way": ("load_steps", "unload_steps", "mesh_scale"),
     "two-way": ("tolerance", "max_iterations", "load_steps", "unload_steps", "overshoot", "mesh_scale"),
 }
-#: The ``[fem]`` keys only the 3-D plate reads (besides those of the axisymmetric coupling it starts from).
-SOLID_FEM_KEYS = ("solid_iterations", "solid_load_steps", "solid_unload_steps")
-#: The ``[fem]`` keys each plate model reads besides its coupling's.
-FEM_KEYS_OF_MODEL: dict[str, tuple[str, ...]] = {"axisymmetric": (), "3d": SOLID_FEM_KEYS}
 
 
 def on_plate(case: Case, model: str, job: str = "run") -> Case:
     """``case`` on the plate ``model`` (one of ``fem.model``'s): the keys only the other plate models read
-    (:data:`FEM_KEYS_OF_MODEL`) back to ``job``'s defaults, as :func:`check_job_case` refuses them at other values."""
+    (:data:`wear.case.choices.FEM_KEYS_OF_MODEL`) back to ``job``'s defaults, as :func:`check_job_case` refuses
+    them at other values."""
     default = JOBS[job].default_case().fem
     others = {key for other, keys in FEM_KEYS_OF_MODEL.items() if other != model for key in keys}
     return case.with_(fem={"model": model, **{key: getattr(default, key) for key in sorted(others)}})

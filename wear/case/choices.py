@@ -7,13 +7,20 @@ from __future__ import annotations
 
 from contact.impact import TANGENTIAL_MODELS as ENGINE_TANGENTIAL_MODELS
 
-__all__ = ["COUPLINGS", "FEM_MODELS", "NORMAL_MODELS", "TANGENTIAL_MODELS", "SCHEMES"]
+__all__ = ["COUPLINGS", "FEM_KEYS_OF_MODEL", "FEM_MODELS", "NORMAL_MODELS", "TANGENTIAL_MODELS", "SCHEMES"]
 
 #: The impact–plate couplings: the impact on the FE plate's own force law, the FE plate along the closed-form
 #: impact, or no FE plate.
 COUPLINGS = ("two-way", "one-way", "none")
-#: The FE plate models: the axisymmetric (r, z) frictionless plate, or the 3-D half plate with Coulomb friction.
-FEM_MODELS = ("axisymmetric", "3d")
+#: The FE plate models, each with the ``[fem]`` keys only it reads besides its coupling's: the axisymmetric (r, z)
+#: frictionless plate, or the 3-D half plate with Coulomb friction (its own cycles and increments, besides those of
+#: the axisymmetric coupling it starts from).
+FEM_KEYS_OF_MODEL: dict[str, tuple[str, ...]] = {
+    "axisymmetric": (),
+    "3d": ("solid_iterations", "solid_load_steps", "solid_unload_steps"),
+}
+#: The FE plate models' names (``fem.model``'s choices).
+FEM_MODELS = tuple(FEM_KEYS_OF_MODEL)
 NORMAL_MODELS = ("hertz", "thornton")
 #: The impact engine's tangential laws (:data:`contact.impact.TANGENTIAL_MODELS`).
 TANGENTIAL_MODELS = tuple(ENGINE_TANGENTIAL_MODELS)

@@ -68,9 +68,9 @@ from contact.theory import speed_components, sphere_mass
 from wear.case import Case
 from wear.chain.axisymmetric_run import impact_wear
 from wear.chain.check import halfspace_check
+from wear.chain.estimate import estimate_impact
 from wear.chain.plate import case_plate, coupling_settings, impact_on_law
 from wear.chain.records import ComputedImpact, ImpactRecord, RepeatResult, yield_strain
-from wear.chain.single import estimate_impact
 from wear.chain.wear_accumulator import WearAccumulator
 from wear.integrate import WearMap, implausible_wear
 

@@ -1,9 +1,12 @@
-"""The axisymmetric plate of a run, and the run without an FE plate (SI units): what a run asks of them
-(:class:`wear.chain.plates.PlateRun`) — their wear, dent, first yield, regime, summary blocks, arrays and meshes."""
+"""The axisymmetric plate of a run, and the run without an FE plate (SI units): the case's impact coupled to it
+(:func:`on_axisymmetric_plate`) and what a run asks of them (:class:`wear.chain.plate_model.PlateRun`) — their
+wear, dent, first yield, regime, summary blocks, arrays and meshes."""
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
+from functools import cached_property
 
 import meshio
 import numpy as np
@@ -11,18 +14,23 @@ import numpy as np
 import fem
 from contact import ImpactResult
 from fem import CoupledImpact, IndentationResult, PlateCycle, worst_regime
-from fem.solid_coupling import SolidCoupledImpact
 from wear.case import Case
-from wear.chain.plate import case_mesh, check_impact_overlap, plate_sliding_speed, wear_constants
+from wear.chain.plate import (
+    case_mesh,
+    case_plate,
+    check_impact_overlap,
+    coupling_settings,
+    impact_on_law,
+    plate_sliding_speed,
+    wear_constants,
+)
+from wear.chain.plate_model import PlateRun, Timed, Wear
 from wear.integrate import WearMap, axisymmetric_wear_depth
-from wear.laws.impact import ImpactWear, wear_of_impact
+from wear.laws.impact import wear_of_impact
 from wear.pressure import PressureHistory, pressure_history
 from wear.surface import DeformedSurface
 
-__all__ = ["AxisymmetricRun", "NoPlateRun", "Wear", "impact_wear", "one_way"]
-
-#: What a plate's wear stage returns: (pressure history, wear map, worn volumes).
-Wear = tuple[PressureHistory, WearMap, ImpactWear]
+__all__ = ["AxisymmetricRun", "NoPlateRun", "impact_wear", "on_axisymmetric_plate", "one_way"]
 
 
 def impact_wear(
@@ -73,8 +81,10 @@ class NoPlateRun:
 
     impact: ImpactResult
     model: str | None = None
-    axisymmetric: AxisymmetricRun | None = None
-    solid: SolidCoupledImpact | None = None
+
+    @property
+    def fields(self) -> Mapping[str, object]:
+        return {}
 
     def wear(self, case: Case) -> Wear:
         return impact_wear(case, self.impact)
@@ -97,7 +107,7 @@ class NoPlateRun:
         return None
 
     def summary_blocks(self) -> dict:
-        return {"plate_3d": None}
+        return {}
 
     def pressure_arrays(self) -> dict[str, np.ndarray]:
         return {}
@@ -107,12 +117,6 @@ class NoPlateRun:
 
     def force_steps(self) -> list[tuple[np.ndarray, np.ndarray, str]]:
         return []
-
-    def start_dent(self) -> tuple[np.ndarray, np.ndarray] | None:
-        return None
-
-    def plastic_section(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, float] | None:
-        return None
 
 
 @dataclass(frozen=True, eq=False)
@@ -128,11 +132,10 @@ class AxisymmetricRun:
     fe_table: tuple[np.ndarray, np.ndarray, np.ndarray]
     radial_table: tuple[np.ndarray, np.ndarray, np.ndarray]
     model: str | None = "axisymmetric"
-    solid: SolidCoupledImpact | None = None
 
-    @property
-    def axisymmetric(self) -> AxisymmetricRun:
-        return self
+    @cached_property
+    def fields(self) -> Mapping[str, object]:
+        return {"fe": self.fe} if self.coupled is None else {"fe": self.fe, "coupling": self.coupled}
 
     def wear(self, case: Case) -> Wear:
         work = None if self.coupled is None else self.coupled.plastic_work
@@ -172,7 +175,7 @@ class AxisymmetricRun:
         }
 
     def summary_blocks(self) -> dict:
-        return {"plate_3d": None}
+        return {}
 
     def pressure_arrays(self) -> dict[str, np.ndarray]:
         if self.coupled is None:
@@ -209,8 +212,26 @@ class AxisymmetricRun:
     def force_steps(self) -> list[tuple[np.ndarray, np.ndarray, str]]:
         return [(np.asarray(self.fe.overlap, float), np.asarray(self.fe.force, float), "FE steps (axisymmetric)")]
 
-    def start_dent(self) -> tuple[np.ndarray, np.ndarray] | None:
-        return None
 
-    def plastic_section(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, float] | None:
-        return None
+def on_axisymmetric_plate(case: Case, estimate: ImpactResult, timed: Timed) -> PlateRun:
+    """The case's impact on the axisymmetric plate, coupled as ``fem.coupling`` says, from ``estimate`` (the impact
+    on the case's own normal law); ``timed`` runs each stage."""
+    mode = case.fem.coupling
+    if mode == "two-way":
+        plate = timed("fem", case_plate, case, (1.0 + case.fem.overshoot) * estimate.max_overlap)
+        settings = coupling_settings(case)
+        coupled = timed("coupling", fem.couple, plate, impact_on_law(case), estimate.max_overlap, settings)
+        return AxisymmetricRun(coupled.impact, coupled.cycle, coupled, coupled.pressure_table, coupled.radial_table)
+    if mode == "one-way":
+        fe = timed("fem", one_way, case, estimate)
+        timed("coupling", lambda: None)
+        rows = fem.contact_pressure(fe.pressure, fe.surface_r, fe.contact_radius)
+        time = np.asarray(fe.time, float)
+        # a plastic rebound separates at an overlap above 0: the plate's steps below it (its recovery once the ball
+        # has left, for the residual dent) all sit at the separation time and carry no impact pressure
+        during = np.r_[True, np.diff(time) > 0.0]
+        r = np.asarray(fe.surface_r, float)
+        table = (time[during], r, rows[during])
+        radial = (time[during], r, np.asarray(fe.radial_displacement, float)[during])
+        return AxisymmetricRun(estimate, fe, None, table, radial)
+    return NoPlateRun(estimate)

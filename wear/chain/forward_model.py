@@ -24,8 +24,8 @@ from contact.theory import sphere_mass
 from wear.case import Case
 from wear.case.budget import check_budget
 from wear.chain.calibration_data import CalibrationData
+from wear.chain.estimate import estimate_arguments, estimate_impact
 from wear.chain.plate import case_plate, coupling_settings, impact_on_law, plate_sliding_speed, wear_constants
-from wear.chain.single import estimate_arguments, estimate_impact
 from wear.law import WearLaw
 from wear.laws.impact import closed_form_volume, impact_wear
 from wear.laws.local import local_volume, pressed_area

@@ -4,17 +4,25 @@ the run's result and its repeat.csv columns. SI units."""
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Protocol
 
+import meshio
 import numpy as np
 
-import fem
 from contact import ImpactResult
 from fem import CoupledImpact
-from fem.solid.plate import SolidPlate
 from wear.case import Case
 from wear.integrate import WearMap
 
-__all__ = ["CSV_COLUMNS", "ComputedImpact", "ImpactRecord", "RepeatResult", "yield_strain"]
+__all__ = ["CSV_COLUMNS", "ComputedImpact", "ImpactRecord", "PlateState", "RepeatResult", "yield_strain"]
+
+
+class PlateState(Protocol):
+    """The FE plate a repeat leaves after an impact, as the outputs ask for it."""
+
+    def to_meshio(self) -> meshio.Mesh:
+        """The plate as it is now (its mesh, deformed, with its fields)."""
+        ...
 
 
 @dataclass(frozen=True)
@@ -116,8 +124,9 @@ class ComputedImpact:
 
 @dataclass(frozen=True, eq=False)
 class RepeatResult:
-    """``records`` (:class:`ImpactRecord` per computed impact or block), ``plate`` (the :class:`fem.Plate`, or on the
-    3-D plate the :class:`fem.solid.plate.SolidPlate`, after the last impact), ``wear`` (cumulative 2-D
+    """``records`` (:class:`ImpactRecord` per computed impact or block), ``plate`` (the FE plate after the last
+    impact, :class:`PlateState`: the :class:`fem.Plate`, or on the 3-D plate the
+    :class:`fem.solid.plate.SolidPlate`), ``wear`` (cumulative 2-D
     :class:`wear.WearMap` on the first impact's grid, padded),
     ``shakedown_impact`` (first impact with Δᾱ below the tolerance, or None), ``computed`` (number of impacts
     solved), ``wall_time`` (s), ``notes``, ``axis_x`` (m: x of the FE axis, the dent centre, in the wear map's
@@ -130,7 +139,7 @@ class RepeatResult:
 
     case: Case
     records: list[ImpactRecord]
-    plate: fem.Plate | SolidPlate
+    plate: PlateState
     wear: WearMap
     shakedown_impact: int | None
     computed: int

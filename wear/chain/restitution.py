@@ -9,8 +9,8 @@ import numpy as np
 import fem
 from contact.theory import thornton_restitution, yield_velocity
 from wear.case import Case
+from wear.chain.estimate import estimate_impact
 from wear.chain.plate import case_plate, coupling_settings, impact_on_law
-from wear.chain.single import estimate_impact
 
 __all__ = ["RestitutionSweep", "restitution_sweep"]
 

@@ -32,14 +32,16 @@ import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from contact import ImpactResult, Material, effective_modulus, simulate_impact
+from contact import ImpactResult, Material, effective_modulus
 from contact.theory import PAPER_YIELD_COEFFICIENT, first_yield, speed_components, sphere_mass, yield_velocity
 from fem import CoupledImpact, PlateCycle
 from fem.axisymmetric.result import IndentationResult
 from fem.solid_coupling import SolidCoupledImpact
 from wear.case import JOBS, Case
 from wear.case.work import check_work
-from wear.chain.plates import PlateRun, couple_plate, prepare_case
+from wear.chain.estimate import estimate_impact
+from wear.chain.plate_model import PlateRun
+from wear.chain.plates import couple_plate, prepare_case
 from wear.integrate import WearMap, implausible_wear
 from wear.laws import local
 from wear.laws.impact import ImpactWear
@@ -50,8 +52,6 @@ from wear.surface import DeformedSurface
 __all__ = [
     "RunResult",
     "run",
-    "estimate_arguments",
-    "estimate_impact",
     "speed_ratio",
     "STAGES",
 ]
@@ -65,7 +65,7 @@ class RunResult:
     """Everything one :func:`run` produced (SI units).
 
     ``estimate`` (the impact on the case's own normal model), ``impact`` (:class:`contact.ImpactResult`, the final
-    impact: coupled if two-way), ``plate`` (the plate the impact acted on, :class:`wear.chain.plates.PlateRun`:
+    impact: coupled if two-way), ``plate`` (the plate the impact acted on, :class:`wear.chain.plate_model.PlateRun`:
     what the outputs and figures ask for), ``pressure`` (:class:`wear.PressureHistory`), ``wear``
     (:class:`wear.WearMap`), ``worn`` (the wear law's volumes by mechanism, :class:`wear.laws.impact.ImpactWear`),
     ``surface`` (:class:`wear.surface.DeformedSurface`), ``yield_info`` (dict: ``F_y_paper`` Eq. 18 with C = 1.6,
@@ -95,19 +95,17 @@ class RunResult:
     @property
     def fe(self) -> PlateCycle | IndentationResult | None:
         """The axisymmetric plate's cycle (two-way) or indentation (one-way), None without one."""
-        axisymmetric = self.plate.axisymmetric
-        return None if axisymmetric is None else axisymmetric.fe
+        return self.plate.fields.get("fe")
 
     @property
     def coupling(self) -> CoupledImpact | None:
         """The impact coupled to the axisymmetric plate (two-way), None otherwise."""
-        axisymmetric = self.plate.axisymmetric
-        return None if axisymmetric is None else axisymmetric.coupled
+        return self.plate.fields.get("coupling")
 
     @property
     def solid(self) -> SolidCoupledImpact | None:
         """The impact coupled to the 3-D plate, None on another plate."""
-        return self.plate.solid
+        return self.plate.fields.get("solid")
 
     def summary(self) -> dict:
         """The numbers of summary.json (without versions; the writer adds them)."""
@@ -169,14 +167,14 @@ class RunResult:
                 "model": self.fem_model or "axisymmetric",
             },
             "coupling": self.plate.coupling_summary(self.estimate),
-            "plate_3d": blocks["plate_3d"],
+            "plate_3d": blocks.get("plate_3d"),
             "stage_times_s": dict(self.stage_times),
         }
 
 
 def _yield_info(case: Case, ball: Material, plate: Material) -> dict:
     """First yield by the closed forms (N, m/s); the plate the impact ran on adds its own
-    (:meth:`wear.chain.plates.PlateRun.yield_info`)."""
+    (:meth:`wear.chain.plate_model.PlateRun.yield_info`)."""
     info: dict[str, float | str | None] = {
         "F_y_paper": None,
         "F_c_exact": None,
@@ -191,22 +189,6 @@ def _yield_info(case: Case, ball: Material, plate: Material) -> dict:
         info["F_c_exact"] = first_yield(R, e_star, Y, plate.nu).force
         info["V_y"] = yield_velocity(R, ball, plate)
     return info
-
-
-def estimate_arguments(case: Case, **overrides) -> dict:
-    """:func:`contact.simulate_impact`'s arguments for the case's impact on its own normal model
-    (``impact.normal_model``; Thornton's law is Hertz's when nothing yields), ``overrides`` replacing some."""
-    args = case.impact_arguments(**overrides)  # checks the time step for the histories, if asked for
-    thornton = args["normal_model"] == "thornton" and "normal_model" not in overrides
-    if thornton and not args["plate"].yield_strength and not args["ball"].yield_strength:
-        args["normal_model"] = "hertz"  # nothing yields: Thornton's law is Hertz
-    return args
-
-
-def estimate_impact(case: Case, **overrides) -> ImpactResult:
-    """The impact of ``case`` on its own normal model, with its histories (:func:`estimate_arguments`): the impact
-    of an uncoupled run and the first estimate of a coupled one."""
-    return simulate_impact(**estimate_arguments(case, history=True, **overrides))
 
 
 def run(case: Case, progress: Callable[[str], None] | None = None) -> RunResult:

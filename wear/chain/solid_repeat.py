@@ -49,10 +49,11 @@ from fem.force_law import reloading_law
 from fem.solid.plate import SolidPlate
 from fem.solid_coupling import SolidCoupledImpact, couple_solid_plate, impact_path
 from wear.case import Case, RepeatSpec
+from wear.chain.axisymmetric_run import on_axisymmetric_plate
+from wear.chain.estimate import estimate_impact
 from wear.chain.plate import impact_on_law
-from wear.chain.plates import PLATES, untimed
+from wear.chain.plate_model import untimed
 from wear.chain.records import ImpactRecord, RepeatResult, yield_strain
-from wear.chain.single import estimate_impact
 from wear.chain.solid import check_solid_case, solid_case, solid_settings, solid_wear
 from wear.chain.wear_accumulator import WearAccumulator
 from wear.solid_wear import solid_dent_depth
@@ -90,7 +91,7 @@ def check_solid_repeat(case: Case) -> None:
 
 def _first_impact(case: Case):
     """The 3-D coupling's start: the case's impact coupled to a virgin axisymmetric plate (as :func:`wear.run`)."""
-    return PLATES["axisymmetric"].couple(case, estimate_impact(case), untimed).impact
+    return on_axisymmetric_plate(case, estimate_impact(case), untimed).impact
 
 
 def _next_start(on_law: Callable[[TabulatedLaw], ImpactResult], coupled: SolidCoupledImpact) -> ImpactResult:

@@ -118,7 +118,7 @@ def cross_sections(result, path) -> Path:
     the axisymmetric plate's dent it started from, centred at the same point."""
     s = result.surface
     axisymmetric = None
-    start = result.plate.start_dent()
+    start = result.plate.fields.get("start_dent")
     if start is not None:
         r_fe, h_fe = start
 
@@ -178,7 +178,7 @@ def plastic_zone(result, path, reach: float = 3.0) -> Path:
     after the impact (reference configuration): filled contours over the triangles the elements' faces tile the
     plane with (so the field fills the section up to the surface z = 0, where the strain is largest), within
     ``reach`` × the largest contact radius of the dent centre; the elastic–plastic boundary as a line."""
-    points, triangles, strain, a = result.plate.plastic_section()
+    points, triangles, strain, a = result.plate.fields["plastic_section"]
     nodal = cell_field_on_nodes(points, triangles, strain)
     plastic = cell_field_on_nodes(points, triangles, (strain > 0.0).astype(float))
     x0 = result.surface.dent_centre[0]
@@ -230,6 +230,6 @@ def write_run_figures(result, folder: str | os.PathLike) -> list[Path]:
         wear_map(result, folder / "wear_map.png"),
         cross_sections(result, folder / "cross_sections.png"),
     ]
-    if result.plate.plastic_section() is not None:
+    if "plastic_section" in result.plate.fields:
         paths.append(plastic_zone(result, folder / "plastic_zone.png"))
     return paths

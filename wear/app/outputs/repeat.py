@@ -19,12 +19,10 @@ from pathlib import Path
 
 import numpy as np
 
-import fem
-from fem.solid.plate import SolidPlate
 from wear.app.figures.repeat import plot_repeat
 from wear.app.outputs.writer import versions, write_csv, write_mesh, write_npz, write_pvd, write_summary
 from wear.case import JOBS
-from wear.chain.records import RepeatResult
+from wear.chain.records import PlateState, RepeatResult
 from wear.integrate import WearMap
 
 __all__ = ["ENTRIES", "RepeatWriter", "wear_map_arrays"]
@@ -50,12 +48,12 @@ class RepeatWriter:
         self.computed = 0
         (out / "frames").mkdir()
 
-    def _frame(self, impact: int, plate: fem.Plate | SolidPlate) -> None:
+    def _frame(self, impact: int, plate: PlateState) -> None:
         name = f"frames/plate_{impact:06d}.vtu"
         write_mesh(self.out / name, plate.to_meshio())
         self.entries.append((float(impact), name))
 
-    def on_computed(self, impact: int, plate: fem.Plate | SolidPlate) -> None:
+    def on_computed(self, impact: int, plate: PlateState) -> None:
         """After each computed impact (``impact``: its number)."""
         self.computed += 1
         if self.save_every and (self.computed == 1 or self.computed % self.save_every == 0):
