@@ -262,7 +262,7 @@ def simulate_impact(
     history: bool = True,
     history_every: int = 1,
 ) -> ImpactResult:
-    r"""Simulate one impact of a ball on a plate: the H-DD model (errata Eqs. 1–13), the batch of one of
+    r"""Simulate one impact of a ball on a plate: the H-DD model (errata equations 1–13), the batch of one of
     :func:`simulate_impacts`.
 
     Parameters
