@@ -101,3 +101,47 @@ def test_converted_pages_have_no_plain_text_maths():
     docs = Path(__file__).resolve().parents[1] / "docs"
     found = {n: build_checks._plain_math((docs / n).read_text(encoding="utf-8")) for n in build_checks.MATH_PAGES}
     assert not any(found.values()), found
+
+
+LONG = "x" * 89
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        f"```python\nr = simulate_impact(radius=2.5e-3)  # {LONG}\n```",
+        f"```bash\nimpactwear wall records/ case/ --set {LONG}\n```",
+        f"```toml\nfree = [{LONG}]\n```",
+        f"```text\nwear/app/   {LONG}\n```",
+        f"```\nwear/app/   {LONG}\n```",
+        f"```console\n$ impactwear {LONG}\nprinted\n```",
+        f"```console\n$ impactwear wall a b \\\n    --set {LONG}\nprinted\n```",
+        f"````{{note}}\n:class: dropdown\n```python\n{LONG}\n```\n````",
+        f"```{{code-block}} python\n{LONG}\n```",
+    ],
+)
+def test_long_code_line_is_reported(text):
+    found = build_checks._long_code_lines("A page.\n\n" + text)
+    assert len(found) == 1 and "code line of" in found[0], found
+
+
+def test_printed_output_and_prose_are_not_reported(tmp_path, caplog):
+    text = (
+        f"A prose line {LONG}, not code.\n\n"
+        f"```console\n$ impactwear wall a b \\\n    --out bend\nwall: {LONG}\n  eroded {LONG}\n```\n\n"
+        f"```output\n(    x    y {LONG})\n```\n\n```python\nx = 1  # {'y' * 78}\n```\n\n"
+        f"```{{figure}} figures/{LONG}.png\n```\n"
+    )
+    assert build_checks._long_code_lines(text) == []
+    app, _ = _site(tmp_path, {})
+    (Path(app.srcdir) / "page.md").write_text(text + f"\n```bash\n{LONG}\n```\n", encoding="utf-8")
+    build_checks._check_code_lines(app)
+    assert _warnings(caplog) == [
+        "page.md, line 22: code line of 89 characters: " + repr(LONG[:40]) + "… (longer than 88: it scrolls)"
+    ]
+
+
+def test_pages_have_no_long_code_lines():
+    docs = Path(__file__).resolve().parents[1] / "docs"
+    found = {p.name: build_checks._long_code_lines(p.read_text(encoding="utf-8")) for p in docs.glob("*.md")}
+    assert not any(found.values()), {name: lines for name, lines in found.items() if lines}

@@ -20,6 +20,13 @@
   ``(k/n)^{3/2}``), ``√``,
   ``_{``, a subscript between letters (``p_max``, ``e_n``) or a Unicode subscript (``p₀``). Code, maths, links,
   URLs and file names are not searched. Write ``$p_{\\max}$``; a name of the code goes in backticks.
+- **No code line scrolls sideways**: in the Markdown pages (``docs/*.md``), a line of a code block (a fence of
+  any language, ``python``, ``bash``, ``toml``, ``text``, none, or ``{code-block}``; fences inside a note or other
+  admonition too) longer than :data:`LONGEST_CODE_LINE` characters is reported. Break a command with a final ``\\``, a
+  Python line inside parentheses, a TOML array over lines. A program's printed output is exempt, as it prints it
+  (a wrapped copy would not be what it prints): in a ``console`` block the lines that are not commands (a command
+  starts with ``$ ``, and runs on after a line ending in ``\\``), and an ``output`` block (a program's output or a
+  file's lines, verbatim). The gallery's examples (``examples/*.py``) are not searched.
 """
 
 from __future__ import annotations
@@ -160,6 +167,52 @@ def _check_plain_math(app) -> None:
             logger.warning(f"{name}, {problem}: plain-text maths outside a math role (write $...$)")
 
 
+#: The longest code line (characters) of a page's code block: the line length of the project's code (ruff), and
+#: about what the theme's code blocks show without a scroll bar.
+LONGEST_CODE_LINE = 88
+#: Fences that are not code: directives whose body is not shown as a code block.
+_CODE_DIRECTIVES = re.compile(r"^\{(?:code|code-block|sourcecode|code-cell)\}")
+
+
+def _long_code_lines(text: str, first_line: int = 0) -> list[str]:
+    """The lines over :data:`LONGEST_CODE_LINE` characters of a Markdown ``text``'s code blocks, except printed
+    output (a ``console`` block's lines that are not commands, an ``output`` block)."""
+    parser = MarkdownIt("commonmark").enable("table").use(dollarmath_plugin)
+    found = []
+    for block in parser.parse(text):
+        if block.type not in ("fence", "code_block"):
+            continue
+        info = block.info.strip()
+        start = first_line + (block.map[0] + 1 if block.map else 0)
+        if _PROSE_DIRECTIVES.match(info):
+            body = "\n".join("" if re.match(r"^:\w[\w-]*:", ln) else ln for ln in block.content.splitlines())
+            found += _long_code_lines(body, start)
+            continue
+        if info.startswith("{") and not _CODE_DIRECTIVES.match(info):
+            continue  # toctree, include, figure, eval-rst...: not a code block of the page
+        language = info.split("}")[-1].split()[0] if info.split("}")[-1].split() else ""
+        if language == "output":
+            continue
+        command = False  # a console block's command, which runs on after a line ending in a backslash
+        for k, line in enumerate(block.content.splitlines()):
+            if language == "console":
+                command = line.startswith("$") or command
+                if not command:
+                    continue
+                command = line.rstrip().endswith("\\")
+            if len(line) > LONGEST_CODE_LINE:
+                where = start + k + (block.type == "fence")
+                found.append(f"line {where}: code line of {len(line)} characters: {line[:40]!r}…")
+    return found
+
+
+def _check_code_lines(app) -> None:
+    srcdir = Path(app.srcdir)
+    for page in sorted(srcdir.glob("*.md")):
+        for problem in _long_code_lines(page.read_text(encoding="utf-8")):
+            logger.warning(f"{page.relative_to(srcdir)}, {problem} (longer than {LONGEST_CODE_LINE}: it scrolls)")
+
+
 #: A Python warning as ``warnings`` prints it (``file.py:12: UserWarning: text``).
 _PYTHON_WARNING = re.compile(r"\b[A-Z]\w*Warning: ")
 #: A traceback (a doctest of an error shows one on purpose: only what an example printed is searched).
@@ -223,6 +276,7 @@ def check_build(app, exception: Exception | None) -> None:
     _check_machine_text(app, pages)
     _check_gallery_figures(app)
     _check_plain_math(app)
+    _check_code_lines(app)
 
 
 def setup(app) -> dict:
