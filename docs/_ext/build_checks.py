@@ -104,11 +104,19 @@ def _emphasis_problems(text: str) -> list[str]:
     return problems
 
 
-def _check_emphasis(app) -> None:
+def _warn_on_pages(app, names, find, why: str = "") -> None:
+    """A warning for each problem ``find`` (a function of a page's Markdown text) reports on the pages ``names``
+    (relative to the source folder; None: every page), each naming its page and ending in ``why``."""
     srcdir = Path(app.srcdir)
-    for page in sorted(srcdir.glob("*.md")):
-        for problem in _emphasis_problems(page.read_text(encoding="utf-8")):
-            logger.warning(f"{page.relative_to(srcdir)}, {problem}")
+    if names is None:
+        names = sorted(str(page.relative_to(srcdir)) for page in srcdir.glob("*.md"))
+    for name in names:
+        for problem in find((srcdir / name).read_text(encoding="utf-8")):
+            logger.warning(f"{name}, {problem}{why}")
+
+
+def _check_emphasis(app) -> None:
+    _warn_on_pages(app, None, _emphasis_problems)
 
 
 def _long_italics(text: str) -> list[str]:
@@ -161,10 +169,7 @@ def _plain_math(text: str, first_line: int = 0) -> list[str]:
 
 
 def _check_plain_math(app) -> None:
-    srcdir = Path(app.srcdir)
-    for name in MATH_PAGES:
-        for problem in _plain_math((srcdir / name).read_text(encoding="utf-8")):
-            logger.warning(f"{name}, {problem}: plain-text maths outside a math role (write $...$)")
+    _warn_on_pages(app, MATH_PAGES, _plain_math, ": plain-text maths outside a math role (write $...$)")
 
 
 #: The longest code line (characters) of a page's code block: the line length of the project's code (ruff), and
@@ -207,10 +212,7 @@ def _long_code_lines(text: str, first_line: int = 0) -> list[str]:
 
 
 def _check_code_lines(app) -> None:
-    srcdir = Path(app.srcdir)
-    for page in sorted(srcdir.glob("*.md")):
-        for problem in _long_code_lines(page.read_text(encoding="utf-8")):
-            logger.warning(f"{page.relative_to(srcdir)}, {problem} (longer than {LONGEST_CODE_LINE}: it scrolls)")
+    _warn_on_pages(app, None, _long_code_lines, f" (longer than {LONGEST_CODE_LINE}: it scrolls)")
 
 
 #: A Python warning as ``warnings`` prints it (``file.py:12: UserWarning: text``).
