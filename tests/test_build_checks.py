@@ -145,3 +145,34 @@ def test_pages_have_no_long_code_lines():
     docs = Path(__file__).resolve().parents[1] / "docs"
     found = {p.name: build_checks._long_code_lines(p.read_text(encoding="utf-8")) for p in docs.glob("*.md")}
     assert not any(found.values()), {name: lines for name, lines in found.items() if lines}
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "**2026-11-27, side by side in one run**: 121.3 s",
+        "the code before the speed-ups (main at 0c54ec7) 285.3 s",
+        "| a wall's erosion (2026-11-28, load 0.04) | 30 s |",
+        "```bash\ngit checkout 3f2a9c1d8e\n```",
+        "fixed in a1b2c3d.",
+    ],
+)
+def test_dated_measurement_or_commit_hash_is_reported(text):
+    assert len(build_checks._record_text("A page.\n\n" + text)) == 1, build_checks._record_text(text)
+
+
+def test_numbers_urls_and_words_are_not_reported():
+    text = (
+        "OpenFOAM v1912 (1912.200626), 1.000000e-03 and 0.000000e+00, 6.60e-15 m³, 1e-13…1e-10, 2026 and 11-27,\n"
+        "a decade, deadbeef, fig06_spin.png, <https://example.org/commit/0c54ec7a/2026-11-27>, 10⁴ impacts.\n"
+    )
+    assert build_checks._record_text(text) == []
+
+
+def test_record_pages_and_changelog_are_exempt(tmp_path, caplog):
+    app, _ = _site(tmp_path, {})
+    for name in ("fem.md", "fem-record.md", "changelog.md"):
+        (Path(app.srcdir) / name).write_text("Measured 2026-11-27 at 0c54ec7.\n", encoding="utf-8")
+    build_checks._check_record_text(app)
+    found = _warnings(caplog)
+    assert len(found) == 2 and all(w.startswith("fem.md, line 1: ") for w in found), found

@@ -27,6 +27,11 @@
   (a wrapped copy would not be what it prints): in a ``console`` block the lines that are not commands (a command
   starts with ``$ ``, and runs on after a line ending in ``\\``), and an ``output`` block (a program's output or a
   file's lines, verbatim). The gallery's examples (``examples/*.py``) are not searched.
+- **Reference apart from record**: a page of the user guide, the reference or the results (every page but the
+  development record's, ``*-record.md``, and the changelog: :data:`RECORD_PAGES`) is reported if it holds an ISO
+  date (``2026-11-27``: a dated measurement) or a commit hash (7 to 40 hexadecimal characters with a digit and a
+  letter, ``0c54ec7``), outside URLs. What was tried and when, and dated timings, go to a record page; the page
+  keeps the current numbers and links to the record.
 """
 
 from __future__ import annotations
@@ -215,6 +220,34 @@ def _check_code_lines(app) -> None:
     _warn_on_pages(app, None, _long_code_lines, f" (longer than {LONGEST_CODE_LINE}: it scrolls)")
 
 
+#: The pages exempt from the record check: the development record (``*-record.md``) and the changelog, which
+#: hold the dated history on purpose.
+RECORD_PAGES = re.compile(r"(?:-record|^changelog)\.md$")
+#: An ISO date (``2026-11-27``), a whole word.
+_ISO_DATE = re.compile(r"(?<![\w-])\d{4}-(?:0[1-9]|1[0-2])-(?:0[1-9]|[12]\d|3[01])(?![\w-])")
+#: A commit hash: 7 to 40 hexadecimal characters with at least one digit and one letter, a whole word (not part of
+#: a number such as ``1.000000e-03``).
+_COMMIT_HASH = re.compile(r"(?<![\w.+-])(?=[0-9a-fA-F]*\d)(?=[0-9a-fA-F]*[a-fA-F])[0-9a-fA-F]{7,40}(?![\w+-]|\.\w)")
+#: A URL (its path may hold a date or a hash legitimately).
+_URL = re.compile(r"(?:https?|ftp)://\S+|www\.\S+")
+
+
+def _record_text(text: str) -> list[str]:
+    """The ISO dates and commit hashes of a Markdown ``text`` outside URLs: what belongs on a record page."""
+    found = []
+    for number, line in enumerate(text.splitlines(), start=1):
+        line = _URL.sub(" ", line)
+        found += [f"line {number}: date {m.group()!r}" for m in _ISO_DATE.finditer(line)]
+        found += [f"line {number}: commit hash {m.group()!r}" for m in _COMMIT_HASH.finditer(line)]
+    return found
+
+
+def _check_record_text(app) -> None:
+    names = sorted(p.name for p in Path(app.srcdir).glob("*.md") if not RECORD_PAGES.search(p.name))
+    why = ": a dated measurement or a commit hash belongs on a development-record page (*-record.md)"
+    _warn_on_pages(app, names, _record_text, why)
+
+
 #: A Python warning as ``warnings`` prints it (``file.py:12: UserWarning: text``).
 _PYTHON_WARNING = re.compile(r"\b[A-Z]\w*Warning: ")
 #: A traceback (a doctest of an error shows one on purpose: only what an example printed is searched).
@@ -279,6 +312,7 @@ def check_build(app, exception: Exception | None) -> None:
     _check_gallery_figures(app)
     _check_plain_math(app)
     _check_code_lines(app)
+    _check_record_text(app)
 
 
 def setup(app) -> dict:
