@@ -99,7 +99,7 @@ def test_second_impact_reaches_the_same_answer_from_the_reloading_law_in_fewer_c
     the dented plate's reloading law (:func:`fem.force_law.reloading_law`), it converges to the same δ_max and e_t
     within the coupling's tolerance (0.005: relative for δ_max, absolute for e_t), e_n and the dent within 0.5%, the
     wear (not in the coupling's measure: it follows the slip history) within 5%; the reloading start needs fewer 3-D
-    plate cycles (here 2 against 3, e_n 0.9140 against 0.9144, e_t 0.6216 against 0.6218; docs/repeat.md for the
+    plate cycles (here 2 against 3, e_n 0.9140 against 0.9144, e_t 0.6216 against 0.6218; docs/repeat-record.md for the
     default mesh)."""
     result, calls, couplings, plates = oblique_couplings
     on_law, _, _, settings, offset = calls[1]
