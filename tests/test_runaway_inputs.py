@@ -303,9 +303,9 @@ def test_default_cases_fit_and_the_element_estimate_bounds_the_meshes():
 
 def test_three_d_plate_runaways_refused_and_the_measured_runs_fit(tmp_path, capsys):
     """The 3-D plate's estimate (wear.case.work): its default run and the 5-impact repeat that was measured (33 min,
-    docs/repeat.md) pass; 200 load increments or a mesh twice as fine are refused naming the key and the value that
-    fits (counted up here from the same estimate); its element count is within its stated band of the blocks the
-    plate is built on (generated here, oblique track ±0.3 a_max)."""
+    docs/repeat-record.md) pass; 200 load increments or a mesh twice as fine are refused naming the key and the
+    value that fits (counted up here from the same estimate); its element count is within its stated band of the
+    blocks the plate is built on (generated here, oblique track ±0.3 a_max)."""
     solid = default_case("run").with_(fem={"model": "3d"})
     check_job_case(solid, "run")
     check_job_case(default_case("repeat").with_(fem={"model": "3d"}, repeat={"impacts": 5}), "repeat")
