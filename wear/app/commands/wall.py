@@ -30,8 +30,6 @@ from wear.app.commands.common import (
 )
 from wear.app.outputs.folder import check_output_folder
 from wear.app.outputs.wall import ENTRIES, write_wall
-from wear.case import JOBS
-from wear.wall.case_keys import check_law_keys
 from wear.wall.component import erode_component, read_wall
 from wear.wall.hits import NORMALS
 
@@ -94,7 +92,6 @@ def main(args: argparse.Namespace) -> int:
         if not Path(path).exists():
             raise ValueError(f"{'records' if key == 'records' else 'wall'}={path!r}: no such file or folder")
     check_scheduler_address(args.scheduler)
-    check_law_keys(case, JOBS["wall"].default_case())
     patches = _patches(args.patches)
     check_output_folder(args.out, "wall", ENTRIES)
     wall = read_wall(case.wall.surface, patches, flip=args.flip)
