@@ -165,6 +165,8 @@ def test_wall_options_reach_the_worker_processes(flat, tmp_path, workers):
     kept = erode_wall(chunks, wall, law, near, progress=False)
     assert kept.skipped == {"leaving_wall": 1} and kept.records.sum() == 4
     if workers == 1:  # the refusals, as the worker would raise them
+        with pytest.raises(ValueError, match=r"^options=2 is not a wear\.wall\.options\.WallOptions"):
+            erode_wall(chunks, wall, law, 2, progress=False)  # the workers in the options' place
         with pytest.raises(ValueError, match="--skip-bad"):
             erode_wall(chunks, wall, law, WallOptions(), progress=False)
         with pytest.raises(ValueError, match="normal='recorded': the records of .* carry no normal"):

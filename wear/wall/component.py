@@ -293,7 +293,7 @@ def _check_arguments(case: Case, wall: Wall, options: WallOptions) -> None:
     if isinstance(wall, (str, os.PathLike)):
         raise ValueError(f"wall={str(wall)!r} is a path: give the Wall it holds, wear.wall.read_wall({str(wall)!r})")
     check_instance("wall", wall, Wall, "a wear.wall.Wall: wear.wall.read_wall(path)")
-    check_instance("options", options, WallOptions, "a wear.wall.WallOptions(workers=..., skip_bad=..., ...)")
+    check_instance("options", options, WallOptions, "a wear.wall.options.WallOptions(workers=..., skip_bad=..., ...)")
     check_law_keys(case, default_case("wall"))
 
 

@@ -38,6 +38,7 @@ from functools import cached_property
 
 import numpy as np
 
+from contact.checks import check_instance
 from wear.case.budget import check_budget, memory_budget
 from wear.case.progress import progress_bar
 from wear.case.workers import bound_workers, dask_client, machine_cores, worker_pool
@@ -276,6 +277,7 @@ def erode_wall(
     edges of the angle bins (deg from the normal, increasing from 0 to 90). A bad record raises ``ValueError`` naming
     its file and row; a plan whose chunks would not fit the memory budget is refused before any work."""
     options = WallOptions() if options is None else options
+    check_instance("options", options, WallOptions, "a wear.wall.options.WallOptions(workers=..., skip_bad=..., ...)")
     workers, scheduler = options.workers, options.scheduler
     edges = np.asarray(histogram_bins_deg, float)
     if len(edges) < 2 or edges[0] != 0.0 or edges[-1] != 90.0 or np.any(np.diff(edges) <= 0):

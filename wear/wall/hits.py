@@ -72,7 +72,7 @@ def hits_on_wall(
     )
     check_instance("wall", wall, Wall, "a wear.wall.Wall: wear.wall.read_wall(path)")
     options = WallOptions() if options is None else options
-    check_instance("options", options, WallOptions, "a wear.wall.WallOptions")
+    check_instance("options", options, WallOptions, "a wear.wall.options.WallOptions")
     normal = options.normal or ("recorded" if records.normal is not None else "face")
     if normal == "recorded" and records.normal is None:
         raise ValueError(f"normal='recorded': the records of {records.files[0]} carry no normal; use normal='face'")
