@@ -42,6 +42,7 @@ from wear.wall.engine import DEFAULT_ANGLE_EDGES_DEG, chunk_sums, erode_wall
 from wear.wall.grid import face_grid
 from wear.wall.locate import nearest_faces
 from wear.wall.mesh import Wall
+from wear.wall.options import WallOptions
 from wear.wall.records import ImpactRecords
 from wear.wall.sources import plan_chunks
 
@@ -318,10 +319,10 @@ def main(argv: list[str] | None = None) -> int:
             # the fixed cost of a run: the pool's start (spawned processes importing the toolkit) and each
             # worker's first chunk (the wall's grid, numba's cached kernels): two chunks of 1000 impacts
             t0 = time.perf_counter()
-            erode_wall(tiny, wall, finnie, workers=workers, progress=False)
+            erode_wall(tiny, wall, finnie, WallOptions(workers=workers), progress=False)
             fixed[workers] = time.perf_counter() - t0
             t0 = time.perf_counter()
-            sums = erode_wall(part, wall, finnie, workers=workers, progress=False)
+            sums = erode_wall(part, wall, finnie, WallOptions(workers=workers), progress=False)
             times[workers] = time.perf_counter() - t0
             assert sums.records.sum() == rows
         steady = (times[1] - fixed[1]) / (times[2] - fixed[2])
@@ -335,7 +336,7 @@ def main(argv: list[str] | None = None) -> int:
         del impacts, points, angle, speed, face, distance
         peak = PeakMemory()
         t0 = time.perf_counter()
-        sums = erode_wall(chunks, wall, finnie, workers=2, progress=sys.stderr.isatty())
+        sums = erode_wall(chunks, wall, finnie, WallOptions(workers=2), progress=sys.stderr.isatty())
         seconds = time.perf_counter() - t0
         own, children = peak.stop()
         assert sums.records.sum() == total

@@ -20,6 +20,8 @@ from typing import Any
 import numpy as np
 
 __all__ = [
+    "FRICTION_MAX",
+    "check_friction",
     "check_number",
     "check_choice",
     "check_array",
@@ -30,6 +32,16 @@ __all__ = [
     "fmt_argument",
     "fmt_value",
 ]
+
+
+#: The largest Coulomb friction coefficient μ taken anywhere: the impact (:func:`contact.simulate_impacts`), the
+#: case's ``impact.friction``, the erosion's response and the 3-D plate (:func:`fem.indent_solid`). Dry metal and
+#: ceramic pairs in air reach about 1; a larger ratio of tangential to normal force is adhesion (clean metals in
+#: vacuum, junction growth), not the load-proportional law μ stands for. The bound is the law's, not a solver's: the
+#: 3-D plate's Newton converges on an elastic plate in full slip at μ = 1.5 too
+#: (measured).
+FRICTION_MAX = 1.0
+_FRICTION = "Coulomb friction coefficient"
 
 
 def fmt_value(value: Any) -> str:
@@ -88,6 +100,20 @@ def check_number(
     if bad:
         raise ValueError(f"{name}={fmt_value(x)} is out of range: {label}must be {rng}{unit}{tail}")
     return x
+
+
+def check_friction(name: str, value: Any) -> Any:
+    """``value`` as a Coulomb friction coefficient μ in [0, :data:`FRICTION_MAX`] (dimensionless): a float for a
+    number, a float array of its shape for an array (every entry checked), else a one-line ``ValueError`` naming
+    ``name`` and the first bad value, worded alike for both."""
+    if np.ndim(value) == 0:
+        scalar = value[()] if isinstance(value, np.ndarray) else value
+        return check_number(name, scalar, low=0.0, high=FRICTION_MAX, what=_FRICTION)
+    array = check_array(name, value, what=_FRICTION, ndim=np.ndim(value))
+    bad = np.flatnonzero((array < 0.0) | (array > FRICTION_MAX))
+    if len(bad):
+        check_number(name, float(array.flat[bad[0]]), low=0.0, high=FRICTION_MAX, what=_FRICTION)
+    return array
 
 
 def check_choice(name: str, value: Any, choices: Iterable[str]) -> str:

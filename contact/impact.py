@@ -83,8 +83,8 @@ def simulate_impacts(
     angle
         Impact angle θ from the plate normal (deg), in [0, 90); scalar or array.
     friction
-        Coulomb friction coefficient μ, in [0, 10]; scalar or array. ``speed``, ``angle`` and ``friction`` are
-        broadcast together to the batch shape (flattened).
+        Coulomb friction coefficient μ, in [0, 1] (:data:`contact.checks.FRICTION_MAX`); scalar or array.
+        ``speed``, ``angle`` and ``friction`` are broadcast together to the batch shape (flattened).
     restitution
         Normal restitution e in (0, 1] that sets the Hertz dashpot (errata Eq. 6); 1 = no damping.
     normal_model
@@ -276,7 +276,7 @@ def simulate_impact(
     angle
         Impact angle θ from the plate normal (deg), in [0, 90).
     friction
-        Coulomb friction coefficient μ, in [0, 10].
+        Coulomb friction coefficient μ, in [0, 1] (:data:`contact.checks.FRICTION_MAX`).
     restitution
         Normal restitution e in (0, 1] that sets the Hertz dashpot (errata Eq. 6); 1 = no damping.
     normal_model

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from contact import engine, laws, theory
-from contact.checks import check_array, check_bool, check_choice, check_number
+from contact.checks import check_array, check_bool, check_choice, check_friction, check_number
 from contact.materials import Material, effective_modulus, effective_shear_modulus
 from contact.tabulated import TabulatedLaw
 from contact.timestep import MAX_CONTACT_TIMES, STEPS_PER_CONTACT, check_time_step
@@ -203,7 +203,7 @@ def impact_batch(
 
 def check_impact_arrays(speed, angle, friction) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``speed`` (m/s) in (0, :data:`SPEED_MAX`], ``angle`` (deg from the normal) in [0, 90) and ``friction`` in
-    [0, 10], each a scalar or an array, as checked arrays."""
+    [0, :data:`contact.checks.FRICTION_MAX`], each a scalar or an array, as checked arrays."""
     speed = check_array("speed", speed, low=0.0, low_open=True, units="m/s", what="impact speed", ndim=np.ndim(speed))
     if np.any(speed > SPEED_MAX):
         raise ValueError(
@@ -213,9 +213,7 @@ def check_impact_arrays(speed, angle, friction) -> tuple[np.ndarray, np.ndarray,
     if np.any(angle >= 90.0):
         bad = float(angle[angle >= 90.0].flat[0])
         raise ValueError(f"angle={bad:g} is out of range: impact angle from the normal must be in [0, 90) deg")
-    friction = check_array("friction", friction, low=0.0, what="friction coefficient", ndim=np.ndim(friction))
-    if np.any(friction > 10.0):
-        raise ValueError(f"friction={float(friction.max()):g} is out of range: friction coefficient must be in [0, 10]")
+    friction = np.asarray(check_friction("friction", friction), float)
     return speed, angle, friction
 
 

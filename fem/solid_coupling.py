@@ -48,11 +48,12 @@ import numpy as np
 from scipy.integrate import cumulative_trapezoid
 
 from contact import ImpactResult, Material, TabulatedLaw
+from contact.checks import check_friction
 from contact.fields import SurfaceField
 from fem.core.increments import WorkCounters
 from fem.coupling import fixed_point
 from fem.force_law import force_law, with_unloading_from
-from fem.solid.indentation import MAX_FRICTION, SolidIndentation, solid_solver
+from fem.solid.indentation import SolidIndentation, solid_solver
 from fem.solid.plate import SolidPlate, press_path, solid_plastic_work
 from fem.solid.solver import SolidSolver
 from fem.solid.state import SolidState
@@ -267,11 +268,10 @@ def couple_solid(
     """Couple an impact to a virgin 3-D plate (module docstring; each cycle meshes a new plate for its path):
     ``impact_on_law(law)`` runs the case's impact (with histories) on a force law, ``first`` is the starting impact
     (e.g. the axisymmetric coupled one), ``radius`` (m) the ball's, ``plate`` and ``ball`` (None = rigid) the
-    materials, ``friction`` μ (the impact's, ≤ :data:`fem.solid.indentation.MAX_FRICTION`), ``hardening`` H (Pa).
+    materials, ``friction`` μ (the impact's, ≤ :data:`contact.checks.FRICTION_MAX`), ``hardening`` H (Pa).
     ``progress(iteration)`` is called as each 3-D cycle starts."""
     settings = settings or SolidCouplingSettings()
-    if not 0.0 <= friction <= MAX_FRICTION:
-        raise ValueError(f"friction={friction!r}: the 3-D plate takes a Coulomb coefficient in [0, {MAX_FRICTION}]")
+    friction = check_friction("friction", friction)
 
     def cycle(path: ImpactPath) -> tuple[SolidIndentation, TabulatedLaw]:
         return solid_cycle(path, radius, plate, friction, ball, hardening, settings)

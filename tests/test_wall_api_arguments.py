@@ -9,6 +9,7 @@ from wall_cases import OUTPUTS, RECORDS
 
 import wear.wall as W
 from wear.case import default_case
+from wear.wall.options import WallOptions
 
 
 @pytest.fixture(scope="module")
@@ -19,8 +20,14 @@ def bend():
 CASE = default_case("wall")
 
 CALLS = {
-    "workers=0": (lambda wall: W.erode_component(CASE, RECORDS, wall, workers=0), "workers=0 is out of range"),
-    "workers=1.5": (lambda wall: W.erode_component(CASE, RECORDS, wall, workers=1.5), "workers=1.5 is out of range"),
+    "workers=0": (
+        lambda wall: W.erode_component(CASE, RECORDS, wall, WallOptions(workers=0)),
+        "workers=0 is out of range",
+    ),
+    "workers=1.5": (
+        lambda wall: W.erode_component(CASE, RECORDS, wall, WallOptions(workers=1.5)),
+        "workers=1.5 is out of range",
+    ),
     "a path for the wall": (
         lambda wall: W.erode_component(CASE, RECORDS, str(OUTPUTS)),
         "is a path: give the Wall it holds, wear.wall.read_wall(",
@@ -31,7 +38,7 @@ CALLS = {
     "no records": (lambda wall: W.erode_component(CASE, None, wall), "records=None is not a record file"),
     "a number for the records": (lambda wall: W.erode_component(CASE, 5, wall), "records=5 is not a record file"),
     "a number for the scheduler": (
-        lambda wall: W.erode_component(CASE, RECORDS, wall, scheduler=5),
+        lambda wall: W.erode_component(CASE, RECORDS, wall, WallOptions(scheduler=5)),
         "scheduler=5 is not a Dask scheduler",
     ),
     "read_wall(5)": (lambda wall: W.read_wall(5), "path=5 is not a path"),

@@ -11,6 +11,7 @@ import pytest
 from wall_cases import OUTPUTS, RECORDS, flat_mesh, write_csv
 
 from wear.wall import hits_on_wall, read_patch_post_processing, read_polymesh, read_surface, read_table
+from wear.wall.options import WallOptions
 
 HEADER = ["x_m", "y_m", "z_m", "u_m_s", "v_m_s", "w_m_s", "diameter_m", "density_kg_m3", "particles", "face"]
 GOOD = ["0.01", "0.01", "0", "3", "0", "-20", "2e-4", "2650", "10", "-1"]
@@ -90,7 +91,7 @@ def test_a_velocity_pointing_out_of_the_wall_names_its_row(tmp_path, flat):
     with pytest.raises(ValueError, match=r"\(3 0 20\) points out of the wall \(171\.\d+ deg from the normal") as err:
         hits_on_wall(records, flat)
     _fails(str(err.value), str(path), 2, "u_m_s v_m_s w_m_s")
-    hits = hits_on_wall(records, flat, skip_bad=True)  # counted, left out of every sum
+    hits = hits_on_wall(records, flat, WallOptions(skip_bad=True))  # counted, left out of every sum
     assert hits.skipped == {"leaving_wall": 1} and hits.face[1] == -1 and hits.face[0] >= 0
 
 

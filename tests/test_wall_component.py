@@ -14,6 +14,7 @@ from wall_cases import flat_mesh, write_csv
 
 from wear.case import default_case
 from wear.wall import erode_component, read_fluent_dpm, read_wall
+from wear.wall.options import WallOptions
 
 FLUENT = Path(__file__).resolve().parent / "data" / "fluent" / "plate_unsteady.dpm"
 SUMS = ("volume_m3", "mass_kg", "records", "particles", "speed_sum_m_s", "angle_histogram")
@@ -67,7 +68,7 @@ def test_a_folder_of_parquet_parts_gives_the_sums_of_one_csv(wall, tmp_path):
         columns = {h: pa.array([float(r[i]) for r in rows]) for i, h in enumerate(HEADER)}
         pq.write_table(pa.table(columns), parts / name, row_group_size=128)
     a = erode_component(_case(), one, wall, progress=False)
-    b = erode_component(_case(), parts, wall, progress=False, workers=2)
+    b = erode_component(_case(), parts, wall, WallOptions(workers=2), progress=False)
     assert b.records == (str(parts / "part-0.parquet"), str(parts / "part-1.parquet"))
     for name in SUMS:
         assert np.allclose(getattr(b.sums, name), getattr(a.sums, name), rtol=1e-13, atol=0), name
@@ -81,7 +82,7 @@ def test_a_dask_scheduler_reached_by_its_address_gives_the_serial_sums(wall, tmp
         n_workers=1, threads_per_worker=1, processes=True, dashboard_address=None, host="127.0.0.1"
     ) as cluster:
         remote = erode_component(
-            _case(), records, wall, progress=False, chunk_rows=50, scheduler=cluster.scheduler_address
+            _case(), records, wall, WallOptions(scheduler=cluster.scheduler_address), progress=False, chunk_rows=50
         )
     for name in SUMS:
         assert np.allclose(getattr(remote.sums, name), getattr(serial.sums, name), rtol=1e-13, atol=0), name

@@ -37,6 +37,7 @@ from wear.wall import (
 from wear.wall.engine import chunk_rows_for, erode_wall
 from wear.wall.grid import face_grid
 from wear.wall.locate import distance_to_faces, nearest_faces
+from wear.wall.options import WallOptions
 from wear.wall.sources import Chunk, plan_chunks, read_chunk
 
 
@@ -166,9 +167,9 @@ def test_mass_and_particles_are_conserved(bend):
 def test_pool_and_dask_give_the_serial_sums(bend):
     wall, law, _ = bend
     serial = erode_wall(plan_chunks(RECORDS, 400), wall, law, progress=False)
-    pool = erode_wall(plan_chunks(RECORDS, 400), wall, law, workers=2, progress=False)
-    other = erode_wall(plan_chunks(RECORDS, 1777), wall, law, workers=2, progress=False)
-    dask = erode_wall(plan_chunks(RECORDS, 700), wall, law, workers=2, scheduler="local", progress=False)
+    pool = erode_wall(plan_chunks(RECORDS, 400), wall, law, WallOptions(workers=2), progress=False)
+    other = erode_wall(plan_chunks(RECORDS, 1777), wall, law, WallOptions(workers=2), progress=False)
+    dask = erode_wall(plan_chunks(RECORDS, 700), wall, law, WallOptions(workers=2, scheduler="local"), progress=False)
     for name in ("volume_m3", "mass_kg", "records", "particles", "speed_sum_m_s", "angle_histogram"):
         assert np.array_equal(getattr(pool, name), getattr(serial, name)), name  # the same chunks, added in order
         for result in (other, dask):
@@ -207,7 +208,7 @@ def test_a_bad_row_in_a_later_chunk_names_the_file_and_its_row(tmp_path):
     wall = read_surface(_write_flat(tmp_path))
     for workers in (1, 2):
         with pytest.raises(ValueError, match=rf"^{re.escape(str(path))}, row 13, column diameter_m: -0\.0001 is out"):
-            erode_wall(plan_chunks(path, 5), wall, _finnie(1e9), workers=workers, progress=False)
+            erode_wall(plan_chunks(path, 5), wall, _finnie(1e9), WallOptions(workers=workers), progress=False)
 
 
 def test_a_bad_value_in_a_parquet_row_group_names_its_row(tmp_path):
@@ -225,7 +226,7 @@ def test_skipped_records_are_counted_not_summed(tmp_path):
     values[4, 5] = 7.0  # row 5 leaves the wall (w > 0 with the fluid above)
     path = write_csv(tmp_path / "r.csv", HEADER, [[repr(float(v)) for v in r] for r in values])
     wall = read_surface(_write_flat(tmp_path))
-    sums = erode_wall(plan_chunks(path, 3), wall, _finnie(1e9), progress=False, skip_bad=True)
+    sums = erode_wall(plan_chunks(path, 3), wall, _finnie(1e9), WallOptions(skip_bad=True), progress=False)
     mass = values[:, 8] * 2650.0 * math.pi * values[:, 6] ** 3 / 6.0
     assert sums.skipped == {"leaving_wall": 1} and sums.records.sum() == 9 and sums.records_read == 10
     assert sums.mass_kg.sum() == pytest.approx(mass.sum() - mass[4], rel=1e-13)
@@ -236,7 +237,7 @@ def test_chunks_too_large_for_the_memory_budget_are_refused_before_any_work(bend
     huge = [Chunk("missing.csv", "csv", 0, 10**9), Chunk("missing.csv", "csv", 10**9, 10**9)]
     fits = chunk_rows_for(wall, min(2, machine_cores()), "csv")  # the pool: a worker per chunk and per core
     with pytest.raises(ValueError, match=rf"^missing\.csv: chunk_rows=1e\+09 needs .* give chunk_rows <= {fits}$"):
-        erode_wall(huge, wall, law, workers=2, progress=False)
+        erode_wall(huge, wall, law, WallOptions(workers=2), progress=False)
 
 
 @pytest.mark.parametrize("bad", [0, 1.5, -3])
@@ -244,7 +245,7 @@ def test_chunk_rows_and_workers_are_checked(bend, bad):
     with pytest.raises(ValueError, match=rf"^chunk_rows={bad!r} is out of range"):
         plan_chunks(RECORDS, bad)
     with pytest.raises(ValueError, match=rf"^workers={bad!r} is out of range"):
-        erode_wall([], bend[0], bend[1], workers=bad, progress=False)
+        erode_wall([], bend[0], bend[1], WallOptions(workers=bad), progress=False)
 
 
 def test_the_grid_finds_the_exact_nearest_face(bend):

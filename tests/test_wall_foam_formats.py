@@ -34,6 +34,7 @@ from wear.wall import (
 )
 from wear.wall.component import read_wall
 from wear.wall.foam import DecomposedCaseError
+from wear.wall.options import WallOptions
 
 DATA = Path(__file__).resolve().parent / "data"
 CASES = {"binary": DATA / "openfoam_bend_binary", "compressed": DATA / "openfoam_bend_compressed"}
@@ -46,7 +47,7 @@ def reference():
     normal) of the ascii original."""
     wall = read_polymesh(OUTPUTS)
     records = read_patch_post_processing(RECORDS, wall)
-    hits = hits_on_wall(records, wall, normal="recorded")
+    hits = hits_on_wall(records, wall, WallOptions(normal="recorded"))
     volume = face_sum(len(wall), hits, record_volumes(wall_law(openfoam_finnie_case()), records, hits))
     return wall, read_patch_field(OUTPUTS / "kinematicCloudQ", wall), volume
 

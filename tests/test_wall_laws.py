@@ -36,6 +36,7 @@ from wear.laws.finnie import FinnieLaw
 from wear.laws.oka import OkaLaw
 from wear.wall import ImpactRecords, face_sum, hits_on_wall, read_surface, record_volumes, wall_law
 from wear.wall.case_keys import check_law_keys, keys_read
+from wear.wall.options import WallOptions
 from wear.wall.per_record import TableLaw
 
 #: Silica sand on a carbon steel, Thornton's normal law and pressure, no FE plate (impactwear calibrate's default).
@@ -318,7 +319,7 @@ def test_a_record_the_table_cannot_take_is_named_by_file_row_and_column(tmp_path
     velocity[0, 2] *= -1.0  # leaves the wall: skipped, so the kept records are shifted by one
     velocity[4] *= 40.0 / 17.0
     fast = replace(records, velocity=velocity)
-    hits = hits_on_wall(fast, wall, skip_bad=True)
+    hits = hits_on_wall(fast, wall, WallOptions(skip_bad=True))
     assert hits.skipped == {"leaving_wall": 1}
     with pytest.raises(ValueError, match=r"^records, row 5, columns u_m_s v_m_s w_m_s: the speed 40 m/s is outside"):
         record_volumes(local_law, fast, hits)

@@ -26,6 +26,7 @@ from wear.wall import (
     record_volumes,
     wall_law,
 )
+from wear.wall.options import WallOptions
 
 
 @pytest.fixture(scope="module")
@@ -37,7 +38,7 @@ def bend():
 
 def _volumes(bend, normal, skip_bad=False):
     wall, records, _ = bend
-    hits = hits_on_wall(records, wall, normal=normal, skip_bad=skip_bad)
+    hits = hits_on_wall(records, wall, WallOptions(normal=normal, skip_bad=skip_bad))
     v = record_volumes(wall_law(openfoam_finnie_case()), records, hits)
     return hits, v, face_sum(len(wall), hits, v)
 

@@ -20,6 +20,7 @@ from wear.app.outputs.folder import MANIFEST
 from wear.case import default_case
 from wear.wall import hits_on_wall, read_table
 from wear.wall.mesh import read_surface
+from wear.wall.options import WallOptions
 from wear.wall.per_record import wall_law
 
 HEADER = ["x_m", "y_m", "z_m", "u_m_s", "v_m_s", "w_m_s", "diameter_m", "density_kg_m3", "time_s"]
@@ -234,11 +235,11 @@ def test_a_grazing_hit_past_90_deg_by_round_off_is_90_deg(tmp_path, plate):
     wall = read_surface(plate)
     grazing = np.tan(np.radians(1e-4))  # w/u: 1e-4 deg past 90 (the plate's normal is -z)
     path = write_csv(tmp_path / "graze.csv", HEADER, [_row(u=10.0, w=10.0 * grazing), _row(u=10.0, w=-1.0)])
-    hits = hits_on_wall(read_table(path), wall, normal="face")
+    hits = hits_on_wall(read_table(path), wall, WallOptions(normal="face"))
     assert hits.kept.all() and hits.angle[0] == 90.0 and hits.skipped == {}
     past = write_csv(tmp_path / "past.csv", HEADER, [_row(u=10.0, w=10.0 * np.tan(np.radians(1e-2)))])
     with pytest.raises(ValueError, match=r"past\.csv, row 1, .* points out of the wall \(90\.01 deg"):
-        hits_on_wall(read_table(past), wall, normal="face")
+        hits_on_wall(read_table(past), wall, WallOptions(normal="face"))
 
 
 def test_the_bend_alone_of_a_multi_patch_run_notes_the_other_patches_hits(tmp_path, capsys):

@@ -18,6 +18,7 @@ from wear.app.cli import main
 from wear.case import default_case
 from wear.case.workers import bound_workers, machine_cores, worker_pool
 from wear.wall import erode_component, read_wall
+from wear.wall.options import WallOptions
 from wear.wall.sources import plan_chunks, record_files
 
 SUMS = ("volume_m3", "mass_kg", "records", "particles", "speed_sum_m_s", "angle_histogram", "speed_histogram")
@@ -39,8 +40,8 @@ def test_one_worker_and_two_give_the_same_sums_to_the_last_digit(bend, monkeypat
     rows = engine.chunk_rows_for(bend, None, "openfoam")
     assert rows < 400 and len(plan_chunks(RECORDS, rows)) > len(record_files(RECORDS))  # files split in chunks
     case = default_case("wall").with_(wall={"exposure": 0.1})
-    one = erode_component(case, RECORDS, bend, workers=1, progress=False)
-    two = erode_component(case, RECORDS, bend, workers=2, progress=False)
+    one = erode_component(case, RECORDS, bend, WallOptions(workers=1), progress=False)
+    two = erode_component(case, RECORDS, bend, WallOptions(workers=2), progress=False)
     for name in SUMS:
         assert np.array_equal(getattr(one.sums, name), getattr(two.sums, name)), name
     assert one.wear.volume_m3.sum() > 0.0

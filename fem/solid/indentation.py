@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 import meshio
 import numpy as np
 
-from contact.checks import check_array, check_number
+from contact.checks import check_array, check_friction, check_number
 from contact.fields import SurfaceField
 from contact.materials import Material
 from fem.core.increments import WorkCounters
@@ -30,10 +30,7 @@ from fem.solid.solver import SolidSolver
 from fem.solid.state import SolidState
 from fem.solid.surface_stress import surface_stress
 
-__all__ = ["SolidIndentation", "SolidRecorder", "indent_solid", "solid_solver", "MAX_FRICTION"]
-
-#: Largest friction coefficient accepted (dry metal pairs reach ~1; beyond, Coulomb's law is not what is meant).
-MAX_FRICTION = 1.0
+__all__ = ["SolidIndentation", "SolidRecorder", "indent_solid", "solid_solver"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -313,7 +310,7 @@ def indent_solid(
     steps = path.size
     centre = _per_step("centres", centres, steps, -radius, radius, "m")
     slide = _per_step("slides", slides, steps, -radius, radius, "m")
-    mu = _per_step("friction", friction, steps, 0.0, MAX_FRICTION, "")
+    mu = _per_step("friction", check_friction("friction", friction), steps, None, None, "")
     hardening = check_number("hardening", hardening, low=0.0, high=1e12, units="Pa", what="hardening modulus")
     solver = solid_solver(
         radius,

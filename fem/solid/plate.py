@@ -35,11 +35,11 @@ from dataclasses import fields, replace
 import meshio
 import numpy as np
 
-from contact.checks import check_array, check_number
+from contact.checks import check_array, check_friction, check_number
 from contact.materials import Material
 from fem.core.increments import WorkCounters
 from fem.core.plasticity import plastic_work
-from fem.solid.indentation import MAX_FRICTION, SolidIndentation, SolidRecorder, solid_solver
+from fem.solid.indentation import SolidIndentation, SolidRecorder, solid_solver
 from fem.solid.solver import SolidSolver
 from fem.solid.state import SolidState
 
@@ -95,7 +95,7 @@ class SolidPlate:
     ``radius`` R (m) of the (rigid, or elastic via E*) ball; ``plate`` a :class:`contact.Material`; ``max_overlap``
     (m): the largest overlap expected from first contact (sizes the mesh, :func:`fem.solid.indentation.solid_solver`,
     and the solver's tolerances); ``track`` (m): the first and last x of the contact centre over the site's impacts;
-    ``friction`` μ ≤ :data:`fem.solid.indentation.MAX_FRICTION`; ``ball`` None (rigid) or a Material; ``hardening``
+    ``friction`` μ ≤ :data:`contact.checks.FRICTION_MAX`; ``ball`` None (rigid) or a Material; ``hardening``
     H (Pa); ``contact_elements`` across the contact radius of ``max_overlap`` in a box ``box_depth`` of it deep."""
 
     def __init__(
@@ -113,7 +113,7 @@ class SolidPlate:
     ) -> None:
         self.radius = check_number("radius", radius, low=1e-6, high=10.0, units="m", what="ball radius")
         max_overlap = check_number("max_overlap", max_overlap, low=0.0, low_open=True, high=radius, units="m")
-        self.friction = check_number("friction", friction, low=0.0, high=MAX_FRICTION, what="Coulomb coefficient")
+        self.friction = check_friction("friction", friction)
         self.solver = solid_solver(
             self.radius,
             plate,

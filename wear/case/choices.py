@@ -5,6 +5,7 @@ plate models (``fem.model``), the impact's normal and tangential force laws (``i
 
 from __future__ import annotations
 
+from contact.impact import NORMAL_MODELS as ENGINE_NORMAL_MODELS
 from contact.impact import TANGENTIAL_MODELS as ENGINE_TANGENTIAL_MODELS
 
 __all__ = ["COUPLINGS", "FEM_KEYS_OF_MODEL", "FEM_MODELS", "NORMAL_MODELS", "TANGENTIAL_MODELS", "SCHEMES"]
@@ -21,7 +22,10 @@ FEM_KEYS_OF_MODEL: dict[str, tuple[str, ...]] = {
 }
 #: The FE plate models' names (``fem.model``'s choices).
 FEM_MODELS = tuple(FEM_KEYS_OF_MODEL)
-NORMAL_MODELS = ("hertz", "thornton")
+#: The impact engine's normal laws (:data:`contact.impact.NORMAL_MODELS`) but its "tabulated" one, which runs on a
+#: force law given as data (:class:`contact.TabulatedLaw`): a case holds no such key; its FE plate's tabulated law
+#: is what ``fem.coupling = "two-way"`` gives the impact.
+NORMAL_MODELS = tuple(model for model in ENGINE_NORMAL_MODELS if model != "tabulated")
 #: The impact engine's tangential laws (:data:`contact.impact.TANGENTIAL_MODELS`).
 TANGENTIAL_MODELS = tuple(ENGINE_TANGENTIAL_MODELS)
 SCHEMES = ("verlet", "paper")

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from contact import Material
+from contact.checks import FRICTION_MAX
 from contact.impact import SPEED_MAX
 from wear.case.choices import NORMAL_MODELS, SCHEMES, TANGENTIAL_MODELS
 from wear.case.schema import Table, key
@@ -86,7 +87,7 @@ class ImpactSpec(Table):
     table: ClassVar[str] = "impact"
     speed: float = key(float, 3.0, "impact speed", "m/s", low=0.0, low_open=True, high=SPEED_MAX)
     angle: float = key(float, 30.0, "impact angle from the plate normal", "deg", low=0.0, high=90.0, high_open=True)
-    friction: float = key(float, 0.3, "Coulomb friction coefficient", low=0.0, high=10.0)
+    friction: float = key(float, 0.3, "Coulomb friction coefficient", low=0.0, high=FRICTION_MAX)
     restitution: float = key(
         float, 1.0, "normal restitution setting the Hertz dashpot", low=0.0, low_open=True, high=1.0
     )

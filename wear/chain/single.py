@@ -7,7 +7,8 @@ r"""The whole chain for one impact case: impact → FE plate → coupling → we
     result = run(Case())
     result.summary()["wear"]["volume_m3"]
 
-Stages (their wall times are in ``RunResult.stage_times``):
+Steps (their wall times are in ``RunResult.stage_times``, the summary's ``stage_times_s``: names users read, kept;
+a sweep's stage is another thing, :mod:`wear.app.sweep.stages`):
 
 1. ``impact``: the H-DD impact (:func:`contact.simulate_impact`) with ``case.impact``'s normal model.
 2. ``fem`` + ``coupling``: with ``fem.coupling = "two-way"``
@@ -53,11 +54,11 @@ __all__ = [
     "RunResult",
     "run",
     "speed_ratio",
-    "STAGES",
+    "STEPS",
 ]
 
-#: Stages of :func:`run`, in order (the output writer adds "meshes" and "figures").
-STAGES = ("impact", "fem", "coupling", "plate3d", "wear", "surface")
+#: Steps of :func:`run`, in order, as its progress reports them (the output writer adds "meshes" and "figures").
+STEPS = ("impact", "fem", "coupling", "plate3d", "wear", "surface")
 
 
 @dataclass(frozen=True, eq=False)
@@ -192,12 +193,12 @@ def _yield_info(case: Case, ball: Material, plate: Material) -> dict:
 
 
 def run(case: Case, progress: Callable[[str], None] | None = None) -> RunResult:
-    """Run the whole chain for ``case`` (see the module docstring). ``progress(stage)`` is called as each stage
+    """Run the whole chain for ``case`` (see the module docstring). ``progress(step)`` is called as each step
     starts ("impact", "fem", "coupling", "plate3d", "wear", "surface")."""
     if not isinstance(case, Case):
         raise ValueError(f"case={type(case).__name__} is not a wear.Case")
     check_work(case, "run")  # a runaway is refused before any work
-    notify = progress or (lambda stage: None)
+    notify = progress or (lambda step: None)
     ball, plate = case.ball.material(), case.plate.material()
     coupling_mode = case.fem.coupling
     if coupling_mode != "none" and plate.is_rigid:
@@ -207,11 +208,11 @@ def run(case: Case, progress: Callable[[str], None] | None = None) -> RunResult:
     case = prepare_case(case)
     times: dict[str, float] = {}
 
-    def timed(stage, fn, *args, **kwargs):
-        notify(stage)
+    def timed(step, fn, *args, **kwargs):
+        notify(step)
         t0 = time.perf_counter()
         out = fn(*args, **kwargs)
-        times[stage] = time.perf_counter() - t0
+        times[step] = time.perf_counter() - t0
         return out
 
     estimate = timed("impact", estimate_impact, case)

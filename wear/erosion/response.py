@@ -28,7 +28,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from contact import Material, simulate_impacts
-from contact.checks import check_array, check_choice, check_number
+from contact.checks import check_array, check_choice, check_friction, check_number
 from contact.theory import sphere_mass
 from wear.law import WearLaw
 from wear.laws.impact import wear_of_impact
@@ -107,7 +107,7 @@ class ImpactResponse:
 
     def __post_init__(self) -> None:
         check_number("radius", self.radius, low=0.0, low_open=True, high=10.0, units="m", what="particle radius")
-        check_number("friction", self.friction, low=0.0, high=10.0, what="friction coefficient")
+        check_friction("friction", self.friction)
         if not isinstance(self.law, WearLaw):
             raise ValueError(f"law={self.law!r} is not a wear.WearLaw")
         check_choice("pressure", self.pressure, ("hertz", "paper", "thornton"))

@@ -31,13 +31,14 @@ from pathlib import Path
 import meshio
 import numpy as np
 
-from contact.checks import check_count, check_instance, check_path
+from contact.checks import check_instance, check_path
 from wear.case import Case
 from wear.case.jobs import default_case
 from wear.wall.case_keys import check_law_keys
 from wear.wall.engine import WallSums, chunk_rows_for, erode_wall
 from wear.wall.foam import DecomposedCaseError, polymesh_folder, read_polymesh
 from wear.wall.mesh import Wall, concat_walls, duplicate_faces, read_surface
+from wear.wall.options import WallOptions
 from wear.wall.per_record import records_refusal, wall_law
 from wear.wall.sources import Chunk, plan_chunks, record_files, record_format
 from wear.wall.trust import check_exposure, check_records_fit, note_inputs, note_results
@@ -231,30 +232,28 @@ def erode_component(
     case: Case,
     records: str | Path | Sequence[str | Path],
     wall: Wall,
+    options: WallOptions | None = None,
     *,
-    workers: int = 1,
-    scheduler: str | None = None,
     progress: bool = True,
-    skip_bad: bool = False,
-    normal: str | None = None,
-    tolerance: float | None = None,
     chunk_rows: int | None = None,
 ) -> ComponentErosion:
     """The erosion of ``wall`` by the impact records of ``records`` (files or folders: :mod:`wear.wall.sources`)
-    with ``case``'s wear law, plate and ``[wall]`` table (module docstring). ``workers``, ``scheduler``,
-    ``progress``, ``skip_bad``, ``normal``, ``tolerance``: as :func:`wear.wall.engine.erode_wall`'s;
+    with ``case``'s wear law, plate and ``[wall]`` table (module docstring). ``options``
+    (:class:`wear.wall.options.WallOptions`: where the chunks are summed, how the records are placed on the wall)
+    and ``progress``: as :func:`wear.wall.engine.erode_wall`'s;
     ``chunk_rows``: records per chunk (default: the largest that fits the memory budget). A key of the case that
     the law does not read, at a value other than the default of ``impactwear wall``, is refused
     (:func:`wear.wall.case_keys.check_law_keys`), and so are records that do not lie on the wall as a CFD run's do
     and an exposure too short for the rates, before any work (:mod:`wear.wall.trust`, which also warns of values
     that look like other units)."""
-    _check_arguments(case, wall, workers)
+    options = WallOptions() if options is None else options
+    _check_arguments(case, wall, options)
     spec = case.wall
     if spec.exposure is not None:
         check_exposure(spec.exposure, "wall.exposure")
     chunks = _plan_records(records, wall, chunk_rows)
     # before the law's table, which may take half a minute
-    check_records_fit(chunks, wall, normal, records_refusal(case))
+    check_records_fit(chunks, wall, options, records_refusal(case))
     thickness, from_file = _thickness(wall, spec.thickness)
     note_inputs(case, thickness, from_file)
     seconds: dict[str, float] = {}
@@ -262,17 +261,7 @@ def erode_component(
     law = wall_law(case, progress)
     seconds["law"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    sums = erode_wall(
-        chunks,
-        wall,
-        law,
-        workers=workers,
-        scheduler=scheduler,
-        progress=progress,
-        skip_bad=skip_bad,
-        normal=normal,
-        tolerance=tolerance,
-    )
+    sums = erode_wall(chunks, wall, law, options, progress=progress)
     seconds["records"] = time.perf_counter() - t0
     exposure, source = _exposure(spec.exposure, sums)
     check_exposure(exposure, source)
@@ -297,14 +286,14 @@ def erode_component(
     )
 
 
-def _check_arguments(case: Case, wall: Wall, workers: int) -> None:
+def _check_arguments(case: Case, wall: Wall, options: WallOptions) -> None:
     """Refuse a ``case`` that is not a Case or sets keys its law does not read, a ``wall`` that is not a Wall (a
-    path is named as such), and a ``workers`` count below 1."""
+    path is named as such), and ``options`` that are not a WallOptions (whose fields it checked itself)."""
     check_instance("case", case, Case, "a wear.Case: wear.case.default_case('wall') or wear.case.load_case(path)")
     if isinstance(wall, (str, os.PathLike)):
         raise ValueError(f"wall={str(wall)!r} is a path: give the Wall it holds, wear.wall.read_wall({str(wall)!r})")
     check_instance("wall", wall, Wall, "a wear.wall.Wall: wear.wall.read_wall(path)")
-    check_count("workers", workers, low=1, what="processes")
+    check_instance("options", options, WallOptions, "a wear.wall.options.WallOptions(workers=..., skip_bad=..., ...)")
     check_law_keys(case, default_case("wall"))
 
 

@@ -38,13 +38,14 @@ from functools import cached_property
 
 import numpy as np
 
-from contact.checks import check_count, check_instance
+from contact.checks import check_instance
 from wear.case.budget import check_budget, memory_budget
 from wear.case.progress import progress_bar
 from wear.case.workers import bound_workers, dask_client, machine_cores, worker_pool
 from wear.wall.grid import FaceGrid, face_grid
 from wear.wall.hits import hits_on_wall
 from wear.wall.mesh import Wall
+from wear.wall.options import WallOptions
 from wear.wall.records import ImpactRecords
 from wear.wall.sources import Chunk, read_chunk
 from wear.wall.sums import face_sum, record_volumes
@@ -151,15 +152,13 @@ def chunk_sums(
     law,
     *,
     angle_edges_deg: Sequence[float] = DEFAULT_ANGLE_EDGES_DEG,
-    skip_bad: bool = False,
-    normal: str | None = None,
-    tolerance: float | None = None,
+    options: WallOptions | None = None,
     locator: FaceGrid | None = None,
 ) -> WallSums:
-    """The per-face sums of ``records`` on ``wall`` with ``law`` (see the module docstring); ``skip_bad``,
-    ``normal``, ``tolerance``, ``locator``: as :func:`wear.wall.hits.hits_on_wall`'s."""
+    """The per-face sums of ``records`` on ``wall`` with ``law`` (see the module docstring); ``options``,
+    ``locator``: as :func:`wear.wall.hits.hits_on_wall`'s."""
     edges = np.asarray(angle_edges_deg, float)
-    hits = hits_on_wall(records, wall, normal=normal, tolerance=tolerance, skip_bad=skip_bad, locator=locator)
+    hits = hits_on_wall(records, wall, options, locator)
     kept = hits.kept
     volume = record_volumes(law, records, hits)
     n = len(wall)
@@ -220,15 +219,13 @@ def chunk_rows_for(
 
 @dataclass(frozen=True, eq=False)
 class _Job:
-    """What every chunk's sums need: the wall, the law and the settings of :func:`chunk_sums`; the wall's grid
-    (:mod:`wear.wall.grid`) is built once per process, for the first chunk."""
+    """What every chunk's sums need: the wall, the law, the angle bins and the run's options (:func:`chunk_sums`);
+    the wall's grid (:mod:`wear.wall.grid`) is built once per process, for the first chunk."""
 
     wall: Wall
     law: object
     edges: tuple[float, ...]
-    skip_bad: bool
-    normal: str | None
-    tolerance: float | None
+    options: WallOptions
 
     @cached_property
     def grid(self) -> FaceGrid:
@@ -241,9 +238,7 @@ class _Job:
             self.wall,
             self.law,
             angle_edges_deg=self.edges,
-            skip_bad=self.skip_bad,
-            normal=self.normal,
-            tolerance=self.tolerance,
+            options=self.options,
             locator=self.grid,
         )
 
@@ -268,27 +263,22 @@ def erode_wall(
     chunks: Sequence[Chunk],
     wall: Wall,
     law,
+    options: WallOptions | None = None,
     *,
-    workers: int = 1,
-    scheduler: str | None = None,
     progress: bool = True,
-    skip_bad: bool = False,
-    normal: str | None = None,
-    tolerance: float | None = None,
     histogram_bins_deg: Sequence[float] = DEFAULT_ANGLE_EDGES_DEG,
 ) -> WallSums:
     """The per-face sums (:class:`WallSums`) of the records of ``chunks`` (:func:`wear.wall.sources.plan_chunks`)
     on ``wall`` with ``law`` (see the module docstring).
 
-    Where: ``scheduler`` None: on ``workers`` local processes (1: this process); ``"local"``: a new Dask
-    ``LocalCluster`` of ``workers`` processes; else the address of a Dask scheduler (``tcp://host:port``).
-    ``progress``: a bar on stderr (on a terminal). ``skip_bad``, ``normal``, ``tolerance``: as
-    :func:`wear.wall.hits.hits_on_wall`'s. ``histogram_bins_deg``: the edges of the angle bins (deg from the
-    normal, increasing from 0 to 90). A bad record raises ``ValueError`` naming its file and row; a plan whose
-    chunks would not fit the memory budget is refused before any work."""
-    check_count("workers", workers, low=1, what="processes")
-    if scheduler is not None:
-        check_instance("scheduler", scheduler, str, "a Dask scheduler: 'local' or an address, e.g. tcp://host:8786")
+    ``options`` (:class:`wear.wall.options.WallOptions`; default: its defaults): where (``workers``, ``scheduler``) and
+    how the records are placed on the wall (``normal``, ``tolerance``, ``skip_bad``: as
+    :func:`wear.wall.hits.hits_on_wall`'s). ``progress``: a bar on stderr (on a terminal). ``histogram_bins_deg``: the
+    edges of the angle bins (deg from the normal, increasing from 0 to 90). A bad record raises ``ValueError`` naming
+    its file and row; a plan whose chunks would not fit the memory budget is refused before any work."""
+    options = WallOptions() if options is None else options
+    check_instance("options", options, WallOptions, "a wear.wall.options.WallOptions(workers=..., skip_bad=..., ...)")
+    workers, scheduler = options.workers, options.scheduler
     edges = np.asarray(histogram_bins_deg, float)
     if len(edges) < 2 or edges[0] != 0.0 or edges[-1] != 90.0 or np.any(np.diff(edges) <= 0):
         raise ValueError(
@@ -308,7 +298,7 @@ def erode_wall(
             valid=(1, MAX_CHUNK_ROWS),
             context=f"{chunks[0].path}: ",
         )
-    job = _Job(wall, law, tuple(edges.tolist()), skip_bad, normal, tolerance)
+    job = _Job(wall, law, tuple(edges.tolist()), options)
     total = empty_sums(len(wall), edges)
     with progress_bar(sum(c.rows for c in chunks), "impactwear wall", "record", not progress) as update:
         done = 0

@@ -24,12 +24,11 @@ from contact.checks import check_instance
 from wear.wall.grid import FaceGrid
 from wear.wall.locate import default_tolerance, distance_to_faces, nearest_faces
 from wear.wall.mesh import Wall
+from wear.wall.options import WallOptions
 from wear.wall.records import ImpactRecords
 
-__all__ = ["Hits", "hits_on_wall", "NORMALS", "GRAZING_DEG"]
+__all__ = ["Hits", "hits_on_wall", "GRAZING_DEG"]
 
-#: Which normal an impact angle is measured against.
-NORMALS = ("recorded", "face")
 #: How far past 90° (deg from the normal) a record is still a grazing hit, not one leaving the wall: a parcel
 #: sliding along a wall has θ = 90° to round-off of its velocity against the normal (about 1e-4° seen).
 GRAZING_DEG = 1e-3
@@ -59,15 +58,12 @@ class Hits:
 def hits_on_wall(
     records: ImpactRecords,
     wall: Wall,
-    normal: str | None = None,
-    tolerance: float | None = None,
-    skip_bad: bool = False,
+    options: WallOptions | None = None,
     locator: FaceGrid | None = None,
 ) -> Hits:
     """Place ``records`` on ``wall``: the face of each (its own, or the nearest to its position when −1), the
-    normal (``"recorded"``, ``"face"``; default: the recorded one where the records carry it, else the face's),
-    the angle and the speed. ``tolerance`` (m): the largest distance of a hit from its face
-    (:func:`wear.wall.locate.default_tolerance` by default). ``locator``: the wall's
+    normal, the angle and the speed, with ``options``' ``normal``, ``tolerance`` and ``skip_bad``
+    (:class:`wear.wall.options.WallOptions`; default: its defaults). ``locator``: the wall's
     :class:`wear.wall.grid.FaceGrid` to find the nearest faces and the distances to the faces given with (fast, for
     many records; default :func:`wear.wall.locate.nearest_faces`, :func:`wear.wall.locate.distance_to_faces`). See
     the module docstring for the bad records."""
@@ -75,15 +71,16 @@ def hits_on_wall(
         "records", records, ImpactRecords, "a wear.wall.ImpactRecords: wear.wall.read_table(path) or the like"
     )
     check_instance("wall", wall, Wall, "a wear.wall.Wall: wear.wall.read_wall(path)")
-    if normal is None:
-        normal = "recorded" if records.normal is not None else "face"
-    if normal not in NORMALS:
-        raise ValueError(f"normal={normal!r} is not one of {', '.join(NORMALS)}")
+    options = WallOptions() if options is None else options
+    check_instance("options", options, WallOptions, "a wear.wall.options.WallOptions")
+    normal = options.normal or ("recorded" if records.normal is not None else "face")
     if normal == "recorded" and records.normal is None:
         raise ValueError(f"normal='recorded': the records of {records.files[0]} carry no normal; use normal='face'")
-    tolerance = default_tolerance(wall) if tolerance is None else tolerance
-    if not tolerance > 0.0:
-        raise ValueError(f"tolerance={tolerance!r} is out of range: the distance of a hit from its face is > 0 m")
+    tolerance = options.tolerance
+    if tolerance is None:  # the wall's own (WallOptions checked a given one)
+        tolerance = default_tolerance(wall)
+        if not tolerance > 0.0:
+            raise ValueError(f"tolerance={tolerance!r} is out of range: the distance of a hit from its face is > 0 m")
     if len(records.face) and records.face.max() >= len(wall):
         i = int(np.argmax(records.face))
         raise ValueError(
@@ -108,7 +105,7 @@ def hits_on_wall(
     skipped = {}
     for bad, reason in ((far, "far_from_wall"), (away, "leaving_wall")):
         hit = np.flatnonzero(bad)
-        if len(hit) and not skip_bad:
+        if len(hit) and not options.skip_bad:
             raise ValueError(_message(records, wall, hit[0], reason, given, face, distance, angle, tolerance, len(hit)))
         if len(hit):
             skipped[reason] = len(hit)

@@ -36,6 +36,7 @@ import numpy as np
 from wear.case import Case
 from wear.wall.hits import hits_on_wall
 from wear.wall.mesh import Wall
+from wear.wall.options import WallOptions
 from wear.wall.sources import Chunk, read_chunk
 from wear.wall.sums import refuse_records
 
@@ -75,14 +76,15 @@ _UNITS = "other units (a wall in mm and records in m, or the reverse)? give both
 def check_records_fit(
     chunks: Sequence[Chunk],
     wall: Wall,
-    normal: str | None = None,
+    options: WallOptions | None = None,
     refused: Callable[[np.ndarray, np.ndarray], tuple[int, str, str] | None] | None = None,
 ) -> None:
-    """Refuse (``ValueError``, one line naming the records file) records that do not lie on ``wall`` as a CFD
-    run's do (module docstring), from the first :data:`SAMPLE_ROWS` rows of the first of ``chunks``; note a
-    particle density that looks like g/cm³. A bad row among them is refused as the run would refuse it, and so is
-    one the law will refuse: ``refused(speed_m_s, density_kg_m3)`` (:func:`wear.wall.per_record.records_refusal`), which
-    gives the first such record as (index, field, why) or None."""
+    """Refuse (``ValueError``, one line naming the records file) records that do not lie on ``wall`` as a CFD run's do
+    (module docstring), from the first :data:`SAMPLE_ROWS` rows of the first of ``chunks``; note a particle density that
+    looks like g/cm³. ``options``: the run's (:class:`wear.wall.options.WallOptions`: its ``normal``; the records far
+    from the wall or leaving it are the run's to refuse or skip). A bad row among them is refused as the run would
+    refuse it, and so is one the law will refuse: ``refused(speed_m_s, density_kg_m3)``
+    (:func:`wear.wall.per_record.records_refusal`), which gives the first such record as (index, field, why) or None."""
     if not chunks:
         return
     first = chunks[0]
@@ -90,7 +92,8 @@ def check_records_fit(
     if not len(records):
         return
     # every hit's distance, however far: the records far from the wall or leaving it are the run's to refuse
-    hits = hits_on_wall(records, wall, normal=normal, tolerance=np.inf, skip_bad=True)
+    placed = dataclasses.replace(options or WallOptions(), tolerance=np.inf, skip_bad=True)
+    hits = hits_on_wall(records, wall, placed)
     size = float(np.sqrt(np.median(wall.area)))
     typical = float(np.median(hits.distance))
     if typical > TYPICAL_DISTANCE * size:

@@ -22,14 +22,14 @@ from wear.app.commands.common import (
 )
 from wear.app.outputs.folder import check_output_folder
 from wear.app.outputs.run import ENTRIES, write_run
-from wear.chain.single import STAGES, run
+from wear.chain.single import STEPS, run
 
 HELP = "run one impact case through impact, FE plate, coupling and wear; write meshes, numbers and figures"
 
 DEFAULT_OUT = "impactwear-run"
 
-#: Stages shown by the progress bar: the chain's, then the writer's.
-BAR_STAGES = (*STAGES, "meshes", "figures", "render")
+#: Steps shown by the progress bar: the chain's, then the writer's.
+BAR_STEPS = (*STEPS, "meshes", "figures", "render")
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -82,12 +82,12 @@ def main(args: argparse.Namespace) -> int:
     if args.print_default:
         return print_default(args, "run", case)
     check_output_folder(args.out, "run", ENTRIES)
-    with progress_bar(len(BAR_STAGES), "impactwear run", "stage", args.quiet) as bar, collect_notes() as notes:
+    with progress_bar(len(BAR_STEPS), "impactwear run", "stage", args.quiet) as bar, collect_notes() as notes:
         started: list[str] = []
 
-        def progress(stage: str) -> None:
-            bar(len(started), stage)
-            started.append(stage)
+        def progress(step: str) -> None:
+            bar(len(started), step)
+            started.append(step)
 
         summary = write_run(run(case, progress=progress), args.out, progress=progress, notes=notes)
     print_notes("run", summary["notes"])

@@ -30,10 +30,8 @@ from wear.app.commands.common import (
 )
 from wear.app.outputs.folder import check_output_folder
 from wear.app.outputs.wall import ENTRIES, write_wall
-from wear.case import JOBS
-from wear.wall.case_keys import check_law_keys
 from wear.wall.component import erode_component, read_wall
-from wear.wall.hits import NORMALS
+from wear.wall.options import NORMALS, WallOptions
 
 __all__ = ["HELP", "configure", "main"]
 
@@ -94,7 +92,6 @@ def main(args: argparse.Namespace) -> int:
         if not Path(path).exists():
             raise ValueError(f"{'records' if key == 'records' else 'wall'}={path!r}: no such file or folder")
     check_scheduler_address(args.scheduler)
-    check_law_keys(case, JOBS["wall"].default_case())
     patches = _patches(args.patches)
     check_output_folder(args.out, "wall", ENTRIES)
     wall = read_wall(case.wall.surface, patches, flip=args.flip)
@@ -102,18 +99,10 @@ def main(args: argparse.Namespace) -> int:
         workers, scheduler = args.dask_local, "local"
     else:
         workers, scheduler = args.workers or 1, args.scheduler
+    options = WallOptions(normal=args.normal, skip_bad=args.skip_bad, workers=workers, scheduler=scheduler)
     progress = show_progress(args.quiet)
     with collect_notes() as notes:
-        run = erode_component(
-            case,
-            case.wall.records,
-            wall,
-            workers=workers,
-            scheduler=scheduler,
-            progress=progress,
-            skip_bad=args.skip_bad,
-            normal=args.normal,
-        )
+        run = erode_component(case, case.wall.records, wall, options, progress=progress)
         skipped = dict(run.sums.skipped)
         elsewhere = skipped.pop("other_patches", 0)
         if elsewhere:  # the run's other patches were left out on purpose: counted, not refused

@@ -86,10 +86,10 @@ def write_run(
     progress: Callable[[str], None] | None = None,
     notes: Sequence[str] = (),
 ) -> dict:
-    """Write the whole output folder of ``result`` atomically; returns the summary. ``progress(stage)`` is called
+    """Write the whole output folder of ``result`` atomically; returns the summary. ``progress(step)`` is called
     at "meshes", "figures", "render"; ``notes`` (what the run said, e.g. its warnings) go into the summary with the
     writer's own."""
-    notify = progress or (lambda stage: None)
+    notify = progress or (lambda step: None)
     case = result.case
     times = dict(result.stage_times)
     notes = list(notes)
