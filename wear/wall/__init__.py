@@ -14,6 +14,7 @@ from wear.wall.foam import read_patch_field, read_polymesh
 from wear.wall.hits import Hits, hits_on_wall
 from wear.wall.mesh import Wall, concat_walls, read_surface
 from wear.wall.openfoam import read_patch_post_processing
+from wear.wall.options import WallOptions
 from wear.wall.per_record import WallLaw, wall_law
 from wear.wall.records import ImpactRecords, concat_records
 from wear.wall.sources import plan_chunks
@@ -28,6 +29,7 @@ __all__ = [
     "ImpactRecords",
     "Wall",
     "WallLaw",
+    "WallOptions",
     "WallSums",
     "WallWear",
     "concat_records",
