@@ -239,6 +239,13 @@ def _spin(n: int) -> float:
     return time.perf_counter() - t0
 
 
+def cpu_seconds() -> float:
+    """CPU seconds (user + system) of this process and of its child processes that have ended: a run's threads
+    (Arrow decodes Parquet on a pool of its own) and its pool's workers, once the pool is shut."""
+    t = os.times()
+    return t.user + t.system + t.children_user + t.children_system
+
+
 def parallel_cores(n: int = 10_000_000) -> float:
     """The cores this run gets now: a pure-Python loop on 1 process against the same loop on each of 2 at once
     (2 on an idle 2-core machine; less when other work shares the cores)."""
@@ -311,7 +318,7 @@ def main(argv: list[str] | None = None) -> int:
         chunks = plan_chunks(path, 500_000)
         part = chunks[: max(1, int(args.compare) // 500_000)]
         rows = sum(c.rows for c in part)
-        times, fixed = {}, {}
+        times, fixed, busy = {}, {}, {}
         cores = parallel_cores()
         os.makedirs(os.path.join(folder, "tiny"))
         tiny = plan_chunks(write_parquet(wall, 2000, os.path.join(folder, "tiny"), rng, group=1000), 500_000)
@@ -321,9 +328,10 @@ def main(argv: list[str] | None = None) -> int:
             t0 = time.perf_counter()
             erode_wall(tiny, wall, finnie, WallOptions(workers=workers), progress=False)
             fixed[workers] = time.perf_counter() - t0
-            t0 = time.perf_counter()
+            t0, cpu0 = time.perf_counter(), cpu_seconds()
             sums = erode_wall(part, wall, finnie, WallOptions(workers=workers), progress=False)
             times[workers] = time.perf_counter() - t0
+            busy[workers] = (cpu_seconds() - cpu0) / times[workers]
             assert sums.records.sum() == rows
         steady = (times[1] - fixed[1]) / (times[2] - fixed[2])
         print(
@@ -331,7 +339,10 @@ def main(argv: list[str] | None = None) -> int:
             f"speed-up {times[1] / times[2]:.2f}; a pure-Python loop on 2 processes against 1 at the same time: "
             f"{cores:.2f} (the cores this run gets; load average {os.getloadavg()[0]:.2f})\n"
             f"   fixed cost of a run (2 chunks of 1000 impacts): 1 worker {fixed[1]:.1f} s, 2 workers {fixed[2]:.1f} s "
-            f"(the pool's start); speed-up without it {steady:.2f}"
+            f"(the pool's start); speed-up without it {steady:.2f}\n"
+            f"   cores busy on average (CPU seconds of this process and its finished workers per second): "
+            f"1 worker {busy[1]:.2f}, 2 workers {busy[2]:.2f}: the most 2 cores can give over 1 worker is "
+            f"{2.0 / busy[1]:.2f}"
         )
         del impacts, points, angle, speed, face, distance
         peak = PeakMemory()
