@@ -29,7 +29,8 @@ from wear import Case, repeat
 from wear.app.figures.repeat import plot_repeat
 from wear.app.outputs.writer import write_csv
 
-OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "repeated_impacts"  # where the outputs go
+# where the outputs go
+OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "repeated_impacts"
 OUT.mkdir(parents=True, exist_ok=True)
 quick = os.environ.get("IMPACTWEAR_QUICK") == "1"
 
@@ -37,10 +38,15 @@ case = Case()
 v_y = yield_velocity(case.ball.radius, case.ball.material(), case.plate.material())
 case = case.with_(
     impact={"speed": 2.2 * v_y, "angle": 0.0},
-    wear={"K": 0.0},  # wear off: only the dent and the residual stresses change the plate
+    # wear off: only the dent and the residual stresses change the plate
+    wear={"K": 0.0},
     fem={"mesh_scale": 4.0 if quick else 2.0},
     output={"figures": False, "render": False},
-    repeat={"impacts": 4 if quick else 8, "geometry_update": True, "max_plastic_impacts": 4 if quick else 8},
+    repeat={
+        "impacts": 4 if quick else 8,
+        "geometry_update": True,
+        "max_plastic_impacts": 4 if quick else 8,
+    },
 )
 with warnings.catch_warnings(record=True) as caught:
     warnings.simplefilter("always")
@@ -52,11 +58,17 @@ print(f"V_y = {v_y:.4g} m/s, V_n = {2.2 * v_y:.4g} m/s")
 for row in result.records:
     if row.kind == "computed":
         print(
-            f"impact {row.first:3d}: e_n {row.normal_restitution:.4f}, F_max {row.max_force:.4g} N, "
-            f"p_max {row.max_pressure / 1e9:.3f} GPa, Δᾱ {row.plastic_strain_increment:.2e}, "
+            f"impact {row.first:3d}: e_n {row.normal_restitution:.4f}, F_max "
+            f"{row.max_force:.4g} N, "
+            f"p_max {row.max_pressure / 1e9:.3f} GPa, Δᾱ "
+            f"{row.plastic_strain_increment:.2e}, "
             f"dent {row.dent_depth * 1e6:.3f} µm"
         )
-print(f"shakedown at impact {result.shakedown_impact}" if result.shakedown_impact else "no shakedown")
+print(
+    f"shakedown at impact {result.shakedown_impact}"
+    if result.shakedown_impact
+    else "no shakedown"
+)
 columns = result.columns()
 write_csv(OUT / "repeat.csv", columns)
 plot_repeat(

@@ -145,3 +145,35 @@ def test_pages_have_no_long_code_lines():
     docs = Path(__file__).resolve().parents[1] / "docs"
     found = {p.name: build_checks._long_code_lines(p.read_text(encoding="utf-8")) for p in docs.glob("*.md")}
     assert not any(found.values()), {name: lines for name, lines in found.items() if lines}
+
+
+def test_long_example_code_line_is_reported(tmp_path, caplog):
+    """A gallery example's code cell line, or a literal block's line in its text, over 88 characters is reported;
+    prose and maths of the text cells are not (the page wraps them), nor a short code line."""
+    example = (
+        f'"""\nTitle\n=====\n\nA prose line {LONG}.\n\n.. math::\n\n    x = {LONG}\n"""\n\n'
+        f"x = 1  # {'y' * 78}\n"
+        f'print("{LONG}")\n\n'
+        f"# %%\n# A prose line {LONG}, then a command::\n#\n#     impactwear {LONG}\n#\n\n"
+        f"# %%\n# A code directive:\n#\n# .. code-block:: bash\n#    :caption: run\n#\n#    impactwear {LONG}\n\n"
+        "y = 2\n"
+    )
+    app, _ = _site(tmp_path, {})
+    examples = Path(app.srcdir).parent / "examples"
+    examples.mkdir()
+    (examples / "a.py").write_text(example, encoding="utf-8")
+    app.config.sphinx_gallery_conf["examples_dirs"] = "../examples"
+    build_checks._check_code_lines(app)
+    found = _warnings(caplog)
+    assert [w.split(":")[0] for w in found] == [
+        "examples/a.py, line 13",
+        "examples/a.py, line 18",
+        "examples/a.py, line 27",
+    ]
+    assert all(w.endswith("(longer than 88: it scrolls)") for w in found), found
+
+
+def test_examples_have_no_long_code_lines():
+    examples = Path(__file__).resolve().parents[1] / "examples"
+    found = {p.name: build_checks._long_example_lines(p) for p in examples.glob("*.py")}
+    assert not any(found.values()), {name: lines for name, lines in found.items() if lines}
