@@ -28,7 +28,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from wear.app.data import OPENFOAM_BEND
-from wear.app.figures.wall import plot_wall_rate
+from wear.app.figures.wall import WALL_FIGSIZE, draw_wall_rate
 from wear.app.outputs.wall import write_wall
 from wear.case import default_case
 from wear.wall import erode_component, read_patch_field, read_wall
@@ -103,16 +103,11 @@ print(
 # The sand goes straight on at the bend (its Stokes number is about 130) and hits the outer wall of the bend's
 # second half; the hot spot is marked.
 
-plot_wall_rate(
-    wall,
-    bend.wear.thickness_loss_mm_year,
-    int(spots.face[0]),
-    OUT / "wall.png",
-    "DNV law, steel",
+fig = plt.figure(figsize=WALL_FIGSIZE)
+draw_wall_rate(
+    fig, wall, bend.wear.thickness_loss_mm_year, int(spots.face[0]), "DNV law, steel"
 )
-fig, ax = plt.subplots(figsize=(6, 4))
-ax.imshow(plt.imread(OUT / "wall.png"))
-ax.set_axis_off()
+fig.savefig(OUT / "wall.png", dpi=120)
 
 # %%
 # Along the bend

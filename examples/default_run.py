@@ -6,8 +6,7 @@ The whole chain on the default case through the public API: impact → FE plate 
 Equivalent to ``impactwear run`` (an alumina ball, R 2.5 mm, on a Ti-6Al-4V plate at 3 m/s, 30° from the
 normal); prints the main results and writes the output folder (summary.json, history.csv, pressure.npz,
 surface.vtu, plate.vtu, plate_fe.vtu, figures) into ``default_run/`` of the folder named by the environment variable
-``IMPACTWEAR_EXAMPLE_OUT`` (default: the current folder). SI units. ``IMPACTWEAR_QUICK=1``: coarser FE mesh, fewer
-steps, no 3-D render (the test suite and this page).
+``IMPACTWEAR_EXAMPLE_OUT`` (default: the current folder). SI units.
 """
 
 # %%
@@ -30,6 +29,7 @@ from wear.app.outputs.run import write_run
 OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "default_run"
 
 case = Case()
+# IMPACTWEAR_QUICK=1 (as on this page): coarser FE mesh, fewer steps, no 3-D render
 if os.environ.get("IMPACTWEAR_QUICK") == "1":
     case = case.with_(
         fem={"mesh_scale": 4.0, "load_steps": 10, "unload_steps": 6},

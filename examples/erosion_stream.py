@@ -8,7 +8,7 @@ errata Eq. 15), erodes a periodic patch for a few seconds of the paper's Fig. 10
 three angles, prints the erosion rate, and writes ``erosion_stream.csv`` (time series at 45 deg) and
 ``erosion_angles.csv`` into ``erosion_stream/`` of the folder named by the environment variable
 ``IMPACTWEAR_EXAMPLE_OUT`` (default: the current folder). SI units; angles in degrees from the plate normal.
-``IMPACTWEAR_QUICK=1``: coarser table, smaller patch. For the full case and the CLI see
+For the full case and the CLI see
 ``impactwear erode examples/fig10_stream.toml``.
 """
 
@@ -29,6 +29,7 @@ from wear.erosion import ImpactResponse, Stream, build_response_table, erode, ta
 # where the outputs go
 OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "erosion_stream"
 OUT.mkdir(parents=True, exist_ok=True)
+# IMPACTWEAR_QUICK=1 (as on this page): a coarser table, a smaller patch
 quick = os.environ.get("IMPACTWEAR_QUICK") == "1"
 
 sand = Material(E=94e9, nu=0.17, density=2650.0, name="silica sand")

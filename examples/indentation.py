@@ -6,7 +6,6 @@ Press a rigid 10 mm ball into a steel plate past first yield and unload (fem.ind
 Prints the FE first yield against F_c (errata Eq. 18, exact C(ν) and the paper's C = 1.6), the force at the
 maximum, the residual dent, and writes the F–δ table, the figures and the deformed mesh into ``indentation/`` of the
 folder named by the environment variable ``IMPACTWEAR_EXAMPLE_OUT`` (default: the current folder).
-``IMPACTWEAR_QUICK=1`` uses a coarse mesh and few increments (seconds, not validation quality).
 """
 
 # %%
@@ -28,6 +27,8 @@ from wear.app.outputs.writer import write_mesh
 # where the outputs go
 OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "indentation"
 OUT.mkdir(parents=True, exist_ok=True)
+# IMPACTWEAR_QUICK=1 (as on this page): a coarse mesh, few increments (seconds, not
+# validation quality)
 quick = os.environ.get("IMPACTWEAR_QUICK") == "1"
 
 radius = 10e-3  # m

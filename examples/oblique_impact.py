@@ -6,8 +6,7 @@ Oblique impacts of an alumina ball on soda-lime glass (Kharaz, Gorham & Salman 2
 Sweeps the impact angle at 3.9 m/s, prints the rebound against rigid-body theory (valid in gross sliding,
 large angles), and writes ``oblique_impact.csv`` (the sweep) and ``history_30deg.csv`` (one impact's time
 history) into ``oblique_impact/`` of the folder named by the environment variable ``IMPACTWEAR_EXAMPLE_OUT``
-(default: the current folder). SI units; angles in degrees from the plate normal. ``IMPACTWEAR_QUICK=1``: a coarser
-sweep.
+(default: the current folder). SI units; angles in degrees from the plate normal.
 """
 
 # %%
@@ -24,11 +23,13 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from contact import Material, simulate_impact, simulate_impacts
+from wear.app.figures.common import place_legends
 from wear.app.outputs.writer import write_csv
 
 # where the outputs go
 OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "oblique_impact"
 OUT.mkdir(parents=True, exist_ok=True)
+# IMPACTWEAR_QUICK=1 (as on this page): a coarser sweep
 quick = os.environ.get("IMPACTWEAR_QUICK") == "1"
 
 ball = Material(E=380e9, nu=0.23, density=4000.0, name="alumina")
@@ -118,5 +119,4 @@ ax.plot(
     h.t * 1e6, mu * h.normal_force, "k:", lw=1, label="μ × normal force (gross sliding)"
 )
 ax.set(xlabel="time (µs)", ylabel="force (N)", title="alumina on glass, 3.9 m/s at 30°")
-ax.legend()
-fig.tight_layout()
+place_legends(fig, [ax])  # where it covers no curve (here: above them, given room)

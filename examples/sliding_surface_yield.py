@@ -9,7 +9,7 @@ coupling β = (1 − 2ν)/(2(1 − ν)) (Johnson 1985 §7), and the surface yiel
 the pressure's centroid, its shift per unit β, and the p0/Y of the largest surface von Mises stress
 (fem.solid.surface_stress); writes the surface von Mises stress along the plane of incidence to ``surface.csv`` in
 ``sliding_surface_yield/`` of the folder named by the environment variable ``IMPACTWEAR_EXAMPLE_OUT`` (default: the
-current folder). ``IMPACTWEAR_QUICK=1``: no edge band (coarser, faster).
+current folder).
 """
 
 # %%
@@ -30,6 +30,7 @@ from fem.core.plasticity import von_mises
 # where the outputs go
 OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "sliding_surface_yield"
 OUT.mkdir(parents=True, exist_ok=True)
+# IMPACTWEAR_QUICK=1 (as on this page): no edge band (coarser, faster)
 quick = os.environ.get("IMPACTWEAR_QUICK") == "1"
 
 radius, mu, a_max = 10e-3, 0.5, 1e-4  # m, -, m

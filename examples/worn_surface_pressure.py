@@ -7,7 +7,7 @@ A steel plate worn into a smooth pit w(r) = D (1 − r²/a₀²)² (a₀ the fla
 pressed by a rigid 10 mm ball (fem.Plate.move_surface, then Plate.load). The same gap is solved on a 2-D grid by
 contact.halfspace_contact (boundary elements). Prints both peak pressures, where they sit, and Hertz on the flat
 at the same force; writes the radial profiles to ``profiles.csv`` in ``worn_surface_pressure/`` of the folder named by
-the environment variable ``IMPACTWEAR_EXAMPLE_OUT`` (default: the current folder). ``IMPACTWEAR_QUICK=1``: coarser FE.
+the environment variable ``IMPACTWEAR_EXAMPLE_OUT`` (default: the current folder).
 """
 
 # %%
@@ -27,6 +27,7 @@ from contact.theory import hertz_peak_pressure
 # where the outputs go
 OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "worn_surface_pressure"
 OUT.mkdir(parents=True, exist_ok=True)
+# IMPACTWEAR_QUICK=1 (as on this page): a coarser FE mesh
 quick = os.environ.get("IMPACTWEAR_QUICK") == "1"
 
 radius = 10e-3  # m

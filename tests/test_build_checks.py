@@ -177,3 +177,24 @@ def test_examples_have_no_long_code_lines():
     examples = Path(__file__).resolve().parents[1] / "examples"
     found = {p.name: build_checks._long_example_lines(p) for p in examples.glob("*.py")}
     assert not any(found.values()), {name: lines for name, lines in found.items() if lines}
+
+
+def test_gallery_figure_with_overlapping_texts_is_reported():
+    """The gallery's scraper checks the figures an example leaves open: one whose tick labels crowd and whose
+    texts sit on one another is reported, naming the example and the figure; a plain one is not."""
+    gallery_support = pytest.importorskip("gallery_support")
+    plt = pytest.importorskip("matplotlib.pyplot")
+    plt.close("all")
+    try:
+        fig, ax = plt.subplots(figsize=(4.0, 3.0))
+        ax.set_xticks([0.0, 0.01], ["0.000", "0.010"])
+        ax.text(0.5, 0.5, "one label", transform=ax.transAxes)
+        ax.text(0.52, 0.51, "another label", transform=ax.transAxes)
+        found = gallery_support.figure_text_problems("x.py")
+        assert len(found) == 2 and all(f.startswith(f"x.py, figure {fig.number}: ") for f in found), found
+        plt.close(fig)
+        fig, ax = plt.subplots(figsize=(4.0, 3.0), layout="constrained")
+        ax.set(title="title", xlabel="x (m)", ylabel="y (m)")
+        assert gallery_support.figure_text_problems("x.py") == []
+    finally:
+        plt.close("all")
