@@ -260,7 +260,8 @@ sphinx_gallery_conf = {
     "filename_pattern": r".*\.py$",  # run every example
     "ignore_pattern": r"__init__\.py",
     "plot_gallery": "True" if GALLERY_RUN else "False",
-    "image_scrapers": ("matplotlib",),  # the figures an example's cell leaves open, under that cell
+    # the figures an example's cell leaves open, under that cell, each checked for overlapping texts first
+    "image_scrapers": ("gallery_support.checked_matplotlib_scraper",),
     "reset_modules": ("matplotlib", "gallery_support.guard_exit"),  # sys.exit in an example must not end the build
     "reset_modules_order": "both",
     "within_subsection_order": "gallery_support.example_order",  # the tutorial first

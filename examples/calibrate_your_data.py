@@ -38,12 +38,18 @@ from wear.case import default_case
 from wear.chain.calibrate import calibrate
 from wear.chain.calibration_data import read_data
 
-OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "calibrate_your_data"  # where the outputs go
+# where the outputs go
+OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "calibrate_your_data"
 
-with resources.as_file(resources.files("wear.app").joinpath("data/calibration_sample.csv")) as DATA:
+with resources.as_file(
+    resources.files("wear.app").joinpath("data/calibration_sample.csv")
+) as DATA:
     data = read_data(DATA)
     print(DATA.read_text(encoding="utf-8").splitlines()[:4])
-print(f"{data.angle.size} rows of {data.quantity} at speeds {', '.join(f'{v:g}' for v in np.unique(data.speed))} m/s")
+print(
+    f"{data.angle.size} rows of {data.quantity} at speeds "
+    f"{', '.join(f'{v:g}' for v in np.unique(data.speed))} m/s"
+)
 
 # %%
 # The fit
@@ -54,16 +60,23 @@ print(f"{data.angle.size} rows of {data.quantity} at speeds {', '.join(f'{v:g}' 
 
 case = default_case("calibrate").with_(wear={"law": "dnv"})
 result = calibrate(case, data, free=("dnv_K", "dnv_n"))
-summary = write_calibration(result, OUT)  # calibration.json, calibration.csv, calibrated.toml, a figure
+# calibration.json, calibration.csv, calibrated.toml, a figure
+summary = write_calibration(result, OUT)
 for name, c in summary["constants"].items():
     lo, hi = c["interval_95"]
-    print(f"{name} = {c['value']:.4g} (95% interval {lo:.4g} .. {hi:.4g}; start {c['start']:.4g}) {c['units']}")
-print(f"rms log error {summary['rms_log_error']:.3f} over {summary['fitted_rows']} rows")
+    print(
+        f"{name} = {c['value']:.4g} (95% interval {lo:.4g} .. {hi:.4g}; start "
+        f"{c['start']:.4g}) {c['units']}"
+    )
+print(
+    f"rms log error {summary['rms_log_error']:.3f} over {summary['fitted_rows']} rows"
+)
 
 # %%
 # The same from the command line (the output folder is the same)::
 #
-#     impactwear calibrate calibration_sample.csv --law dnv --free dnv_K,dnv_n --out calibrate_your_data
+#     impactwear calibrate calibration_sample.csv --law dnv --free dnv_K,dnv_n \
+#         --out calibrate_your_data
 #
 # ``calibrated.toml`` in the output folder is the case with the fitted constants: ``impactwear run``, ``erode``
 # and ``repeat`` read it as it is.
@@ -87,7 +100,9 @@ fig, ax = plt.subplots(figsize=(7.0, 4.0))
 for speed in np.unique(data.speed):
     rows = np.flatnonzero(data.speed == speed)
     order = rows[np.argsort(data.angle[rows])]
-    (line,) = ax.plot(data.angle[order], result.predicted[order], label=f"fitted, {speed:g} m/s")
+    (line,) = ax.plot(
+        data.angle[order], result.predicted[order], label=f"fitted, {speed:g} m/s"
+    )
     ax.plot(data.angle[order], data.measured[order], "o", color=line.get_color(), ms=4)
 ax.set_yscale("log")
 ax.set_xlabel("impact angle from the normal (deg)")

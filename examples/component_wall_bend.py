@@ -28,18 +28,22 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from wear.app.data import OPENFOAM_BEND
-from wear.app.figures.wall import plot_wall_rate
+from wear.app.figures.wall import WALL_FIGSIZE, draw_wall_rate
 from wear.app.outputs.wall import write_wall
 from wear.case import default_case
 from wear.wall import erode_component, read_patch_field, read_wall
 
 RUN = OPENFOAM_BEND  # the run's outputs, installed with the toolkit
-OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "component_wall_bend"  # where the outputs go
+# where the outputs go
+OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "component_wall_bend"
 OUT.mkdir(parents=True, exist_ok=True)
 
 wall = read_wall(RUN)
 records = RUN / "patchPostProcessing1"
-print(f"the wall: {len(wall)} faces on the patches {', '.join(wall.patch_names)}, {wall.area.sum():.4g} m^2")
+print(
+    f"the wall: {len(wall)} faces on the patches {', '.join(wall.patch_names)}, "
+    f"{wall.area.sum():.4g} m^2"
+)
 
 # %%
 # OpenFOAM's own eroded volume, reproduced
@@ -50,7 +54,12 @@ print(f"the wall: {len(wall)} faces on the patches {', '.join(wall.patch_names)}
 # OpenFOAM summed on each face.
 
 finnie = default_case("wall").with_(
-    wear={"law": "finnie", "cutting_fraction": 1.0, "force_ratio": 2.0, "depth_ratio": 2.0},
+    wear={
+        "law": "finnie",
+        "cutting_fraction": 1.0,
+        "force_ratio": 2.0,
+        "depth_ratio": 2.0,
+    },
     plate={"hardness": 1e9},
     wall={"exposure": 0.05},
 )
@@ -58,7 +67,10 @@ check = erode_component(finnie, records, wall, progress=False)
 q = read_patch_field(RUN / "kinematicCloudQ", wall)
 hit = q > 0
 worst = np.max(np.abs(check.wear.volume_m3[hit] / q[hit] - 1.0))
-print(f"finnie against OpenFOAM's Q on {hit.sum()} faces: largest relative difference {worst:.2g}")
+print(
+    f"finnie against OpenFOAM's Q on {hit.sum()} faces: largest relative difference "
+    f"{worst:.2g}"
+)
 
 # %%
 # DNV-RP-O501's law on a steel bend
@@ -67,16 +79,23 @@ print(f"finnie against OpenFOAM's Q on {hit.sum()} faces: largest relative diffe
 # (K = 2e-9, n = 2.6). The run injected 5e-4 kg of sand at 0.01 kg/s, so its hits stand for an exposure of
 # 5e-4 / 0.01 = 0.05 s; the wall is 5 mm thick; the worn wall is written after 2 days.
 
-case = default_case("wall").with_(wall={"exposure": 0.05, "thickness": 5e-3, "service_time": 2 * 86400.0})
+case = default_case("wall").with_(
+    wall={"exposure": 0.05, "thickness": 5e-3, "service_time": 2 * 86400.0}
+)
 bend = erode_component(case, records, wall, progress=False)
 spots = bend.hot_spots(3)
 x, y, z = spots.position_m[0]
 print(
-    f"hot spot: {spots.thickness_loss_mm_year[0]:.4g} mm/year on patch {spots.patch[0]} at ({x:.4g}, {y:.4g}, "
-    f"{z:.4g}) m; a 5 mm wall lasts {spots.remaining_life_year[0] * 365.25:.3g} days there"
+    f"hot spot: {spots.thickness_loss_mm_year[0]:.4g} mm/year on patch "
+    f"{spots.patch[0]} at ({x:.4g}, {y:.4g}, "
+    f"{z:.4g}) m; a 5 mm wall lasts {spots.remaining_life_year[0] * 365.25:.3g} days "
+    "there"
 )
 summary = write_wall(bend, OUT / "dnv", figures=False)
-print(f"eroded mass {summary['results']['eroded_mass_kg']:.4g} kg over {bend.exposure_s:g} s of sand")
+print(
+    f"eroded mass {summary['results']['eroded_mass_kg']:.4g} kg over "
+    f"{bend.exposure_s:g} s of sand"
+)
 
 # %%
 # The wall coloured by its thickness-loss rate
@@ -84,10 +103,11 @@ print(f"eroded mass {summary['results']['eroded_mass_kg']:.4g} kg over {bend.exp
 # The sand goes straight on at the bend (its Stokes number is about 130) and hits the outer wall of the bend's
 # second half; the hot spot is marked.
 
-plot_wall_rate(wall, bend.wear.thickness_loss_mm_year, int(spots.face[0]), OUT / "wall.png", "DNV law, steel")
-fig, ax = plt.subplots(figsize=(6, 4))
-ax.imshow(plt.imread(OUT / "wall.png"))
-ax.set_axis_off()
+fig = plt.figure(figsize=WALL_FIGSIZE)
+draw_wall_rate(
+    fig, wall, bend.wear.thickness_loss_mm_year, int(spots.face[0]), "DNV law, steel"
+)
+fig.savefig(OUT / "wall.png", dpi=120)
 
 # %%
 # Along the bend
@@ -97,13 +117,17 @@ ax.set_axis_off()
 
 on_bend = np.array([wall.patch_names[p] == "bend" for p in wall.patch])
 centre = wall.centre - np.array([0.075, 0.0, 0.0])
-into_bend = np.degrees(np.arctan2(centre[:, 2], -centre[:, 0]))  # 0 at the bend's start, 90 at its end
+# 0 at the bend's start, 90 at its end
+into_bend = np.degrees(np.arctan2(centre[:, 2], -centre[:, 0]))
 radial = np.hypot(centre[:, 0], centre[:, 2]) - 0.075
 around = np.degrees(np.arctan2(np.abs(centre[:, 1]), radial))  # 0 on the extrados line
 outer = on_bend & (around < 45.0)
 edges = np.arange(0.0, 91.0, 10.0)
 rate = bend.wear.thickness_loss_mm_year
-mean = [rate[outer & (into_bend >= a) & (into_bend < b)].mean() for a, b in zip(edges[:-1], edges[1:], strict=True)]
+mean = [
+    rate[outer & (into_bend >= a) & (into_bend < b)].mean()
+    for a, b in zip(edges[:-1], edges[1:], strict=True)
+]
 fig, ax = plt.subplots(figsize=(6, 4), layout="constrained")
 ax.stairs(mean, edges, fill=True, alpha=0.7)
 ax.set_xlabel("angle into the bend (deg)")

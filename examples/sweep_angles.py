@@ -23,23 +23,33 @@ from pathlib import Path
 
 import matplotlib.pyplot as plt
 
-OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "sweep_angles"  # where the outputs go
+# where the outputs go
+OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "sweep_angles"
 OUT.mkdir(parents=True, exist_ok=True)
 
 SPEC = """\
 [sweep]
 stage = "impact"
-description = "rebound angle, spin and sliding time vs impact angle (Kharaz et al. 2001 setup)"
+description = "rebound angle, spin and sliding time vs impact angle, Kharaz et al. 2001"
 
 [base]
 impact.speed = 3.9           # m/s
 impact.friction = 0.092
 
 [grid]
-"impact.angle" = [5, 10, 15, 20, 25, 30, 35, 40, 45, 50, 55, 60, 65, 70, 75, 80, 85]   # deg from the normal
+# deg from the normal
+"impact.angle" = [5, 10, 15, 20, 25, 30, 35, 40, 45, 50, 55, 60, 65, 70, 75, 80, 85]
 """
 (OUT / "sweep_angles.toml").write_text(SPEC, encoding="utf-8")
-command = ["sweep", str(OUT / "sweep_angles.toml"), "--out", str(OUT / "run"), "--workers", "2", "--quiet"]
+command = [
+    "sweep",
+    str(OUT / "sweep_angles.toml"),
+    "--out",
+    str(OUT / "run"),
+    "--workers",
+    "2",
+    "--quiet",
+]
 subprocess.run([sys.executable, "-m", "wear.app.cli", *command], check=True)
 
 # %%
@@ -49,17 +59,33 @@ subprocess.run([sys.executable, "-m", "wear.app.cli", *command], check=True)
 
 with open(OUT / "run" / "results.csv", newline="", encoding="utf-8") as f:
     rows = list(csv.DictReader(f))
-print(f"{'angle (deg)':>12} {'rebound (deg)':>14} {'contact pt (deg)':>17} {'spin (rad/s)':>13}")
+print(
+    f"{'angle (deg)':>12} {'rebound (deg)':>14} {'contact pt (deg)':>17} "
+    f"{'spin (rad/s)':>13}"
+)
 for r in rows:
     print(
         f"{float(r['impact.angle_deg']):12.1f} {float(r['rebound_angle_deg']):14.3f} "
-        f"{float(r['contact_point_rebound_angle_deg']):17.3f} {float(r['spin_rad_s']):13.2f}"
+        f"{float(r['contact_point_rebound_angle_deg']):17.3f} "
+        f"{float(r['spin_rad_s']):13.2f}"
     )
 
 angle = [float(r["impact.angle_deg"]) for r in rows]
 fig, ax = plt.subplots(figsize=(5.5, 3.8))
-ax.plot(angle, [float(r["rebound_angle_deg"]) for r in rows], "o-", ms=3, label="centre of the ball")
-ax.plot(angle, [float(r["contact_point_rebound_angle_deg"]) for r in rows], "s-", ms=3, label="contact point")
+ax.plot(
+    angle,
+    [float(r["rebound_angle_deg"]) for r in rows],
+    "o-",
+    ms=3,
+    label="centre of the ball",
+)
+ax.plot(
+    angle,
+    [float(r["contact_point_rebound_angle_deg"]) for r in rows],
+    "s-",
+    ms=3,
+    label="contact point",
+)
 ax.plot([0, 90], [0, 90], "k:", lw=0.8, label="rebound = impact angle")
 ax.set(xlabel="impact angle from the normal (deg)", ylabel="rebound angle (deg)")
 ax.legend()

@@ -27,7 +27,8 @@ import numpy as np
 from wear import load_case, run
 from wear.app.outputs.run import write_run
 
-OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "tutorial_case_to_figure"  # where the outputs go
+# where the outputs go
+OUT = Path(os.environ.get("IMPACTWEAR_EXAMPLE_OUT", ".")) / "tutorial_case_to_figure"
 OUT.mkdir(parents=True, exist_ok=True)
 
 CASE = """\
@@ -56,7 +57,8 @@ coupling = "none"     # no FE plate: the impact's own Hertz law
 
 [wear]
 pressure = "hertz"
-speed = "sliding"     # the contact point's slip: without the FE plate there is no surface slip of its own
+# the contact point's slip: without the FE plate there is no surface slip of its own
+speed = "sliding"
 
 [output]
 figures = false       # this tutorial draws its own
@@ -72,7 +74,10 @@ render = false
 # output folder (``summary.json``, ``history.csv``, ``pressure.npz``, the meshes).
 
 case = load_case(OUT / "glass.toml", "run")
-print(f"ball: {case.ball.name}, R {case.ball.radius:g} m; plate: {case.plate.name}, E {case.plate.E:g} Pa")
+print(
+    f"ball: {case.ball.name}, R {case.ball.radius:g} m; plate: {case.plate.name}, E "
+    f"{case.plate.E:g} Pa"
+)
 result = run(case)
 write_run(result, OUT / "run")
 print(sorted(p.name for p in (OUT / "run").iterdir() if not p.name.startswith(".")))
@@ -105,7 +110,10 @@ v_n = case.impact.speed * math.cos(math.radians(case.impact.angle))
 d_max = (15.0 * mass * v_n**2 / (16.0 * e_star * math.sqrt(ball.radius))) ** 0.4
 f_max = 4.0 / 3.0 * e_star * math.sqrt(ball.radius) * d_max**1.5
 t_c = 2.868 * (mass**2 / (ball.radius * e_star**2 * v_n)) ** 0.2
-print(f"largest normal force: run {history['normal_force_N'].max():.4g} N, Hertz {f_max:.4g} N")
+print(
+    f"largest normal force: run {history['normal_force_N'].max():.4g} N, Hertz "
+    f"{f_max:.4g} N"
+)
 in_contact = history["time_s"][history["overlap_m"] > 0.0]
 print(f"contact time: run {in_contact[-1] - in_contact[0]:.4g} s, Hertz {t_c:.4g} s")
 
@@ -117,9 +125,16 @@ ax1.axhline(f_max, color="0.5", ls="--", lw=0.8, label="Hertz $F_{max}$")
 ax1.axvline(t_c * 1e6, color="0.5", ls=":", lw=0.8, label="Hertz $t_c$")
 ax1.set(xlabel="time (µs)", ylabel="force (N)", ylim=(None, 1.45 * f_max))
 ax1.legend(fontsize=8, loc="upper left", ncols=2)
-# the tangential force opposes the slip (negative here): its size against μ times the normal force
-ax2.plot(t, np.abs(history["tangential_force_N"]) / np.maximum(history["normal_force_N"], 1e-30))
-ax2.axhline(case.impact.friction, color="0.5", ls="--", lw=0.8, label="friction coefficient μ")
+# the tangential force opposes the slip (negative here): its size against μ times the
+# normal force
+ax2.plot(
+    t,
+    np.abs(history["tangential_force_N"])
+    / np.maximum(history["normal_force_N"], 1e-30),
+)
+ax2.axhline(
+    case.impact.friction, color="0.5", ls="--", lw=0.8, label="friction coefficient μ"
+)
 ax2.set(xlabel="time (µs)", ylabel="|tangential| / normal force", ylim=(0.0, 0.15))
 ax2.legend(fontsize=8, loc="upper right")
 fig.suptitle("alumina on glass, 3.9 m/s at 30°", fontsize=10)

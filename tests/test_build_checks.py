@@ -183,3 +183,56 @@ def test_pages_have_no_dated_measurements_or_commit_hashes():
     pages = [p for p in docs.glob("*.md") if not build_checks.RECORD_PAGES.search(p.name)]
     found = {p.name: build_checks._record_text(p.read_text(encoding="utf-8")) for p in pages}
     assert not any(found.values()), {name: lines for name, lines in found.items() if lines}
+
+
+def test_long_example_code_line_is_reported(tmp_path, caplog):
+    """A gallery example's code cell line, or a literal block's line in its text, over 88 characters is reported;
+    prose and maths of the text cells are not (the page wraps them), nor a short code line."""
+    example = (
+        f'"""\nTitle\n=====\n\nA prose line {LONG}.\n\n.. math::\n\n    x = {LONG}\n"""\n\n'
+        f"x = 1  # {'y' * 78}\n"
+        f'print("{LONG}")\n\n'
+        f"# %%\n# A prose line {LONG}, then a command::\n#\n#     impactwear {LONG}\n#\n\n"
+        f"# %%\n# A code directive:\n#\n# .. code-block:: bash\n#    :caption: run\n#\n#    impactwear {LONG}\n\n"
+        "y = 2\n"
+    )
+    app, _ = _site(tmp_path, {})
+    examples = Path(app.srcdir).parent / "examples"
+    examples.mkdir()
+    (examples / "a.py").write_text(example, encoding="utf-8")
+    app.config.sphinx_gallery_conf["examples_dirs"] = "../examples"
+    build_checks._check_code_lines(app)
+    found = _warnings(caplog)
+    assert [w.split(":")[0] for w in found] == [
+        "examples/a.py, line 13",
+        "examples/a.py, line 18",
+        "examples/a.py, line 27",
+    ]
+    assert all(w.endswith("(longer than 88: it scrolls)") for w in found), found
+
+
+def test_examples_have_no_long_code_lines():
+    examples = Path(__file__).resolve().parents[1] / "examples"
+    found = {p.name: build_checks._long_example_lines(p) for p in examples.glob("*.py")}
+    assert not any(found.values()), {name: lines for name, lines in found.items() if lines}
+
+
+def test_gallery_figure_with_overlapping_texts_is_reported():
+    """The gallery's scraper checks the figures an example leaves open: one whose tick labels crowd and whose
+    texts sit on one another is reported, naming the example and the figure; a plain one is not."""
+    gallery_support = pytest.importorskip("gallery_support")
+    plt = pytest.importorskip("matplotlib.pyplot")
+    plt.close("all")
+    try:
+        fig, ax = plt.subplots(figsize=(4.0, 3.0))
+        ax.set_xticks([0.0, 0.01], ["0.000", "0.010"])
+        ax.text(0.5, 0.5, "one label", transform=ax.transAxes)
+        ax.text(0.52, 0.51, "another label", transform=ax.transAxes)
+        found = gallery_support.figure_text_problems("x.py")
+        assert len(found) == 2 and all(f.startswith(f"x.py, figure {fig.number}: ") for f in found), found
+        plt.close(fig)
+        fig, ax = plt.subplots(figsize=(4.0, 3.0), layout="constrained")
+        ax.set(title="title", xlabel="x (m)", ylabel="y (m)")
+        assert gallery_support.figure_text_problems("x.py") == []
+    finally:
+        plt.close("all")

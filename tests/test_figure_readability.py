@@ -1,5 +1,6 @@
 """Figures a paper can use: a plastic zone drawn as a field with its boundary, a 3-D view whose relief is visible,
-a legend that covers no data, sweep panels without round-off or offset labels, integer impact numbers.
+a legend that covers no data, sweep panels without round-off or offset labels, integer impact numbers, no text
+over another or off the figure (every figure captured here is checked for that: tests/figure_capture.py).
 
 Each figure function is called directly on small synthetic data (matplotlib Agg); the figure is taken before it
 is saved (``save_figure`` replaced) so its artists can be inspected.
@@ -16,6 +17,7 @@ from matplotlib.contour import ContourSet
 from matplotlib.ticker import MaxNLocator
 
 import wear.app.figures.calibration as calibration_figures
+import wear.app.figures.common as common_figures
 import wear.app.figures.erosion as erosion_figures
 import wear.app.figures.paper as paper_figures
 import wear.app.figures.repeat as repeat_figures
@@ -442,6 +444,9 @@ def test_pressure_regimes_legends_cover_no_data(captured, tmp_path):
         )
     paper_figures.plot_pressure_regimes(loading, unloading, tmp_path / "fig.png", "synthetic")
     assert _under_legends(captured["fig.png"]) == []
+    # the zigzag is named: the solid curves are the FE's pressure at the surface nodes
+    for ax in captured["fig.png"].axes[:2]:
+        assert "FE, surface nodes" in [t.get_text() for t in ax.get_legend().get_texts()]
 
 
 # ------------------------------------------------------------------ reproduce --quick: no blank map
@@ -492,3 +497,107 @@ def test_quick_reproduction_sizes_draw_trends():
     assert len(set(QUICK_RESTITUTION_RATIOS)) >= 2
     skipped = default_case_wear(True)
     assert skipped["angles"].size == 0 and "skipped in quick mode" in skipped["skipped"]
+
+
+# ------------------------------------------------------------------ texts that overlap
+
+
+def test_overlapping_texts_finds_colliding_and_clipped_texts(tmp_path):
+    """A figure made to fail: crowded tick labels, two texts on one another, a legend over a text, a text run off
+    the right edge; each is found, and ``save_figure`` warns of them (and writes the figure). A plain figure
+    passes."""
+    fig, ax = common_figures.subplots(figsize=(4.0, 3.0))
+    ax.plot([0.0, 1.0], [0.0, 1.0], label="a line")
+    ax.set_xticks([0.0, 0.01, 0.5], ["0.000", "0.010", "0.5"])
+    ax.text(0.3, 0.5, "one label here", transform=ax.transAxes)
+    ax.text(0.32, 0.51, "another label", transform=ax.transAxes)
+    ax.text(0.8, 0.9, "under the legend", transform=ax.transAxes, ha="center", va="center")
+    ax.legend(loc="upper right")
+    fig.text(0.9, 0.5, "runs off the edge")
+    found = common_figures.overlapping_texts(fig)
+    assert any("'0.000' overlaps" in f and "'0.010'" in f for f in found), found
+    assert any("'one label here' overlaps" in f and "'another label'" in f for f in found), found
+    assert any("'under the legend'" in f and "legend 'a line'" in f for f in found), found
+    assert any("'runs off the edge' runs off the figure's right edge" in f for f in found), found
+    assert not any("'0.5'" in f for f in found), found
+    with pytest.warns(common_figures.FigureTextWarning, match="bad.png: .*'0.000' overlaps"):
+        common_figures.save_figure(fig, tmp_path / "bad.png")
+    assert (tmp_path / "bad.png").is_file()
+    fig, ax = common_figures.subplots(figsize=(4.0, 3.0), layout="constrained")
+    ax.plot([0.0, 1.0], [0.0, 1.0], label="a line")
+    ax.set(title="title", xlabel="x (m)", ylabel="y (m)")
+    ax.legend(loc="lower right")
+    assert common_figures.overlapping_texts(fig) == []
+
+
+def test_full_regime_map_reads(captured, tmp_path):
+    """The full reproduction's map, 4 speeds by 3 yield strengths (12 coupled runs; 6 before): every speed and
+    yield strength a plain tick label, no text over another (checked on capture)."""
+    from wear.app.reproduce.coupled import regime_grid
+
+    speeds, yields = regime_grid(False)
+    assert speeds.size * yields.size == 12
+    regime = np.add.outer(np.arange(yields.size)[::-1], np.arange(speeds.size)).clip(0, 3).astype(float)
+    e_fe = 1.0 - 0.05 * regime
+    paper_figures.plot_regime_map(
+        speeds, yields, regime, 1.5 - 0.1 * regime, e_fe, e_fe / 1.1, tmp_path / "map.png", "synthetic " * 20
+    )
+    fig = captured["map.png"]
+    for ax in [ax for ax in fig.axes if ax.collections and ax.get_xlabel()]:
+        lo, hi = ax.get_xlim()
+        assert [t.get_text() for t in ax.xaxis.get_majorticklabels() if lo <= t.get_position()[0] <= hi] == [
+            "0.3",
+            "0.6",
+            "1.5",
+            "3",
+        ]
+
+
+def test_restitution_ticks_are_plain_numbers(captured, tmp_path):
+    """Both panels' V/V_y axes read as plain numbers (1, 2, 5, 10… and the ratios computed), not 10⁰ or 2×10⁰."""
+    ratios = np.array([1.5, 2.0, 5.0, 15.0])
+    curve = np.geomspace(1.0, 100.0, 50)
+    paper_figures.plot_restitution(
+        ratios, np.array([0.99, 0.97, 0.9, 0.78]), curve, np.linspace(1.0, 0.37, 50), tmp_path / "r.png", "s"
+    )
+    fig = captured["r.png"]
+    fig.canvas.draw()
+    for ax in fig.axes[:2]:
+        lo, hi = ax.get_xlim()
+        shown = [t.get_text() for t in ax.xaxis.get_majorticklabels() if lo <= t.get_position()[0] <= hi]
+        assert shown and all(t.replace(".", "").isdigit() for t in shown), shown
+    assert "1.5" in [t.get_text() for t in fig.axes[1].xaxis.get_majorticklabels()]
+
+
+def test_wear_mass_maximum_says_the_angle_spacing(captured, tmp_path):
+    """The marked maximum is the largest of the angles computed: its label gives their spacing (20° for the
+    default run case, whose maximum is no finer than that)."""
+    series = [
+        dict(label="coarse", angles=np.array([15.0, 35.0, 55.0, 75.0]), mass=np.array([1.0, 2.0, 3.0, 2.0])),
+        dict(label="fine", angles=np.arange(0.0, 86.0, 5.0), mass=np.sin(np.radians(np.arange(0.0, 86.0, 5.0)) * 2)),
+    ]
+    paper_figures.plot_wear_mass(series, tmp_path / "w.png", "s")
+    labels = [t.get_text() for ax in captured["w.png"].axes for t in ax.get_legend().get_texts()]
+    assert labels == ["largest at 55°\n(of angles 20° apart)", "largest at 45°\n(of angles 5° apart)"]
+
+
+def test_wear_laws_legend_is_in_the_panels_type_size(captured, tmp_path):
+    """Eleven curves (as the full reproduction draws) in one legend below the panels, in 9-pt type (it was 7 pt),
+    none of its entries over a tick label, an axis label or the source line (checked on capture)."""
+    theta = np.arange(0.0, 89.01, 1.0)
+    speeds = np.geomspace(10.0, 150.0, 25)
+    curves = [
+        dict(
+            label=f"law {k}: as long as the longest label {'x' * 20}",  # 52 characters
+            reference=k >= 9,
+            angles=90.0 - theta,
+            rate=1e-4 * (1.0 + 0.1 * k) * np.sin(np.radians(2.0 * np.clip(90.0 - theta, 1.0, 89.0))),
+            speeds=speeds,
+            rate_vs_speed=1e-8 * speeds ** (2.0 + 0.1 * k),
+        )
+        for k in range(11)
+    ]
+    paper_figures.plot_wear_laws(curves, [30.0, 60.0], [1e-4, 9e-5], (30.0, 50.0, 60.0), tmp_path / "l.png", "s" * 200)
+    fig = captured["l.png"]
+    (legend,) = fig.legends
+    assert len(legend.get_texts()) == 12 and all(t.get_fontsize() >= 9 for t in legend.get_texts())

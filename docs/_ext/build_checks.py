@@ -26,7 +26,9 @@
   Python line inside parentheses, a TOML array over lines. A program's printed output is exempt, as it prints it
   (a wrapped copy would not be what it prints): in a ``console`` block the lines that are not commands (a command
   starts with ``$ ``, and runs on after a line ending in ``\\``), and an ``output`` block (a program's output or a
-  file's lines, verbatim). The gallery's examples (``examples/*.py``) are not searched.
+  file's lines, verbatim). The gallery's examples (``examples/*.py``, split into cells as sphinx-gallery splits
+  them) too: a line of a code cell, or of a literal block (``::``, ``.. code-block::``) in the docstring or a text
+  cell, longer than :data:`LONGEST_CODE_LINE`. What an example prints is exempt (it is not in the source).
 - **Reference apart from record**: a page of the user guide, the reference or the results (every page but the
   development record's, ``*-record.md``, and the changelog: :data:`RECORD_PAGES`) is reported if it holds an ISO
   date (``2026-11-27``: a dated measurement) or a commit hash (7 to 40 hexadecimal characters with a digit and a
@@ -44,6 +46,7 @@ from pathlib import Path
 from markdown_it import MarkdownIt
 from mdit_py_plugins.dollarmath import dollarmath_plugin
 from sphinx.util import logging
+from sphinx_gallery.py_source_parser import split_code_and_text_blocks
 
 logger = logging.getLogger(__name__)
 
@@ -216,8 +219,62 @@ def _long_code_lines(text: str, first_line: int = 0) -> list[str]:
     return found
 
 
+#: The start of a literal block in reST: a code directive, or a paragraph ending in ``::`` (not a directive's).
+_REST_CODE_START = re.compile(r"^\s*\.\.\s+(?:code-block|code|sourcecode)::|^(?!\s*\.\.\s).*::\s*$")
+
+
+def _rest_code_lines(text: str) -> list[tuple[int, str]]:
+    """The lines (index in ``text``, line as shown: the block's indent removed) of a reST ``text``'s literal blocks
+    and code directives (a directive's options left out)."""
+    lines = text.splitlines()
+    found = []
+    k = 0
+    while k < len(lines):
+        if not _REST_CODE_START.match(lines[k]):
+            k += 1
+            continue
+        indent = len(lines[k]) - len(lines[k].lstrip())
+        body = []
+        k += 1
+        while k < len(lines) and (not lines[k].strip() or len(lines[k]) - len(lines[k].lstrip()) > indent):
+            if lines[k].strip() and not (not body and re.match(r"^\s*:\w[\w-]*:", lines[k])):
+                body.append(k)
+            k += 1
+        shown = min((len(lines[j]) - len(lines[j].lstrip()) for j in body), default=0)
+        found += [(j, lines[j][shown:]) for j in body]
+    return found
+
+
+def _long_example_lines(path: Path) -> list[str]:
+    """The lines over :data:`LONGEST_CODE_LINE` characters of a gallery example's code, as its page shows it: the
+    code cells, and the literal blocks of its docstring and text cells (line numbers of the ``.py`` file)."""
+    found = []
+    for block in split_code_and_text_blocks(path)[1]:
+        if block.type == "code":
+            lines = list(enumerate(block.content.splitlines()))
+        else:  # a text cell: its lines follow its "# %%" line (sphinx-gallery drops the leading blank ones)
+            lines = _rest_code_lines(block.content)
+        for k, line in lines:
+            if len(line) > LONGEST_CODE_LINE:
+                found.append(f"line {block.lineno + k}: code line of {len(line)} characters: {line[:40]!r}…")
+    return found
+
+
+def _gallery_examples(app) -> list[Path]:
+    """The example scripts of the gallery (``sphinx_gallery_conf``'s ``examples_dirs``, relative to the source)."""
+    conf = getattr(app.config, "sphinx_gallery_conf", None) or {}
+    dirs = conf.get("examples_dirs", [])
+    return sorted(p for d in ([dirs] if isinstance(dirs, str) else dirs) for p in (Path(app.srcdir) / d).glob("*.py"))
+
+
 def _check_code_lines(app) -> None:
-    _warn_on_pages(app, None, _long_code_lines, f" (longer than {LONGEST_CODE_LINE}: it scrolls)")
+    why = f" (longer than {LONGEST_CODE_LINE}: it scrolls)"
+    _warn_on_pages(app, None, _long_code_lines, why)
+    root = Path(app.srcdir).resolve().parent
+    for path in _gallery_examples(app):
+        name = path.resolve().relative_to(root) if path.resolve().is_relative_to(root) else path.name
+        for problem in _long_example_lines(path):
+            logger.warning(f"{name}, {problem}{why}")
 
 
 #: The pages exempt from the record check: the development record (``*-record.md``) and the changelog, which

@@ -39,7 +39,8 @@ def bend(p: np.ndarray) -> np.ndarray:
     x = p[:, 0] * np.cos(w) - p[:, 1] * np.sin(w)
     y = p[:, 0] * np.sin(w) + p[:, 1] * np.cos(w)
     t = np.clip((s - L1) / R, 0.0, math.pi / 2.0)
-    along = np.where(s < L1, s - L1, np.where(s > L1 + lb, s - L1 - lb, 0.0))  # straight run past either end
+    # straight run past either end
+    along = np.where(s < L1, s - L1, np.where(s > L1 + lb, s - L1 - lb, 0.0))
     cx, cz = R - R * np.cos(t), R * np.sin(t)
     tx, tz = np.sin(t), np.cos(t)
     ex, ez = np.cos(t), -np.sin(t)
@@ -49,7 +50,11 @@ def bend(p: np.ndarray) -> np.ndarray:
 def main(case: Path) -> None:
     path = case / "constant" / "polyMesh" / "points"
     text = path.read_text()
-    start = text.index("\n(", text.index("FoamFile")) if "FoamFile" in text else text.index("(")
+    start = (
+        text.index("\n(", text.index("FoamFile"))
+        if "FoamFile" in text
+        else text.index("(")
+    )
     head, body = text[:start], text[start:]
     n = int(head.strip().split()[-1])
     nums = np.array(re.findall(r"\(([^()]*)\)", body)[:n], dtype=object)
@@ -57,7 +62,12 @@ def main(case: Path) -> None:
     if p.shape != (n, 3):
         raise SystemExit(f"{path}: expected {n} points, read {p.shape}")
     q = bend(p)
-    out = head + "\n(\n" + "\n".join(f"({float(a)!r} {float(b)!r} {float(c)!r})" for a, b, c in q) + "\n)\n\n"
+    out = (
+        head
+        + "\n(\n"
+        + "\n".join(f"({float(a)!r} {float(b)!r} {float(c)!r})" for a, b, c in q)
+        + "\n)\n\n"
+    )
     out += "// ************************************************************************* //\n"
     path.write_text(out)
 

@@ -1,5 +1,5 @@
-"""What every figure module shares: figures drawn on their own Agg canvas, a legend placed clear of the data, and
-the atomic PNG save.
+"""What every figure module shares: figures drawn on their own Agg canvas, a legend placed clear of the data, a
+check that no text of a figure overlaps another or runs off its edge, and the atomic PNG save.
 
 The figures are built with matplotlib's object-oriented API (:class:`matplotlib.figure.Figure` on a
 :class:`~matplotlib.backends.backend_agg.FigureCanvasAgg`), never through pyplot: writing a PNG needs no display,
@@ -9,6 +9,7 @@ and importing or running the toolkit leaves the user's pyplot backend and open f
 from __future__ import annotations
 
 import os
+import warnings
 from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
@@ -19,12 +20,22 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.collections import PathCollection
 from matplotlib.figure import Figure
 from matplotlib.legend import Legend
+from matplotlib.text import Text
 from matplotlib.ticker import FixedLocator, FuncFormatter, LogLocator, NullFormatter
 from matplotlib.transforms import offset_copy
 
 from wear.app.outputs.writer import atomic_write
 
-__all__ = ["place_legend", "place_legends", "plain_log_ticks", "save_figure", "subplots"]
+__all__ = [
+    "FigureTextWarning",
+    "figure",
+    "overlapping_texts",
+    "place_legend",
+    "place_legends",
+    "plain_log_ticks",
+    "save_figure",
+    "subplots",
+]
 
 #: Where :func:`place_legend` tries the legend inside the axes, in this order (matplotlib's location names).
 INSIDE = (
@@ -43,27 +54,118 @@ INSIDE = (
 MAX_HEADROOM = 1.5
 
 
+#: Overlap (pixels at the figure's dpi, in each direction) from which two texts collide, or a text runs off the
+#: figure: less is two boxes that touch (neighbouring tick labels' boxes often do, their glyphs clear).
+OVERLAP_PX = 1.0
+
+
+class FigureTextWarning(UserWarning):
+    """A figure's texts overlap one another or run off its edge (:func:`overlapping_texts`)."""
+
+
+def figure(figsize: tuple[float, float] | None = None, layout: str | None = None) -> Figure:
+    """An empty figure of ``figsize`` (inches) on an Agg canvas."""
+    fig = Figure(figsize=figsize, layout=layout)
+    FigureCanvasAgg(fig)
+    return fig
+
+
 def subplots(
     nrows: int = 1, ncols: int = 1, *, figsize: tuple[float, float] | None = None, layout: str | None = None, **kw: Any
 ) -> tuple[Figure, Any]:
     """A figure of ``figsize`` (inches) on an Agg canvas and its axes, as ``pyplot.subplots`` returns them
     (``kw``: ``sharex``, ``sharey``, ``squeeze``, ``gridspec_kw``, … of :meth:`matplotlib.figure.Figure.subplots`)."""
-    fig = Figure(figsize=figsize, layout=layout)
-    FigureCanvasAgg(fig)
+    fig = figure(figsize, layout)
     return fig, fig.subplots(nrows, ncols, **kw)
 
 
+def _axis_texts(ax: Axes, name: str) -> list[tuple[str, Text]]:
+    """The texts an axes draws: its titles, its axes' labels, offset texts and the labels of the ticks it draws
+    (a tick outside the view limits is not drawn), and its own texts and annotations (``name``: for the report)."""
+    texts = [(f"title of {name}", t) for t in (ax.title, ax._left_title, ax._right_title)]
+    axes = [ax.xaxis, ax.yaxis] + ([ax.zaxis] if hasattr(ax, "zaxis") else [])
+    for axis in (a for a in axes if a.get_visible()):  # a twin's shared axis is hidden
+        letter = axis.axis_name
+        texts += [(f"{letter} label of {name}", axis.label), (f"{letter} offset of {name}", axis.offsetText)]
+        for tick in axis._update_ticks():  # the ticks drawn (matplotlib's own choice at draw time)
+            texts += [(f"{letter} tick label of {name}", t) for t in (tick.label1, tick.label2)]
+    texts += [(f"text of {name}", t) for t in ax.texts]
+    return texts
+
+
+def _text_box(text: Text, renderer):
+    """The box of a text's glyphs (an annotation's without its arrow; a text's bbox patch left out)."""
+    return Text.get_window_extent(text, renderer)
+
+
+def overlapping_texts(fig: Figure) -> list[str]:
+    """The texts of ``fig`` that a reader cannot read whole: each pair of texts whose boxes overlap, and each text
+    that runs off the figure's edge, as sentences (empty: every text clear).
+
+    The texts: the figure's own (a suptitle, a source line), and of every axes (a colour bar's included) the
+    titles, the axis labels, the drawn tick labels, the offset texts and the texts and annotations placed on it;
+    a legend counts as one box. Boxes are in pixels at the figure's dpi after a draw; they collide when they
+    overlap by more than :data:`OVERLAP_PX` both ways. A text of its own axes' box (a cell's value in a map) is
+    a text like any other."""
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    named = [("figure text", t) for t in fig.texts]
+    for k, ax in enumerate(fig.axes):
+        if not ax.get_visible():
+            continue
+        name = f"axes {k + 1}" + (
+            f" ({ax.get_label()})" if ax.get_label() and not ax.get_label().startswith("<") else ""
+        )
+        named += [(n, t) for n, t in _axis_texts(ax, name) if ax.axison or n.startswith(("title", "text"))]
+    boxes = []
+    for name, text in named:
+        if text.get_visible() and text.get_text().strip() and text.get_alpha() != 0:
+            boxes.append((f"{name} {text.get_text()!r}", _text_box(text, renderer)))
+    legends = [ax.get_legend() for ax in fig.axes if ax.get_legend() is not None] + list(fig.legends)
+    boxes += [
+        (f"legend {legend.get_texts()[0].get_text()!r}…", legend.get_window_extent(renderer)) for legend in legends
+    ]
+    found = []
+    for i, (a, box_a) in enumerate(boxes):
+        for b, box_b in boxes[i + 1 :]:
+            wide = min(box_a.x1, box_b.x1) - max(box_a.x0, box_b.x0)
+            high = min(box_a.y1, box_b.y1) - max(box_a.y0, box_b.y0)
+            if wide > OVERLAP_PX and high > OVERLAP_PX:
+                found.append(f"{a} overlaps {b}")
+    edge = fig.bbox
+    for name, box in boxes:
+        off = [
+            side
+            for side, past in (
+                ("left", edge.x0 - box.x0),
+                ("right", box.x1 - edge.x1),
+                ("bottom", edge.y0 - box.y0),
+                ("top", box.y1 - edge.y1),
+            )
+            if past > OVERLAP_PX
+        ]
+        if off:
+            found.append(f"{name} runs off the figure's {' and '.join(off)} edge")
+    return found
+
+
 def save_figure(fig: Figure, path: str | os.PathLike, dpi: int = 120, **savefig: Any) -> Path:
-    """Write ``fig`` to ``path`` as PNG (``savefig`` options passed on; through the one atomic writer)."""
+    """Write ``fig`` to ``path`` as PNG (``savefig`` options passed on; through the one atomic writer). A text that
+    overlaps another or runs off the figure (:func:`overlapping_texts`) is warned of (:class:`FigureTextWarning`):
+    the figure is written all the same."""
+    found = overlapping_texts(fig)
+    if found:
+        warnings.warn(f"{Path(path).name}: {'; '.join(found)}", FigureTextWarning, stacklevel=2)
     return atomic_write(path, lambda name: fig.savefig(name, dpi=dpi, format="png", **savefig), mode="path")
 
 
-def plain_log_ticks(axis, values) -> None:
+def plain_log_ticks(axis, values, few: int = 8) -> None:
     """Ticks of a log ``axis`` written as plain numbers (20, 30, 50, not 2×10¹): at each of ``values`` where there
-    are a few (≤ 8: the speeds measured, the cells of a map), else at 1, 2, 5 × 10ⁿ; minor ticks unlabelled."""
+    are a few (≤ ``few``: the speeds measured, the cells of a map), else at 1, 2, 5 × 10ⁿ; minor ticks unlabelled.
+    ``few=0``: always at 1, 2, 5 × 10ⁿ (a histogram's bin edges are no values to label)."""
     values = np.asarray(values, float)
     distinct = np.unique(values[np.isfinite(values)])
-    axis.set_major_locator(FixedLocator(distinct) if len(distinct) <= 8 else LogLocator(subs=(1.0, 2.0, 5.0)))
+    axis.set_major_locator(FixedLocator(distinct) if len(distinct) <= few else LogLocator(subs=(1.0, 2.0, 5.0)))
     axis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
     axis.set_minor_formatter(NullFormatter())
 

@@ -30,6 +30,7 @@ __all__ = [
     "plot_regime_map",
     "plot_restitution",
     "plot_wear_laws",
+    "grid_step",
 ]
 
 DPI = 100
@@ -119,7 +120,11 @@ def plot_wear_mass(series: Sequence[dict], path, source: str) -> Path:
             ax.set_yticks([])
         elif np.any(np.isfinite(mass)):
             i = int(np.nanargmax(mass))
-            ax.plot(angles[i], mass[i], "*", ms=13, color="k", label=f"max at {angles[i]:g}°")
+            # the largest of the computed angles, not a maximum located between them: the spacing says how closely
+            label = f"largest at {angles[i]:g}°" + (
+                f"\n(of angles {grid_step(angles):g}° apart)" if angles.size > 1 else ""
+            )
+            ax.plot(angles[i], mass[i], "*", ms=13, color="k", label=label)
             ax.axvline(angles[i], color="k", lw=0.6, ls=":")
         else:
             ax.text(0.5, 0.5, "no result (FE runs failed)", transform=ax.transAxes, ha="center", color="C3")
@@ -132,6 +137,11 @@ def plot_wear_mass(series: Sequence[dict], path, source: str) -> Path:
     fig.suptitle("Fig. 9: worn mass vs impact angle, α = 1, β = 0.3", fontsize=11)
     fig.subplots_adjust(bottom=0.2, top=0.82, wspace=0.35)
     return save_sourced(fig, path, source)
+
+
+def grid_step(angles) -> float:
+    """The spacing (deg) of the computed ``angles``: the smallest step between neighbours."""
+    return float(np.min(np.diff(np.unique(np.asarray(angles, float)))))
 
 
 def plot_sliding_duration(angles, speeds, ratio, path, source: str, rigid_body=None) -> Path:
@@ -187,6 +197,9 @@ def plot_pressure_regimes(loading: Sequence[dict], unloading: Sequence[dict], pa
         c = COLORS[k % len(COLORS)]
         ax1.plot(s["r"] / s["scale_r"], s["p"] / s["scale_p"], "-", color=c, label=s["label"])
         ax1.plot(s["ref_r"] / s["scale_r"], s["ref_p"] / s["scale_p"], ":", color=c, lw=1)
+    # the FE curves are the pressure at the surface nodes: after yield it ripples node to node (the imprint of the
+    # load increments), which the legend names so that a reader does not take it for noise of the plot
+    ax1.plot([], [], "k-", lw=1, label="FE, surface nodes")
     ax1.plot([], [], "k:", lw=1, label="Hertz, Eq. 16 (same F)")
     ax1.set_xlabel("r / a (FE contact radius)")
     ax1.set_ylabel("p / p_mean (FE)")
@@ -195,6 +208,7 @@ def plot_pressure_regimes(loading: Sequence[dict], unloading: Sequence[dict], pa
         c = COLORS[k % len(COLORS)]
         ax2.plot(s["r"] / s["scale_r"], s["p"] / s["scale_p"], "-", color=c, label=s["label"])
         ax2.plot(s["ref_r"] / s["scale_r"], s["ref_p"] / s["scale_p"], ":", color=c, lw=1)
+    ax2.plot([], [], "k-", lw=1, label="FE, surface nodes")
     ax2.plot([], [], "k:", lw=1, label="Mesarovic-Johnson, Eq. 19")
     ax2.set_xlabel("r / a*")
     ax2.set_ylabel("p / p*")
@@ -260,7 +274,7 @@ def plot_regime_map(speeds, yields, regime, ratio, e_fe, e_thornton, path, sourc
         plain_log_ticks(a.yaxis, sy)
         a.set_xlabel("impact speed (m/s)")
         a.set_ylabel("plate yield strength (MPa)")
-    fig.subplots_adjust(bottom=0.18, wspace=0.5, left=0.06, right=0.97)
+    fig.subplots_adjust(bottom=0.18, wspace=0.5, left=0.06, right=0.94)  # the last colour bar's label inside
     return save_sourced(fig, path, source)
 
 
@@ -273,6 +287,7 @@ def plot_restitution(ratio, e_fe, ratio_curve, e_thornton, path, source: str, no
     ax.set_ylabel("normal restitution e")
     ax.set_title("Normal restitution" + (f" ({note})" if note else ""), fontsize=10)
     ax.grid(alpha=0.3, which="both")
+    plain_log_ticks(ax.xaxis, ratio_curve)  # 1, 2, 5, 10…, not 10⁰ and 10¹ alone
     ax.legend(fontsize=8)
     ax2.semilogx(ratio, (np.asarray(e_fe) / thornton_restitution(ratio) - 1) * 100, "o-", color="C0")
     ax2.axhline(0, color="k", lw=0.8)
@@ -288,7 +303,7 @@ def plot_wear_laws(curves: list[dict], data_angle, data_rate, speeds, path, sour
     """Erosion ratio (kg/kg) against the angle from the surface at the calibration speed, and against the speed at
     30° from the surface, for each law (``curves``: label, angles deg from the surface, rate, speeds m/s,
     rate_vs_speed; ``reference``: drawn in black), with the data they were calibrated to (markers)."""
-    fig, (ax, ax2) = subplots(1, 2, figsize=(11, 5.6))
+    fig, (ax, ax2) = subplots(1, 2, figsize=(11, 6.4))
     styles = iter(("--", ":", "-."))
     for k, c in enumerate(curves):
         style, colour = (next(styles), "k") if c.get("reference") else ("-", COLORS[k % len(COLORS)])
@@ -308,18 +323,23 @@ def plot_wear_laws(curves: list[dict], data_angle, data_rate, speeds, path, sour
     ax.set_ylabel("erosion ratio (kg/kg)")
     ax.set_title("at 50 m/s (the calibration speed)", fontsize=9)
     ax.grid(alpha=0.3, which="both")
+    plain_log_ticks(ax2.xaxis, c["speeds"])  # 10, 20, 50, 100 m/s, not 10¹ and 10²
     ax2.set_xlabel("impact speed (m/s)")
     ax2.set_title("at 30° from the surface (grey lines: the calibration speeds)", fontsize=9)
     ax2.grid(alpha=0.3, which="both")
     for s in speeds:
         ax2.axvline(s, color="0.7", lw=0.8)
-    fig.legend(
+    # one legend for both panels, below them in the panels' own type size (it names 11 curves: in small type
+    # beside the panels it was unreadable), above the source line
+    legend = fig.legend(
         *ax.get_legend_handles_labels(),
         loc="lower center",
-        bbox_to_anchor=(0.5, 0.05),
-        ncol=3,
-        fontsize=7,
+        bbox_to_anchor=(0.5, 0.06),
+        ncol=2,
+        fontsize=9,
         frameon=False,
     )
-    fig.subplots_adjust(bottom=0.34, wspace=0.25, top=0.93)
+    fig.canvas.draw()
+    top = fig.transFigure.inverted().transform(legend.get_window_extent().get_points())[1, 1]
+    fig.subplots_adjust(bottom=top + 0.11, wspace=0.25, top=0.94)  # room for the x labels above the legend
     return save_sourced(fig, path, source)

@@ -18,6 +18,7 @@ import numpy as np
 from matplotlib import colormaps
 from matplotlib.cm import ScalarMappable
 from matplotlib.colors import LogNorm
+from matplotlib.figure import Figure
 from matplotlib.patches import Patch
 from matplotlib.path import Path as Polygon2D
 from matplotlib.text import Text
@@ -26,10 +27,10 @@ from mpl_toolkits.mplot3d import proj3d
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 from scipy.spatial import ConvexHull, QhullError
 
-from wear.app.figures.common import plain_log_ticks, save_figure, subplots
+from wear.app.figures.common import figure, plain_log_ticks, save_figure, subplots
 from wear.wall.mesh import Wall
 
-__all__ = ["plot_wall_rate", "plot_impact_histograms"]
+__all__ = ["draw_wall_rate", "plot_wall_rate", "plot_impact_histograms"]
 
 #: Colour of the faces no particle wore: a light neutral grey, apart from every colour of the rate scale, that
 #: reads as bare wall (the legend says "no wear").
@@ -56,18 +57,28 @@ LABEL_PLACES = (
 )
 
 
+#: Size (inches) of the wall figure.
+WALL_FIGSIZE = (8.0, 6.5)
+
+
 def plot_wall_rate(
     wall: Wall, rate_mm_year: np.ndarray, hot_face: int | None, path: str | os.PathLike, title: str = ""
 ) -> Path:
+    """:func:`draw_wall_rate` on a figure of :data:`WALL_FIGSIZE`, into ``path``."""
+    fig = figure(WALL_FIGSIZE)
+    draw_wall_rate(fig, wall, rate_mm_year, hot_face, title)
+    return save_figure(fig, path)
+
+
+def draw_wall_rate(fig: Figure, wall: Wall, rate_mm_year: np.ndarray, hot_face: int | None, title: str = "") -> None:
     """``wall`` coloured by ``rate_mm_year`` (one per face; logarithmic scale over :data:`RATE_DECADES` decades,
     unworn faces in :data:`UNWORN`, named in a legend), orthographic with equal axes that the wall fills, seen from
-    the side the face ``hot_face`` faces, that face marked and labelled off the wall, into ``path``."""
+    the side the face ``hot_face`` faces, that face marked and labelled off the wall, on the empty figure ``fig``
+    (laid out for :data:`WALL_FIGSIZE`; a pyplot figure too, so that a script or a notebook shows it)."""
     rate = np.asarray(rate_mm_year, float)
     # one collection of faces (depth-sorted within itself), then the marker and the label over it: mplot3d's own
     # stacking by depth would bury the marker among the faces around it
-    fig, ax = subplots(
-        figsize=(8.0, 6.5), subplot_kw={"projection": "3d", "proj_type": "ortho", "computed_zorder": False}
-    )
+    ax = fig.add_subplot(projection="3d", proj_type="ortho", computed_zorder=False)
     ax.set_position((0.0, 0.0, 0.84, 0.92 if title else 0.98))  # the colour bar and the legend to its right
     tri, owner = wall.triangles
     top = float(rate.max()) if rate.size and rate.max() > 0 else 1.0
@@ -90,7 +101,6 @@ def plot_wall_rate(
     _fill_axes(ax)
     if hot_face is not None:
         _label_hot_spot(ax, wall, rate, hot_face)
-    return save_figure(fig, path)
 
 
 def _equal_axes(ax, points: np.ndarray) -> None:
@@ -249,7 +259,7 @@ def plot_impact_histograms(
         first, last = used[0], used[-1] + 1
         ax1.stairs(speed[first:last], edges[first : last + 1], fill=True, alpha=0.7)
         ax1.set_xscale("log")
-        plain_log_ticks(ax1.xaxis, edges[first : last + 1])
+        plain_log_ticks(ax1.xaxis, edges[first : last + 1], few=0)  # 1, 2, 5 m/s…: edges 0.1 decade apart crowd
     ax1.set_xlabel("impact speed (m/s)")
     ax1.set_ylabel(f"particles per speed bin{_bin_width(np.log10(edges), ' per decade', reciprocal=True)}")
     angle_edges = np.asarray(angle_edges_deg, float)

@@ -38,14 +38,17 @@ def _at_max_overlap(fe):
     return fe.regime[k], ratio
 
 
-REGIME_SPEEDS = (0.3, 1.0, 3.0)
-REGIME_YIELDS = (500e6, 1600e6)
+REGIME_SPEEDS = (0.3, 0.6, 1.5, 3.0)
+REGIME_YIELDS = (500e6, 900e6, 1600e6)
 
 
 def regime_grid(quick: bool) -> tuple[np.ndarray, np.ndarray]:
-    """(speeds (m/s), yield strengths (Pa)) of the regime map: :data:`REGIME_SPEEDS` × :data:`REGIME_YIELDS`;
-    quick: the end speeds only, still two by two, so that the map is a map (one row of cells showed nothing)."""
-    return np.array(REGIME_SPEEDS[::2] if quick else REGIME_SPEEDS), np.array(REGIME_YIELDS)
+    """(speeds (m/s), yield strengths (Pa)) of the regime map: :data:`REGIME_SPEEDS` × :data:`REGIME_YIELDS`, 12
+    cells; quick: the end values only, still two by two, so that the map is a map (one row of cells showed
+    nothing)."""
+    if quick:
+        return np.array(REGIME_SPEEDS[:: len(REGIME_SPEEDS) - 1]), np.array(REGIME_YIELDS[:: len(REGIME_YIELDS) - 1])
+    return np.array(REGIME_SPEEDS), np.array(REGIME_YIELDS)
 
 
 def regime_map(quick: bool) -> dict:

@@ -225,7 +225,9 @@ def fig_pressure_regimes(out: Path, quick: bool) -> FigureReport:
         d["unloading"],
         out / f"{rep.name}.png",
         "FE: fem.indent (this toolkit; steel plate E 210 GPa, ν 0.3, Y 210 MPa, rigid ball R 10 mm); Hertz Eq. 16 "
-        "at the FE force; Mesarovic & Johnson 2000 (Eq. 19) from the FE's a*, p* = F*/(πa*²) after a load to w = 50",
+        "at the FE force; Mesarovic & Johnson 2000 (Eq. 19) from the FE's a*, p* = F*/(πa*²) after a load to w = 50. "
+        "FE curves: the pressure at the surface nodes along the load path; after yield it ripples from node to node, "
+        "the imprint of the load increments (docs: the FE plate, 'The pressure it reports')",
     )
     ratios = {s["label"]: s["ratio"] for s in d["loading"]}
     rep.numbers = {f"p_max/p_mean at {k}": v for k, v in ratios.items()}

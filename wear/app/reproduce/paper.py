@@ -253,9 +253,11 @@ def fig09(out: Path, quick: bool) -> FigureReport:
         "(sliding time grows with the angle, the normal load falls)."
     )
     rep.ours = (
-        "Angle of maximum wear: "
+        "Angle of maximum wear (the largest of the angles computed): "
         + ", ".join(
-            f"**{p:g}°** for the {n}" for n, p, s in zip(names, peaks, series, strict=True) if not s.get("skipped")
+            f"**{p:g}°** for the {n} (angles {plots.grid_step(s['angles']):g}° apart)"
+            for n, p, s in zip(names, peaks, series, strict=True)
+            if not s.get("skipped")
         )
         + f". The default run case (wear.run, K and exponents of its [wear] table) is computed with {fe_note}; "
         f"the other panels use {law}. The mass scales linearly with K; the angle of maximum wear does not."
