@@ -17,9 +17,11 @@ The batch kernel runs impacts in parallel (``prange``); one impact's state lives
 of one impact do not depend on the batch it runs in (same floating-point operations, no fastmath).
 SI units throughout.
 
-One concept longer than ~400 lines: the step, the single-impact loop, the SIMD lane block and the batch driver stay
-in one file because numba inlines ``inline="always"`` kernels and checks its cache only against the file that
-defines a kernel, so a kernel split from its callers would leave their caches stale.
+One concept longer than ~400 lines (~100 of them the kernels' arguments, one a line): the step, the single-impact
+loop, the SIMD lane block and the batch driver stay in one file because numba inlines ``inline="always"`` kernels
+and checks its cache only against the file that defines a kernel, so a kernel split from its callers would leave
+their caches stale after an edit, silently (the force laws of :mod:`contact.laws` already cost that, and the
+development notes say to delete the caches; a second file of kernels would double the trap).
 """
 
 from __future__ import annotations

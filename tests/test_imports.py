@@ -224,6 +224,26 @@ def test_light_modules_do_not_load_the_fe_plate(module):
     assert out.stdout.strip() == "[]", f"import {module} loads {out.stdout.strip()}"
 
 
+@pytest.mark.parametrize("module", ["wear.law", "contact.checks"])
+def test_the_wear_law_and_the_checks_load_no_numba(module):
+    """The wear law and the input checks are plain numpy: importing them (in a fresh interpreter) loads neither the
+    impact's numba engine nor scipy nor scikit-fem (``contact/__init__.py`` exports the impact and the closed forms
+    on first access), so that a script or a worker that evaluates a wear law starts in a fraction of a second."""
+    code = f"import sys, {module}; print(sorted(m for m in ('numba', 'scipy', 'skfem') if m in sys.modules))"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
+    assert out.stdout.strip() == "[]", f"import {module} loads {out.stdout.strip()}"
+
+
+@pytest.mark.parametrize("module", sorted(m for m in MODULES if not m.startswith(("wear.app", "meshes"))))
+def test_no_matplotlib_below_the_command_line(module):
+    """Plotting is the command line's (``wear.app``): no module below it imports matplotlib, not even inside a
+    function (the run-time check below sees only what importing the chains loads)."""
+    for node in ast.walk(TREES[module]):
+        names = [a.name for a in node.names] if isinstance(node, ast.Import) else []
+        names += [node.module or ""] if isinstance(node, ast.ImportFrom) else []
+        assert not any(n.split(".")[0] == "matplotlib" for n in names), f"{MODULES[module]}:{node.lineno}: {names}"
+
+
 def test_the_chains_load_no_matplotlib():
     """Figures are the command line's (``wear.app``): importing the chains (in a fresh interpreter) loads no
     matplotlib module, so that a script that runs them pays nothing for plotting (the 3-D plate's fields are located

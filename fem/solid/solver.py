@@ -26,9 +26,11 @@ solved by CG (GMRES where slip tractions make it nonsymmetric) preconditioned wi
 symmetric such matrix (:mod:`fem.core.kept_factor`), to an inexact-Newton tolerance, refactorised when the Krylov
 method is slow: a modified-Newton iteration that keeps one factorisation over much of an increment.
 
-One module for one algorithm (~430 lines): the Newton loop, the contact and stick set rounds and the line search
-share the solver's state and its counters (the Coulomb law itself is :mod:`fem.solid.friction`, the linear systems
-:mod:`fem.solid.systems`, the increment driver :mod:`fem.core.increments`).
+One module for one algorithm (~410 lines): the Newton loop at fixed sets and the contact and stick set rounds around
+it share the solver's state (its sets, tolerances, kept factor) and its counters; split, each half would take that
+state as a dozen arguments. What needs none of it is apart: the Coulomb law (:mod:`fem.solid.friction`), the linear
+systems and the stick rows' augmented-Lagrangian step (:mod:`fem.solid.systems`), the backtracking of a Newton step
+(:mod:`fem.solid.line_search`), the increment driver (:mod:`fem.core.increments`).
 """
 
 from __future__ import annotations
@@ -48,6 +50,7 @@ from fem.core.plasticity import J2Material, radial_return
 from fem.core.sphere import sphere_surface
 from fem.solid.forms import discretise_solid
 from fem.solid.friction import SurfaceFriction
+from fem.solid.line_search import backtrack
 from fem.solid.state import SolidState
 from fem.solid.systems import TangentSystems
 
@@ -55,6 +58,13 @@ __all__ = ["SETS_UNSETTLED", "SolidSolver"]
 
 #: Why an attempt failed whose equilibria converged but whose contact and stick sets did not settle.
 SETS_UNSETTLED = "contact/stick sets did not settle"
+
+
+def _linear_tolerance(target_force: float, size: float) -> float:
+    """Inexact Newton (Eisenstat & Walker 1996): the linear residual (N) a step may leave, tight only where the
+    equilibrium residual is near its target ``target_force`` (N); ``size`` (N) is the step's own scale, the
+    out-of-balance force plus the constraints' defect times a DOF's stiffness. The convergence test stays exact."""
+    return max(1e-3 * target_force, min(1e-2 * size, 0.1 * np.sqrt(target_force * size)))
 
 
 class SolidSolver:
@@ -164,12 +174,7 @@ class SolidSolver:
         d = self.disc
         overlap, centre, slide = target
         obstacle = self.obstacle(overlap, centre)
-        constrained = np.unique(np.concatenate([d.fixed_dofs, self.uz[contact]]))
-        values = np.zeros(d.ndofs)
-        values[self.uz[contact]] = obstacle[contact]
-        values = values[constrained]
-        free = np.ones(d.ndofs, bool)
-        free[constrained] = False
+        constrained, values, free = self._prescribed(contact, obstacle)
         constraint = self.systems.constraint(free)
         surface = self.surface
         slip_vertices = surface.slip_vertices(stick) if mu > 0.0 else None
@@ -207,12 +212,8 @@ class SolidSolver:
             diag = float(np.mean(self.systems.diagonal(K)[free]))
             rhs[constrained] = diag * du_c
             K_mod = self.systems.constrained(K, constraint, diag)
-            # inexact Newton (Eisenstat & Walker 1996): the linear residual a step may leave, in N, tight only where
-            # the equilibrium residual is near its target; the convergence test above stays exact
-            target_force = rtol * scale
             moved = np.linalg.norm(du_c) + (0.0 if rows is None else np.linalg.norm(targets - rows @ (u + step)))
-            size = residual + diag * float(moved)
-            tolerance = max(1e-3 * target_force, min(1e-2 * size, 0.1 * np.sqrt(target_force * size)))
+            tolerance = _linear_tolerance(rtol * scale, residual + diag * float(moved))
             key = constrained.tobytes() + (b"elastic" if elastic else b"")
             coupling = None
             if slipping:
@@ -222,8 +223,8 @@ class SolidSolver:
                     du, new_multipliers = self.linear.solve(K_mod, rhs, tolerance, key, coupling), multipliers
                 else:
                     defect = targets - rows @ (u + step)
-                    du, new_multipliers = self._augmented_step(
-                        K_mod, rhs, rows, row_ids, defect, multipliers, key, tolerance, coupling
+                    du, new_multipliers = self.systems.augmented_step(
+                        self.linear, K_mod, rhs, rows, row_ids, defect, multipliers, key, tolerance, coupling
                     )
             except SingularMatrixError:
                 break
@@ -238,11 +239,23 @@ class SolidSolver:
                 multipliers = new_multipliers
                 upd, f, normal_moments, residual_vector, balanced = balance(u, multipliers)
             else:
-                searched = self._line_search(balance, free, u, step, du, multipliers, new_multipliers, residual)
+                searched = backtrack(balance, free, u, step, du, multipliers, new_multipliers, residual)
                 if searched is None:
                     break
-                u, multipliers, (upd, f, normal_moments, residual_vector, balanced) = searched
+                u, multipliers, (upd, f, normal_moments, residual_vector, balanced), shortened = searched
+                self.stats.backtracks += int(shortened)
         raise NotConverged(residual)
+
+    def _prescribed(self, contact: np.ndarray, obstacle: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The constrained DOFs of the ``contact`` set (the clamped ones and the contact nodes' u_z), the displacements
+        (m) prescribed on them (0 and the ``obstacle``) and the mask of the free DOFs."""
+        d = self.disc
+        constrained = np.unique(np.concatenate([d.fixed_dofs, self.uz[contact]]))
+        values = np.zeros(d.ndofs)
+        values[self.uz[contact]] = obstacle[contact]
+        free = np.ones(d.ndofs, bool)
+        free[constrained] = False
+        return constrained, values[constrained], free
 
     def _balance(self, start: SolidState, contact, rows, slip_vertices, direction, mu: float, u, multipliers):
         """The state at displacement ``u`` (m): (stress update, internal force f (N), the normal hat moments (N) or
@@ -259,55 +272,6 @@ class SolidSolver:
         # the stick tractions (the multipliers of the last solve) balance the residual on the stick zone
         balanced = residual_vector if rows is None else residual_vector - rows.T @ multipliers
         return upd, f, normal_moments, residual_vector, balanced
-
-    def _line_search(self, balance, free, u, step, du, multipliers, new_multipliers, residual: float):
-        """Backtrack a Newton step (Armijo on the out-of-balance norm): with a perfectly plastic surface layer under
-        a follower slip traction the consistent tangent can overshoot into a spreading plastic mechanism (the
-        yielding points grow tenfold and the residual by 10⁷ within ten full steps) where a fraction of the step
-        converges. The contact's gap closure ``step`` (m, on the constrained DOFs) is taken whole and the fraction
-        applies to the rest of ``du``; the reference is the residual after the gap closure (``residual``, N, when
-        the step closes no gap). Halves up to 5 times. Returns (u, λ, the ``balance`` of u), or None where no
-        fraction lowers the residual: the tangent does not point downhill and the increment falls back to the
-        elastic stiffness."""
-        if step.any():
-            residual = float(np.linalg.norm(balance(u + step, multipliers)[4][free]))
-        rest = du - step
-        fraction = 1.0
-        for _ in range(6):
-            trial_u = u + step + fraction * rest
-            trial_multipliers = multipliers + fraction * (new_multipliers - multipliers)
-            trial = balance(trial_u, trial_multipliers)
-            if np.linalg.norm(trial[4][free]) <= (1.0 - 1e-4 * fraction) * residual:
-                self.stats.backtracks += int(fraction < 1.0)
-                return trial_u, trial_multipliers, trial
-            fraction *= 0.5
-        return None
-
-    def _augmented_step(self, K_mod, rhs, rows, row_ids, defect, multipliers, key: bytes, tolerance: float, coupling):
-        r"""One Newton step of the stuck system [[K_mod, Cᵀ], [C, 0]] [du; λ] = [rhs; defect] as an augmented
-        Lagrangian (Uzawa) update from the multipliers λ_k of the step before:
-
-        .. math:: (K + \rho C^T C)\,du = r - C^T\lambda_k + \rho C^T d,\qquad
-                  \lambda_{k+1} = \lambda_k + \rho\,(C\,du - d).
-
-        ρ is 10⁴ × the stiffness of a DOF over the rows' own scale (the rows are scaled to unit sums, so the
-        constraint error is a length): each update gains about four digits on the multipliers, so they converge
-        alongside Newton, one solve a step. The solve (:class:`fem.core.kept_factor.KeptFactor`) is preconditioned by
-        the kept factor of an earlier K + ρCᵀC with the same constrained DOFs and stick rows (the penalty part is
-        then exact in the preconditioner and the Krylov method sees only the plastic points' change of tangent and
-        the slip tractions' ``coupling``), within ``tolerance`` (N). A saddle-point factorisation (PARDISO's
-        symmetric-indefinite mode) perturbed the multipliers' zero pivots into a residual of 1e12 here; the
-        multipliers' exact Schur complement needs a solve per stick row for every new factor. ``row_ids`` name the
-        rows (2·vertex + component). Returns (du, λ_{k+1})."""
-        diagonal = float(np.mean(self.systems.diagonal(K_mod)))
-        CtC = (rows.T @ rows).tocsr()
-        rho = 1e4 * diagonal / max(float(np.mean(CtC.diagonal()[CtC.diagonal() > 0.0])), 1e-300)
-        full_key = key + row_ids.tobytes() + rows.indices.tobytes()
-        augmented = self.systems.stick_system(K_mod, CtC.tocoo(), rho, full_key)
-        du = self.linear.solve(
-            augmented, rhs - rows.T @ multipliers + rho * (rows.T @ defect), tolerance, full_key, coupling
-        )
-        return du, multipliers + rho * (rows @ du - defect)
 
     def _tangent(self, upd, elastic: bool = False) -> sp.csr_matrix:
         """The consistent tangent (N/m) of the stress update ``upd``; the elastic stiffness if ``elastic``."""

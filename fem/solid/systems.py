@@ -5,7 +5,8 @@ matrices built from the consistent tangent K (:func:`fem.core.assembly.tangent_s
 
 * the **constrained** tangent, K with the rows and columns of the constrained DOFs (the clamped ones and the contact
   nodes' u_z) zeroed and a scale s on their diagonal;
-* the **stick system** K_mod + ρ CᵀC of the augmented Lagrangian of the stick rows C.
+* the **stick system** K_mod + ρ CᵀC of the augmented Lagrangian of the stick rows C, and the Newton step solved
+  with it (:meth:`TangentSystems.augmented_step`: the Uzawa update of the stick rows' multipliers).
 
 Both keep every entry of the tangent's pattern, zeros included, so that every constrained tangent has one pattern
 and every stick system of the same stick rows another: PARDISO analyses each pattern once
@@ -20,6 +21,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from fem.core.assembly import Discretised
+from fem.core.kept_factor import KeptFactor
 
 __all__ = ["TangentSystems", "union_pattern"]
 
@@ -95,3 +97,41 @@ class TangentSystems:
         data[tangent_entries] = K_mod.data
         np.add.at(data, stick_entries, rho * CtC.data)
         return sp.csr_matrix((data, indices, indptr), shape=K_mod.shape)
+
+    def augmented_step(
+        self,
+        linear: KeptFactor,
+        K_mod: sp.csr_matrix,
+        rhs: np.ndarray,
+        rows: sp.csr_matrix,
+        row_ids: np.ndarray,
+        defect: np.ndarray,
+        multipliers: np.ndarray,
+        key: bytes,
+        tolerance: float,
+        coupling,
+    ) -> tuple[np.ndarray, np.ndarray]:
+        r"""One Newton step of the stuck system [[K_mod, Cᵀ], [C, 0]] [du; λ] = [rhs; defect] as an augmented
+        Lagrangian (Uzawa) update from the multipliers λ_k of the step before:
+
+        .. math:: (K + \rho C^T C)\,du = r - C^T\lambda_k + \rho C^T d,\qquad
+                  \lambda_{k+1} = \lambda_k + \rho\,(C\,du - d).
+
+        ρ is 10⁴ × the stiffness of a DOF over the rows' own scale (the rows are scaled to unit sums, so the
+        constraint error is a length): each update gains about four digits on the multipliers, so they converge
+        alongside Newton, one solve a step. The solve (``linear``) is preconditioned by
+        the kept factor of an earlier K + ρCᵀC with the same constrained DOFs and stick rows (the penalty part is
+        then exact in the preconditioner and the Krylov method sees only the plastic points' change of tangent and
+        the slip tractions' ``coupling``), within ``tolerance`` (N). A saddle-point factorisation (PARDISO's
+        symmetric-indefinite mode) perturbed the multipliers' zero pivots into a residual of 1e12 here; the
+        multipliers' exact Schur complement needs a solve per stick row for every new factor. ``row_ids`` name the
+        rows (2·vertex + component). Returns (du, λ_{k+1})."""
+        diagonal = float(np.mean(self.diagonal(K_mod)))
+        CtC = (rows.T @ rows).tocsr()
+        rho = 1e4 * diagonal / max(float(np.mean(CtC.diagonal()[CtC.diagonal() > 0.0])), 1e-300)
+        full_key = key + row_ids.tobytes() + rows.indices.tobytes()
+        augmented = self.stick_system(K_mod, CtC.tocoo(), rho, full_key)
+        du = linear.solve(
+            augmented, rhs - rows.T @ multipliers + rho * (rows.T @ defect), tolerance, full_key, coupling
+        )
+        return du, multipliers + rho * (rows @ du - defect)
