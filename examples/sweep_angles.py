@@ -72,20 +72,12 @@ for r in rows:
 
 angle = [float(r["impact.angle_deg"]) for r in rows]
 fig, ax = plt.subplots(figsize=(5.5, 3.8))
-ax.plot(
-    angle,
-    [float(r["rebound_angle_deg"]) for r in rows],
-    "o-",
-    ms=3,
-    label="centre of the ball",
+curves = (
+    ("rebound_angle_deg", "o-", "centre of the ball"),
+    ("contact_point_rebound_angle_deg", "s-", "contact point"),
 )
-ax.plot(
-    angle,
-    [float(r["contact_point_rebound_angle_deg"]) for r in rows],
-    "s-",
-    ms=3,
-    label="contact point",
-)
+for column, style, label in curves:
+    ax.plot(angle, [float(r[column]) for r in rows], style, ms=3, label=label)
 ax.plot([0, 90], [0, 90], "k:", lw=0.8, label="rebound = impact angle")
 ax.set(xlabel="impact angle from the normal (deg)", ylabel="rebound angle (deg)")
 ax.legend()
