@@ -18,6 +18,7 @@ import numpy as np
 
 from contact import ImpactResult
 from wear.case import Case
+from wear.case.plate_cases import PlateCase
 from wear.chain.records import RepeatResult
 from wear.integrate import WearMap
 from wear.laws.impact import ImpactWear
@@ -101,13 +102,19 @@ class PlateModel:
     """A plate model of ``fem.model``, declared by the plate's own module and listed in
     :data:`wear.chain.plates.PLATES`.
 
-    ``name``: its ``fem.model``; ``prepare(case)``: the case as the model runs it (e.g. on the plate's own
+    ``declaration``: what the case schema reads of it (:class:`wear.case.plate_cases.PlateCase`: its name, its own
+    ``[fem]`` keys, its work check); ``prepare(case)``: the case as the model runs it (e.g. on the plate's own
     tangential law), a one-line ``ValueError`` first for a case it cannot run; ``couple(case, estimate, timed)``:
     the case's impact coupled to the plate from ``estimate`` (the impact on the case's own normal law), each stage
     run by ``timed``; ``repeat(case, progress, on_computed)``: ``case.repeat.impacts`` impacts at one site
     (:func:`wear.chain.repeated_impacts.repeat`)."""
 
-    name: str
+    declaration: PlateCase
     prepare: Callable[[Case], Case]
     couple: Callable[[Case, ImpactResult, Timed], PlateRun]
     repeat: Callable[..., RepeatResult]
+
+    @property
+    def name(self) -> str:
+        """Its ``fem.model`` (its declaration's name)."""
+        return self.declaration.name

@@ -39,7 +39,7 @@ from fem import CoupledImpact, PlateCycle
 from fem.axisymmetric.result import IndentationResult
 from fem.solid_coupling import SolidCoupledImpact
 from wear.case import JOBS, Case
-from wear.case.work import check_work
+from wear.case.check import check_work
 from wear.chain.estimate import estimate_impact
 from wear.chain.plate_model import PlateRun
 from wear.chain.plates import couple_plate, prepare_case
