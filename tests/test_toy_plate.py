@@ -78,20 +78,17 @@ class HalfSpaceRun:
     def regime(self, info: dict) -> str:
         return "elastic"
 
-    def peak_pressure(self) -> tuple[float | None, str]:
+    def peak_pressure(self) -> tuple[float, str]:
         return _hertz_peak(self.impact), "elastic half-space (Hertz)"
 
-    def coupling_summary(self, estimate: ImpactResult) -> dict | None:
-        return None
-
-    def summary_blocks(self) -> dict:
+    def summary_blocks(self, estimate: ImpactResult) -> dict[str, object]:
         return {}
 
     def pressure_arrays(self) -> dict[str, np.ndarray]:
         return {}
 
-    def fe_mesh(self, case: Case, pressure: PressureHistory) -> meshio.Mesh | None:
-        return None
+    def meshes(self, case: Case, pressure: PressureHistory) -> dict[str, meshio.Mesh]:
+        return {}
 
     def force_steps(self) -> list[tuple[np.ndarray, np.ndarray, str]]:
         return []

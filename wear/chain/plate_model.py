@@ -3,8 +3,9 @@ the one entry a plate declares (its checks, its coupling of a run's impact, its 
 what a run asks of the plate its impact acted on.
 
 A run and a repeat ask the plate, never which plate it is. What only some plates have (the axisymmetric start of
-the 3-D plate, its plane of incidence) is in :attr:`PlateRun.fields` under a name, absent where a plate has none, so
-that outputs and figures ask a result what it holds.
+the 3-D plate, its plane of incidence, its coupling, its FE mesh) is in a mapping under a name, absent where a plate
+has none (:attr:`PlateRun.fields`, :meth:`PlateRun.summary_blocks`, :meth:`PlateRun.meshes`), so that outputs and
+figures ask a result what it holds.
 """
 
 from __future__ import annotations
@@ -72,24 +73,24 @@ class PlateRun(Protocol):
         """The plate's regime (:data:`fem.REGIMES`, or the closed form's where there is no FE)."""
         ...
 
-    def peak_pressure(self) -> tuple[float | None, str]:
-        """(largest contact pressure (Pa) of the plate's field, None for the impact's own; its source)."""
+    def peak_pressure(self) -> tuple[float, str]:
+        """(largest contact pressure (Pa) of the plate the impact acted on: its field's, or the impact's own where it
+        has none; its source)."""
         ...
 
-    def coupling_summary(self, estimate: ImpactResult) -> dict | None:
-        """The ``coupling`` block of summary.json (None: not coupled)."""
-        ...
-
-    def summary_blocks(self) -> dict:
-        """The plate's own blocks of summary.json (``plate_3d``: the 3-D plate's; null where a plate has none)."""
+    def summary_blocks(self, estimate: ImpactResult) -> dict[str, object]:
+        """The plate's own blocks of summary.json by name, absent where it has none: ``coupling`` (the coupling it
+        ran, from ``estimate``, the impact on the case's own normal law), ``plate_3d`` (the 3-D plate's),
+        ``axisymmetric_start_regime`` (the regime of the plate a 3-D plate started from)."""
         ...
 
     def pressure_arrays(self) -> dict[str, np.ndarray]:
         """The plate's arrays of pressure.npz (SI units in the names)."""
         ...
 
-    def fe_mesh(self, case: Case, pressure: PressureHistory) -> meshio.Mesh | None:
-        """``plate_fe.vtu``: the FE plate after the impact (None without one)."""
+    def meshes(self, case: Case, pressure: PressureHistory) -> dict[str, meshio.Mesh]:
+        """The plate's own meshes by name, absent where it has none: ``plate_fe`` (the FE plate after the impact,
+        with the wear of ``pressure`` where it is axisymmetric)."""
         ...
 
     def force_steps(self) -> list[tuple[np.ndarray, np.ndarray, str]]:
