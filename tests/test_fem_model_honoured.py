@@ -16,8 +16,7 @@ import pytest
 from wear.app.cli import main
 from wear.app.sweep.spec import parse_sweep
 from wear.case import FEM_MODELS, JOBS, Case, dump_case
-from wear.case.choices import FEM_KEYS_OF_MODEL
-from wear.case.work import FE_WORK
+from wear.case.plate_cases import PLATE_CASES
 from wear.chain.calibrate import calibrate
 from wear.chain.calibration_data import read_data
 from wear.chain.plates import PLATES
@@ -115,9 +114,11 @@ def test_indent_and_repeat_summaries_name_the_plate(tmp_path, capsys):
 def test_every_plate_model_of_the_schema_has_a_plate():
     """The case schema's plate models (``fem.model``'s choices) are the chain's (wear.chain.plates.PLATES): a model
     the schema accepts has a plate to run, and a plate the chain has can be chosen; the schema's other lists of the
-    models (each model's own ``[fem]`` keys, its work check) name the same models."""
+    models (each model's declaration: its own ``[fem]`` keys, its work check) names the same models, and each
+    chain's plate takes its declaration from it."""
     assert tuple(PLATES) == FEM_MODELS
-    assert tuple(FEM_KEYS_OF_MODEL) == tuple(FE_WORK) == FEM_MODELS
+    assert tuple(PLATE_CASES) == FEM_MODELS
+    assert all(PLATES[name].declaration is PLATE_CASES[name] for name in FEM_MODELS)
 
 
 @pytest.mark.parametrize(

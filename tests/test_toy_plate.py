@@ -5,8 +5,10 @@ command line's entry (:func:`wear.app.cli.main`), asking the plate, never which 
 The plate is the elastic half-space of Hertz's closed forms (Johnson 1985, §4.2 and §11.4): the impact on the
 Hertz law is its coupled impact (no dent, restitution 1), and every impact of a repetition is the first one again,
 so that the n-th impact's total wear is n times the first's. The case schema sits below the chains and cannot read
-their registry: its lists of the plate models (``fem.model``'s choices, each job's models, the ``[fem]`` keys and
-the work check of each model) are given the new name here too.
+their registry: the plate declares what the case reads of it (its name, its ``[fem]`` keys and its work check: a
+:class:`wear.case.plate_cases.PlateCase`) beside its run, and the fixture lists it in the case's registry of the
+plates' declarations and gives the schema's lists of the model names (``fem.model``'s choices, each job's models)
+the new name too.
 """
 
 from __future__ import annotations
@@ -22,13 +24,13 @@ import numpy as np
 import pytest
 
 import contact.checks
-import wear.case.choices
+import wear.case.plate_cases
 import wear.case.schema
-import wear.case.work
 from contact import ImpactResult, effective_modulus
 from contact.theory import hertz_impact, sphere_mass
 from wear.app.cli import main
 from wear.case import JOBS, Case, dump_case
+from wear.case.plate_cases import PlateCase
 from wear.chain.axisymmetric_run import impact_wear
 from wear.chain.estimate import estimate_impact
 from wear.chain.plate_model import PlateModel, Timed, Wear
@@ -76,20 +78,17 @@ class HalfSpaceRun:
     def regime(self, info: dict) -> str:
         return "elastic"
 
-    def peak_pressure(self) -> tuple[float | None, str]:
+    def peak_pressure(self) -> tuple[float, str]:
         return _hertz_peak(self.impact), "elastic half-space (Hertz)"
 
-    def coupling_summary(self, estimate: ImpactResult) -> dict | None:
-        return None
-
-    def summary_blocks(self) -> dict:
+    def summary_blocks(self, estimate: ImpactResult) -> dict[str, object]:
         return {}
 
     def pressure_arrays(self) -> dict[str, np.ndarray]:
         return {}
 
-    def fe_mesh(self, case: Case, pressure: PressureHistory) -> meshio.Mesh | None:
-        return None
+    def meshes(self, case: Case, pressure: PressureHistory) -> dict[str, meshio.Mesh]:
+        return {}
 
     def force_steps(self) -> list[tuple[np.ndarray, np.ndarray, str]]:
         return []
@@ -167,8 +166,13 @@ def _repeat(case, progress=None, on_computed=None) -> RepeatResult:
     return RepeatResult(case, records, HalfSpaceState(), total, 1, 1, 0.0)
 
 
-#: The half-space plate model: its one line in the registry.
-HALFSPACE = PlateModel(NAME, _prepare, _couple, _repeat)
+def _no_fe_work(case: Case, job: str) -> None:
+    """The closed forms: no FE work to refuse."""
+
+
+#: The half-space plate model: its one line in the registry, and what the case reads of it (no ``[fem]`` key of its
+#: own, no FE work).
+HALFSPACE = PlateModel(PlateCase(NAME, (), _no_fe_work), _prepare, _couple, _repeat)
 
 
 @pytest.fixture
@@ -183,8 +187,7 @@ def halfspace(monkeypatch):
     monkeypatch.setattr(wear.case.schema, "check_choice", with_halfspace)
     for job in ("run", "repeat"):
         monkeypatch.setitem(JOBS, job, dataclasses.replace(JOBS[job], fem_models=(*JOBS[job].fem_models, NAME)))
-    monkeypatch.setitem(wear.case.choices.FEM_KEYS_OF_MODEL, NAME, ())
-    monkeypatch.setitem(wear.case.work.FE_WORK, NAME, lambda case, job: None)  # closed forms: no FE work
+    monkeypatch.setitem(wear.case.plate_cases.PLATE_CASES, NAME, HALFSPACE.declaration)
 
 
 def _case(tmp_path, repeat: str = "") -> str:

@@ -4,11 +4,11 @@ key, its value and what the job accepts)."""
 from __future__ import annotations
 
 from wear.case.case import Case
-from wear.case.choices import FEM_KEYS_OF_MODEL
 from wear.case.jobs import JOBS
-from wear.case.work import check_work
+from wear.case.plate_cases import PLATE_CASES
+from wear.case.work import check_wear_grid
 
-__all__ = ["FEM_KEYS_OF_COUPLING", "on_plate", "check_job_case", "fem_keys_read"]
+__all__ = ["FEM_KEYS_OF_COUPLING", "on_plate", "check_job_case", "check_work", "fem_keys_read"]
 
 #: The ``[fem]`` keys each coupling reads, besides ``fem.model`` and ``fem.coupling``.
 FEM_KEYS_OF_COUPLING: dict[str, tuple[str, ...]] = {
@@ -19,11 +19,11 @@ FEM_KEYS_OF_COUPLING: dict[str, tuple[str, ...]] = {
 
 
 def on_plate(case: Case, model: str, job: str = "run") -> Case:
-    """``case`` on the plate ``model`` (one of ``fem.model``'s): the keys only the other plate models read
-    (:data:`wear.case.choices.FEM_KEYS_OF_MODEL`) back to ``job``'s defaults, as :func:`check_job_case` refuses
-    them at other values."""
+    """``case`` on the plate ``model`` (one of ``fem.model``'s): the keys only the other plate models read (their
+    :attr:`wear.case.plate_cases.PlateCase.fem_keys`) back to ``job``'s defaults, as :func:`check_job_case`
+    refuses them at other values."""
     default = JOBS[job].default_case().fem
-    others = {key for other, keys in FEM_KEYS_OF_MODEL.items() if other != model for key in keys}
+    others = {key for other, plate in PLATE_CASES.items() if other != model for key in plate.fem_keys}
     return case.with_(fem={"model": model, **{key: getattr(default, key) for key in sorted(others)}})
 
 
@@ -33,15 +33,27 @@ def fem_keys_read(case: Case, job: str) -> tuple[tuple[str, ...], str]:
     if spec.fem_keys:
         return spec.fem_keys, f"impactwear {job} reads only fem.{', fem.'.join(spec.fem_keys)}"
     coupling = spec.fem_coupling or case.fem.coupling
-    keys = ("model", "coupling", *FEM_KEYS_OF_COUPLING[coupling], *FEM_KEYS_OF_MODEL[case.fem.model])
-    if FEM_KEYS_OF_MODEL[case.fem.model]:
+    own = PLATE_CASES[case.fem.model].fem_keys
+    keys = ("model", "coupling", *FEM_KEYS_OF_COUPLING[coupling], *own)
+    if own:
         return keys, f"impactwear {job} on the plate fem.model={case.fem.model!r} does not read it"
     if coupling == "none":
         return keys, "with fem.coupling='none' there is no FE plate"
     if coupling == "one-way":
         return keys, f"the one-way coupling reads only fem.{', fem.'.join(FEM_KEYS_OF_COUPLING['one-way'])}"
-    readers = [repr(m) for m, own in FEM_KEYS_OF_MODEL.items() if own]
+    readers = [repr(m) for m, plate in PLATE_CASES.items() if plate.fem_keys]
     return keys, f"only the plate fem.model={' or '.join(readers)} reads it"
+
+
+def check_work(case: Case, job: str) -> None:
+    """Refuse ``case`` for ``job`` (``run``, ``repeat`` or ``indent``; other jobs are not estimated here) if its wear
+    grid (:func:`wear.case.work.check_wear_grid`) or its plate (its declaration's
+    :attr:`wear.case.plate_cases.PlateCase.check_work`) would need more memory or time than the budget: a one-line
+    ``ValueError`` naming the key, its value, the estimate and the value of the key that fits (of the keys behind
+    the FE time, the first the case changed from the job's default)."""
+    check_wear_grid(case, job)
+    if job in ("run", "repeat", "indent"):
+        PLATE_CASES[case.fem.model].check_work(case, job)
 
 
 def check_job_case(case: Case, job: str) -> Case:
@@ -50,7 +62,7 @@ def check_job_case(case: Case, job: str) -> Case:
     that a model it would not run is refused, never ignored; a ``[fem]`` key the job would not read for this case
     (:func:`fem_keys_read`) is refused at any value but the job's default; a job that always runs one coupling
     refuses another ``fem.coupling``; work past the memory or time budget is refused
-    (:func:`wear.case.work.check_work`)."""
+    (:func:`check_work`)."""
     spec = JOBS[job]
     if "fem" in spec.tables and case.fem.model not in spec.fem_models:
         accepted = " or ".join(repr(m) for m in spec.fem_models)

@@ -39,7 +39,9 @@ __all__ = [
     "REPEAT_BLOCK_PASS",
     "REPEAT_SEAT_FACTOR",
     "SECONDS_PER_ELEMENT_STEP",
-    "check_work",
+    "check_axisymmetric_work",
+    "check_solid_work",
+    "check_wear_grid",
     "fe_elements",
     "fe_memory",
     "fe_seconds",
@@ -171,11 +173,11 @@ def _passes(case: Case, job: str) -> tuple[int, str]:
     return (1, "one FE pass") if case.fem.coupling == "one-way" else (0, "")
 
 
-def check_work(case: Case, job: str) -> None:
-    """Refuse ``case`` for ``job`` (``run``, ``repeat`` or ``indent``; other jobs are not estimated here) if its wear
-    grid or its axisymmetric FE plate would need more memory or time than the budget: a one-line ``ValueError``
-    naming the key, its value, the estimate and the value of the key that fits (of the keys behind the FE time, the
-    first the case changed from the job's default)."""
+def check_wear_grid(case: Case, job: str) -> None:
+    """Refuse ``case`` for ``job`` if its wear grid would need more memory than the budget (a ``run`` or a
+    ``repeat``; other jobs have none): a one-line ``ValueError`` naming ``wear.points_across``, its value, the
+    estimate and the value that fits. The plate's own work is its declaration's check
+    (:attr:`wear.case.plate_cases.PlateCase.check_work`)."""
     if job in ("run", "repeat"):
         points = case.wear.points_across
         check_budget(
@@ -185,18 +187,19 @@ def check_work(case: Case, job: str) -> None:
             what="the wear grid and its outputs",
             valid=(40, points),
         )
-    if job not in ("run", "repeat", "indent"):
-        return
-    FE_WORK[case.fem.model](case, job)
 
 
-def _changed_first(keys: list, job: str) -> list:
-    """``keys`` ((name, value, …) tuples) with the keys the case changed from ``job``'s default first."""
+def _check_time(keys: list, job: str, what: str) -> None:
+    """Refuse the FE time past the budget, naming the first of ``keys`` ((name, value, FE time as a function of it,
+    cheap end of its range)) the case changed from ``job``'s default, then the others in their order."""
     default = default_case(job).to_dict()
-    return sorted(keys, key=lambda k: k[1] == default[k[0].split(".")[0]][k[0].split(".")[1]])
+    for name, value, need, cheap in sorted(keys, key=lambda k: k[1] == default[k[0].split(".")[0]][k[0].split(".")[1]]):
+        increasing = name != "fem.mesh_scale"
+        valid = (cheap, value) if increasing else (value, cheap)
+        check_budget(name, value, need, what=what, valid=valid, memory=False, increasing=increasing, integer=increasing)
 
 
-def _check_solid_work(case: Case, job: str) -> None:
+def check_solid_work(case: Case, job: str) -> None:
     """Refuse a 3-D plate run or repeat past the time budget (module docstring), naming the first key the case
     changed of those behind the estimate."""
     if job == "indent":
@@ -215,13 +218,10 @@ def _check_solid_work(case: Case, job: str) -> None:
         f"~{solid_elements(scale):.3g} 3-D elements x {load + unload} increments x {min(cycles, SOLID_CYCLES)} "
         f"plate cycles x {impacts} impact{'s' if impacts > 1 else ''}"
     )
-    for name, value, need, cheap in _changed_first(keys, job):
-        increasing = name != "fem.mesh_scale"
-        valid = (cheap, value) if increasing else (value, cheap)
-        check_budget(name, value, need, what=what, valid=valid, memory=False, increasing=increasing, integer=increasing)
+    _check_time(keys, job, what)
 
 
-def _check_axisymmetric_work(case: Case, job: str) -> None:
+def check_axisymmetric_work(case: Case, job: str) -> None:
     """Refuse an axisymmetric FE plate past the memory or time budget (module docstring)."""
     passes, how = _passes(case, job)
     if passes == 0:
@@ -264,14 +264,4 @@ def _check_axisymmetric_work(case: Case, job: str) -> None:
     elif job == "run" and f.coupling == "two-way":
         keys.insert(0, ("fem.max_iterations", passes, lambda n: fe_seconds(scale, load + unload, int(n)), 1))
     what = f"~{elements:.3g} FE elements x {load + unload} increments x {passes} {how}"
-    for name, value, need, cheap in _changed_first(keys, job):
-        increasing = name != "fem.mesh_scale"
-        valid = (cheap, value) if increasing else (value, cheap)
-        check_budget(name, value, need, what=what, valid=valid, memory=False, increasing=increasing, integer=increasing)
-
-
-#: The FE work check of each plate model (``fem.model``).
-FE_WORK: dict[str, Callable[[Case, str], None]] = {
-    "axisymmetric": _check_axisymmetric_work,
-    "3d": _check_solid_work,
-}
+    _check_time(keys, job, what)

@@ -5,6 +5,7 @@
 from __future__ import annotations
 
 from wear.case import Case
+from wear.case.plate_cases import AXISYMMETRIC_CASE
 from wear.chain.axisymmetric_repeat import axisymmetric_repeat
 from wear.chain.axisymmetric_run import on_axisymmetric_plate
 from wear.chain.plate_model import PlateModel
@@ -18,4 +19,4 @@ def _as_given(case: Case) -> Case:
 
 
 #: The axisymmetric plate model.
-AXISYMMETRIC = PlateModel("axisymmetric", _as_given, on_axisymmetric_plate, axisymmetric_repeat)
+AXISYMMETRIC = PlateModel(AXISYMMETRIC_CASE, _as_given, on_axisymmetric_plate, axisymmetric_repeat)

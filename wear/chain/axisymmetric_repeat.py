@@ -71,12 +71,13 @@ from wear.chain.check import halfspace_check
 from wear.chain.estimate import estimate_impact
 from wear.chain.plate import case_plate, coupling_settings, impact_on_law
 from wear.chain.records import ComputedImpact, ImpactRecord, RepeatResult, yield_strain
-from wear.chain.wear_accumulator import WearAccumulator
+from wear.chain.repeat_loop import SiteImpact, repeat_at_site
 from wear.integrate import WearMap, implausible_wear
 
 __all__ = [
     "AZIMUTHS",
     "CONTACT_GROWTH",
+    "AxisymmetricSite",
     "ComputedImpact",
     "ImpactRecord",
     "RepeatResult",
@@ -156,150 +157,100 @@ def impact_on_plate(
     return ComputedImpact(coupled, wm, profile)
 
 
+class AxisymmetricSite:
+    """The axisymmetric FE plate at the site of a repetition (:class:`wear.chain.repeat_loop.RepeatSite`; module
+    docstring): one :class:`fem.Plate` meshed for the case's first impact, its axis at the contact centre of the
+    first impact's maximum overlap, moved by the azimuthally averaged wear of each computed impact."""
+
+    cycle_jump = True
+    about: tuple[str, ...] = ()
+
+    def __init__(self, case: Case):
+        ball, plate = case.ball.material(), case.plate.material()
+        if plate.is_rigid:
+            raise ValueError("plate.rigid=true: repeated impacts need a deformable FE plate (set plate.rigid = false)")
+        self.case = case
+        estimate = estimate_impact(case)
+        mesh_overlap = (1.0 + case.fem.overshoot) * estimate.max_overlap
+        # the wear displacement fades over about one contact radius: the top element rows keep their shape for worn
+        # depths up to a fraction of it (the run stops at half of it, see room)
+        taper = fem.estimate_contact_radius(case.ball.radius, effective_modulus(ball, plate), plate, mesh_overlap)
+        self.plate = case_plate(case, mesh_overlap, growth=CONTACT_GROWTH, taper_depth=taper)
+        self.wear_limit = 0.5 * self.plate.taper_depth
+        h = estimate.history
+        self.axis_x = float(h.contact_x[int(np.argmax(h.overlap))])
+        self.tolerance = case.repeat.shakedown_tolerance * yield_strain(case)
+        self.expected = estimate.max_overlap
+        self.last: ComputedImpact | None = None
+        self.met: tuple[np.ndarray, np.ndarray] = ()
+
+    def compute(self, shaken: bool, done: int) -> SiteImpact:
+        fe_plate, case = self.plate, self.case
+        alpha_before = fe_plate.state.alpha
+        self.met = (fe_plate.dent_depth.copy(), fe_plate.wear_depth.copy())
+        # a shaken-down plate answers elastically: no plastic problem to solve unless the elastic field yields
+        attempt = None
+        if shaken and case.repeat.elastic_after_shakedown:
+            attempt = impact_on_plate(case, fe_plate, self.expected, self.axis_x, yield_tolerance=self.tolerance)
+        last = attempt or impact_on_plate(case, fe_plate, self.expected, self.axis_x)
+        self.last, self.expected = last, last.impact.max_overlap
+        coupled = last.coupled
+        increment = coupled.trial_increment if coupled.elastic else float(np.max(fe_plate.state.alpha - alpha_before))
+        profile_max = float(last.wear_profile.max())
+        return SiteImpact(
+            impact=last.impact,
+            wear=last.wear,
+            increment=increment,
+            max_pressure=coupled.max_pressure,
+            contact_radius=coupled.contact_radius,
+            first_contact=coupled.first_contact,
+            plastic_work=coupled.plastic_work,
+            elastic=coupled.elastic,
+            surface_change=profile_max,
+            peak_to_mean=last.wear.max_depth_m / profile_max if profile_max > 0 else 1.0,
+            pressure_at=coupled.peak_pressure_at,
+        )
+
+    def first_notes(self, first: SiteImpact) -> list[str]:
+        ball_mass = sphere_mass(self.case.ball.radius, self.case.ball.material().density)
+        return implausible_wear(first.wear, first.contact_radius, ball_mass)
+
+    def room(self) -> tuple[float, str]:
+        why = (
+            f"the worn depth would exceed {self.wear_limit:.3g} m, half the depth over which the FE mesh's nodes "
+            "follow the wear (about the contact radius); beyond it the small-strain FE plate and its moved mesh are "
+            "not valid"
+        )
+        return self.wear_limit - float(self.plate.wear_depth.max()), why
+
+    def move_surface(self, count: int) -> None:
+        self.plate.move_surface(count * self.last.wear_profile)
+
+    def state_fields(self, total: WearMap) -> dict[str, float]:
+        fe_plate = self.plate
+        return {
+            "max_plastic_strain": float(fe_plate.state.alpha.max()),
+            "dent_depth": float(fe_plate.dent_depth.max()),
+            "surface_depth": float(np.max(fe_plate.dent_depth + fe_plate.wear_depth)),
+            "pile_up_height": max(float(np.max(-fe_plate.dent_depth)), 0.0),
+        }
+
+    def finish(self, result: RepeatResult) -> RepeatResult:
+        result = replace(result, axis_x=self.axis_x, met_surface=self.met)
+        return replace(
+            result,
+            halfspace_check=halfspace_check(result),
+            wear_depth_over_taper=float(self.plate.wear_depth.max() / self.plate.taper_depth),
+        )
+
+
 def axisymmetric_repeat(
     case: Case,
     progress: Callable[[int, int], None] | None = None,
     on_computed: Callable[[int, fem.Plate], None] | None = None,
 ) -> RepeatResult:
     """Run ``case.repeat.impacts`` impacts of ``case`` at one spot on the axisymmetric plate (see the module
-    docstring); ``progress`` and ``on_computed`` as :func:`wear.chain.repeated_impacts.repeat`."""
-    spec = case.repeat
-    ball, plate = case.ball.material(), case.plate.material()
-    if plate.is_rigid:
-        raise ValueError("plate.rigid=true: repeated impacts need a deformable FE plate (set plate.rigid = false)")
+    docstring; :func:`wear.chain.repeat_loop.repeat_at_site`); ``progress`` and ``on_computed`` as
+    :func:`wear.chain.repeated_impacts.repeat`."""
     t_start = time.perf_counter()
-    estimate = estimate_impact(case)
-    mesh_overlap = (1.0 + case.fem.overshoot) * estimate.max_overlap
-    # the wear displacement fades over about one contact radius: the top element rows keep their shape for worn
-    # depths up to a fraction of it (the run stops at half of it, see below)
-    taper = fem.estimate_contact_radius(case.ball.radius, effective_modulus(ball, plate), plate, mesh_overlap)
-    fe_plate = case_plate(case, mesh_overlap, growth=CONTACT_GROWTH, taper_depth=taper)
-    wear_limit = 0.5 * fe_plate.taper_depth
-    h = estimate.history
-    axis_x = float(h.contact_x[int(np.argmax(h.overlap))])
-    tolerance = spec.shakedown_tolerance * yield_strain(case)
-    records: list[ImpactRecord] = []
-    notes: list[str] = []
-    acc = None
-    done, computed, shakedown, plastic_run = 0, 0, None, 0
-    last = None
-    shaken = False
-    stop = False  # the first impact alone wears deeper than the limit
-    gave_up = False  # no shakedown within max_plastic_impacts: blocks go on, one computed impact between them
-    last_increment = 0.0
-    d_est = estimate.max_overlap
-    while done < spec.impacts:
-        if last is None or not (shaken or gave_up) or records[-1].kind == "block":
-            kind, count = "computed", 1
-        else:
-            kind = "block"
-            count = spec.impacts - done
-            change = float(last.wear_profile.max())
-            if spec.geometry_update and change > 0.0:
-                approach = last.impact.max_overlap  # from first contact: a²/R on a flat, less on a seat
-                count = max(1, min(count, int(spec.surface_fraction * approach / change)))
-        t_row = time.perf_counter()
-        if kind == "computed":
-            alpha_before = fe_plate.state.alpha
-            met = (fe_plate.dent_depth.copy(), fe_plate.wear_depth.copy())
-            # a shaken-down plate answers elastically: no plastic problem to solve unless the elastic field yields
-            attempt = None
-            if shaken and spec.elastic_after_shakedown:
-                attempt = impact_on_plate(case, fe_plate, d_est, axis_x, yield_tolerance=tolerance)
-            last = attempt or impact_on_plate(case, fe_plate, d_est, axis_x)
-            d_est = last.impact.max_overlap
-            computed += 1
-            coupled = last.coupled
-            increment = (
-                coupled.trial_increment if coupled.elastic else float(np.max(fe_plate.state.alpha - alpha_before))
-            )
-            shaken = increment <= tolerance
-            if shaken and shakedown is None:
-                shakedown = done + 1
-            plastic_run = 0 if shaken else plastic_run + 1
-            last_increment = increment
-            if not shaken and not gave_up and plastic_run >= spec.max_plastic_impacts:
-                notes.append(
-                    f"no shakedown after {plastic_run} impacts computed one by one (Δᾱ = {increment:.3g} > "
-                    f"{tolerance:.3g}): from impact {done + 2} on, cycle-jump blocks extrapolate the last computed "
-                    "impact's wear anyway (one computed impact between blocks; the plastic strain increments of "
-                    "block impacts are not added to the FE plate)"
-                )
-                gave_up = True
-        else:
-            # shaken down: elastic response; after giving up: the last computed impact's increment, per impact
-            increment = 0.0 if shaken else last_increment
-        step_depth = float(last.wear_profile.max())
-        if spec.geometry_update and step_depth > 0.0:
-            room = wear_limit - float(fe_plate.wear_depth.max())
-            if count * step_depth > room:
-                count = int(room / step_depth)
-                if count < 1:
-                    notes.append(
-                        f"stopped after impact {max(done, 1)}: the worn depth would exceed {wear_limit:.3g} m, half "
-                        "the depth over which the FE mesh's nodes follow the wear (about the contact radius);"
-                        " beyond it the small-strain FE plate and its moved mesh are not valid"
-                    )
-                    if records:
-                        break
-                    # the first impact alone wears deeper: it is reported, on the surface it met, and the run ends
-                    count, stop = 1, True
-        if acc is None:
-            ball_mass = sphere_mass(case.ball.radius, ball.density)
-            notes.extend(implausible_wear(last.wear, last.coupled.contact_radius, ball_mass))
-            acc = WearAccumulator(last.wear)
-        acc.add(last.wear, count)
-        if spec.geometry_update and not stop:
-            fe_plate.move_surface(count * last.wear_profile)
-        done += count
-        total = acc.map()
-        imp = last.impact
-        profile_max = float(last.wear_profile.max())
-        records.append(
-            ImpactRecord(
-                first=done - count + 1,
-                last=done,
-                count=count,
-                kind=kind,
-                normal_restitution=imp.normal_restitution,
-                max_force=imp.max_force,
-                max_pressure=last.coupled.max_pressure,
-                contact_radius=last.coupled.contact_radius,
-                max_overlap=imp.max_overlap,
-                first_contact_overlap=last.coupled.first_contact,
-                plastic_strain_increment=increment,
-                wear_volume=last.wear.volume_m3,
-                wear_max_depth=last.wear.max_depth_m,
-                max_plastic_strain=float(fe_plate.state.alpha.max()),
-                dent_depth=float(fe_plate.dent_depth.max()),
-                total_wear_volume=total.volume_m3,
-                total_wear_max_depth=total.max_depth_m,
-                surface_depth=float(np.max(fe_plate.dent_depth + fe_plate.wear_depth)),
-                wear_peak_to_mean=last.wear.max_depth_m / profile_max if profile_max > 0 else 1.0,
-                shaken_down=bool(shaken),
-                max_pressure_at_first_force=last.coupled.peak_pressure_at(
-                    records[0].max_force if records else imp.max_force
-                ),
-                elastic_response=last.coupled.elastic,
-                pile_up_height=max(float(np.max(-fe_plate.dent_depth)), 0.0),
-                plastic_work=last.coupled.plastic_work if kind == "computed" or not shaken else 0.0,
-                tangential_restitution=imp.tangential_restitution,
-                wall_time=time.perf_counter() - t_row,
-            )
-        )
-        if kind == "computed" and on_computed is not None:
-            on_computed(done, fe_plate)
-        if progress is not None:
-            progress(done, spec.impacts)
-        if stop:
-            break
-    if shakedown is None:
-        notes.append(f"no impact without new plastic strain (tolerance Δᾱ <= {tolerance:.3g})")
-    result = RepeatResult(
-        case, records, fe_plate, acc.map(), shakedown, computed, time.perf_counter() - t_start, notes, axis_x, met
-    )
-    return replace(
-        result,
-        halfspace_check=halfspace_check(result),
-        wear_depth_over_taper=float(fe_plate.wear_depth.max() / fe_plate.taper_depth),
-    )
+    return repeat_at_site(AxisymmetricSite(case), case, t_start, progress, on_computed)

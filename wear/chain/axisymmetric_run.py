@@ -100,20 +100,17 @@ class NoPlateRun:
             return "elastic"
         return "elastic" if self.impact.max_force < info["F_c_exact"] else "plastic (no FE: regime not resolved)"
 
-    def peak_pressure(self) -> tuple[float | None, str]:
-        return None, f"normal law {self.impact.normal_model!r}"
+    def peak_pressure(self) -> tuple[float, str]:
+        return self.impact.max_peak_pressure, f"normal law {self.impact.normal_model!r}"
 
-    def coupling_summary(self, estimate: ImpactResult) -> dict | None:
-        return None
-
-    def summary_blocks(self) -> dict:
+    def summary_blocks(self, estimate: ImpactResult) -> dict[str, object]:
         return {}
 
     def pressure_arrays(self) -> dict[str, np.ndarray]:
         return {}
 
-    def fe_mesh(self, case: Case, pressure: PressureHistory) -> meshio.Mesh | None:
-        return None
+    def meshes(self, case: Case, pressure: PressureHistory) -> dict[str, meshio.Mesh]:
+        return {}
 
     def force_steps(self) -> list[tuple[np.ndarray, np.ndarray, str]]:
         return []
@@ -157,14 +154,14 @@ class AxisymmetricRun:
             return worst_regime(self.fe.regime)
         return NoPlateRun(self.impact).regime(info)
 
-    def peak_pressure(self) -> tuple[float | None, str]:
+    def peak_pressure(self) -> tuple[float, str]:
         return float(np.max(self.fe.pressure)), "FE plate"
 
-    def coupling_summary(self, estimate: ImpactResult) -> dict | None:
+    def summary_blocks(self, estimate: ImpactResult) -> dict[str, object]:
         c = self.coupled
-        if c is None:
-            return None
-        return {
+        if c is None:  # one-way: the plate along the impact, not coupled to it
+            return {}
+        coupling = {
             "plate": "axisymmetric",
             "iterations": c.iterations,
             "final_change": c.change,
@@ -173,9 +170,7 @@ class AxisymmetricRun:
             "estimate_model": estimate.normal_model,
             "estimate_max_overlap_m": estimate.max_overlap,
         }
-
-    def summary_blocks(self) -> dict:
-        return {}
+        return {"coupling": coupling}
 
     def pressure_arrays(self) -> dict[str, np.ndarray]:
         if self.coupled is None:
@@ -183,7 +178,10 @@ class AxisymmetricRun:
         ft, fr, fp = self.coupled.pressure_table
         return {"fe_time_s": ft, "fe_surface_r_m": fr, "fe_pressure_Pa": fp}
 
-    def fe_mesh(self, case: Case, pressure: PressureHistory) -> meshio.Mesh | None:
+    def meshes(self, case: Case, pressure: PressureHistory) -> dict[str, meshio.Mesh]:
+        return {"plate_fe": self._fe_mesh(case, pressure)}
+
+    def _fe_mesh(self, case: Case, pressure: PressureHistory) -> meshio.Mesh:
         """The FE plate after the impact: points (r, z, 0) m, point data ``u`` (m) and ``max_pressure`` (Pa: the
         largest contact pressure each surface node carried during the impact — after the rebound the pressure itself
         is 0), cell data ``von_mises`` (Pa) and ``equivalent_plastic_strain``. Where the contact centre never moves

@@ -23,7 +23,7 @@ from contact.theory import PAPER_YIELD_COEFFICIENT, FirstYield, first_yield, her
 from fem import IndentationResult
 from fem.axisymmetric.result import join
 from wear.case import Case
-from wear.case.work import check_work
+from wear.case.check import check_work
 from wear.chain.plate import case_mesh
 
 __all__ = ["IndentRun", "indent_case", "largest_force", "DEFAULT_YIELD_MULTIPLE", "DEFAULT_ELASTIC_OVERLAP"]

@@ -3,8 +3,9 @@ the one entry a plate declares (its checks, its coupling of a run's impact, its 
 what a run asks of the plate its impact acted on.
 
 A run and a repeat ask the plate, never which plate it is. What only some plates have (the axisymmetric start of
-the 3-D plate, its plane of incidence) is in :attr:`PlateRun.fields` under a name, absent where a plate has none, so
-that outputs and figures ask a result what it holds.
+the 3-D plate, its plane of incidence, its coupling, its FE mesh) is in a mapping under a name, absent where a plate
+has none (:attr:`PlateRun.fields`, :meth:`PlateRun.summary_blocks`, :meth:`PlateRun.meshes`), so that outputs and
+figures ask a result what it holds.
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ import numpy as np
 
 from contact import ImpactResult
 from wear.case import Case
+from wear.case.plate_cases import PlateCase
 from wear.chain.records import RepeatResult
 from wear.integrate import WearMap
 from wear.laws.impact import ImpactWear
@@ -71,24 +73,24 @@ class PlateRun(Protocol):
         """The plate's regime (:data:`fem.REGIMES`, or the closed form's where there is no FE)."""
         ...
 
-    def peak_pressure(self) -> tuple[float | None, str]:
-        """(largest contact pressure (Pa) of the plate's field, None for the impact's own; its source)."""
+    def peak_pressure(self) -> tuple[float, str]:
+        """(largest contact pressure (Pa) of the plate the impact acted on: its field's, or the impact's own where it
+        has none; its source)."""
         ...
 
-    def coupling_summary(self, estimate: ImpactResult) -> dict | None:
-        """The ``coupling`` block of summary.json (None: not coupled)."""
-        ...
-
-    def summary_blocks(self) -> dict:
-        """The plate's own blocks of summary.json (``plate_3d``: the 3-D plate's; null where a plate has none)."""
+    def summary_blocks(self, estimate: ImpactResult) -> dict[str, object]:
+        """The plate's own blocks of summary.json by name, absent where it has none: ``coupling`` (the coupling it
+        ran, from ``estimate``, the impact on the case's own normal law), ``plate_3d`` (the 3-D plate's),
+        ``axisymmetric_start_regime`` (the regime of the plate a 3-D plate started from)."""
         ...
 
     def pressure_arrays(self) -> dict[str, np.ndarray]:
         """The plate's arrays of pressure.npz (SI units in the names)."""
         ...
 
-    def fe_mesh(self, case: Case, pressure: PressureHistory) -> meshio.Mesh | None:
-        """``plate_fe.vtu``: the FE plate after the impact (None without one)."""
+    def meshes(self, case: Case, pressure: PressureHistory) -> dict[str, meshio.Mesh]:
+        """The plate's own meshes by name, absent where it has none: ``plate_fe`` (the FE plate after the impact,
+        with the wear of ``pressure`` where it is axisymmetric)."""
         ...
 
     def force_steps(self) -> list[tuple[np.ndarray, np.ndarray, str]]:
@@ -101,13 +103,19 @@ class PlateModel:
     """A plate model of ``fem.model``, declared by the plate's own module and listed in
     :data:`wear.chain.plates.PLATES`.
 
-    ``name``: its ``fem.model``; ``prepare(case)``: the case as the model runs it (e.g. on the plate's own
+    ``declaration``: what the case schema reads of it (:class:`wear.case.plate_cases.PlateCase`: its name, its own
+    ``[fem]`` keys, its work check); ``prepare(case)``: the case as the model runs it (e.g. on the plate's own
     tangential law), a one-line ``ValueError`` first for a case it cannot run; ``couple(case, estimate, timed)``:
     the case's impact coupled to the plate from ``estimate`` (the impact on the case's own normal law), each stage
     run by ``timed``; ``repeat(case, progress, on_computed)``: ``case.repeat.impacts`` impacts at one site
     (:func:`wear.chain.repeated_impacts.repeat`)."""
 
-    name: str
+    declaration: PlateCase
     prepare: Callable[[Case], Case]
     couple: Callable[[Case, ImpactResult, Timed], PlateRun]
     repeat: Callable[..., RepeatResult]
+
+    @property
+    def name(self) -> str:
+        """Its ``fem.model`` (its declaration's name)."""
+        return self.declaration.name

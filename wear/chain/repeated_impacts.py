@@ -1,6 +1,7 @@
 """Repeated impacts of the same ball at the same spot, each on the plate the previous ones left: the entry point over
 the plate models (``fem.model``, :data:`wear.chain.plates.PLATES`), each repeating on its own plate
-(:attr:`wear.chain.plate_model.PlateModel.repeat`). SI units; the repetition's settings are ``case.repeat``
+(:attr:`wear.chain.plate_model.PlateModel.repeat`; the FE plates through the one loop of
+:func:`wear.chain.repeat_loop.repeat_at_site`). SI units; the repetition's settings are ``case.repeat``
 (:class:`wear.case.RepeatSpec`).
 """
 

@@ -39,7 +39,7 @@ from fem import CoupledImpact, PlateCycle
 from fem.axisymmetric.result import IndentationResult
 from fem.solid_coupling import SolidCoupledImpact
 from wear.case import JOBS, Case
-from wear.case.work import check_work
+from wear.case.check import check_work
 from wear.chain.estimate import estimate_impact
 from wear.chain.plate_model import PlateRun
 from wear.chain.plates import couple_plate, prepare_case
@@ -59,6 +59,9 @@ __all__ = [
 
 #: Steps of :func:`run`, in order, as its progress reports them (the output writer adds "meshes" and "figures").
 STEPS = ("impact", "fem", "coupling", "plate3d", "wear", "surface")
+#: The plate's blocks of summary.json that it always holds, null where the plate has none
+#: (:meth:`wear.chain.plate_model.PlateRun.summary_blocks`); the plate's other blocks are there only where it has them.
+SUMMARY_PLATE_BLOCKS = ("coupling", "plate_3d")
 
 
 @dataclass(frozen=True, eq=False)
@@ -131,14 +134,11 @@ class RunResult:
         impact = {k: getattr(imp, k) for k in names}
         # the pressure of the plate the impact acted on: the FE's where there is one (its contact pressure field),
         # else the normal law's (the Hertz-type 3F/(2πa²) would overstate a plastic contact's by up to 1.5x)
-        peak, source = self.plate.peak_pressure()
-        if peak is not None:
-            impact["max_peak_pressure"] = peak
-        impact["max_peak_pressure_source"] = source
+        impact["max_peak_pressure"], impact["max_peak_pressure_source"] = self.plate.peak_pressure()
         impact["units"] = "s, N, m, Pa, m/s, rad/s, deg"
         w = self.wear
         dent = self.surface.dent_dimensions()
-        blocks = self.plate.summary_blocks()
+        blocks = self.plate.summary_blocks(self.estimate)
         return {
             "case": self.case.to_dict(JOBS["run"].tables),
             "fem_model": self.fem_model,
@@ -146,7 +146,7 @@ class RunResult:
             "yield": dict(self.yield_info),
             "regime": self.regime,
             "regime_plate": self.fem_model,
-            **{k: v for k, v in blocks.items() if k != "plate_3d"},
+            **{k: v for k, v in blocks.items() if k not in SUMMARY_PLATE_BLOCKS},
             "wear": {
                 "volume_m3": w.volume_m3,
                 "mass_kg": w.mass_kg,
@@ -167,8 +167,7 @@ class RunResult:
                 "pile_up_m": dent.pile_up,
                 "model": self.fem_model or "axisymmetric",
             },
-            "coupling": self.plate.coupling_summary(self.estimate),
-            "plate_3d": blocks.get("plate_3d"),
+            **{k: blocks.get(k) for k in SUMMARY_PLATE_BLOCKS},
             "stage_times_s": dict(self.stage_times),
         }
 

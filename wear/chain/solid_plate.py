@@ -4,6 +4,7 @@
 
 from __future__ import annotations
 
+from wear.case.plate_cases import SOLID_CASE
 from wear.chain.plate_model import PlateModel
 from wear.chain.solid_repeat import solid_repeat
 from wear.chain.solid_run import on_solid_plate, prepare_solid_case
@@ -11,4 +12,4 @@ from wear.chain.solid_run import on_solid_plate, prepare_solid_case
 __all__ = ["SOLID"]
 
 #: The 3-D plate model.
-SOLID = PlateModel("3d", prepare_solid_case, on_solid_plate, solid_repeat)
+SOLID = PlateModel(SOLID_CASE, prepare_solid_case, on_solid_plate, solid_repeat)

@@ -41,6 +41,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable
+from dataclasses import replace
 
 import numpy as np
 
@@ -53,12 +54,13 @@ from wear.chain.axisymmetric_run import on_axisymmetric_plate
 from wear.chain.estimate import estimate_impact
 from wear.chain.plate import impact_on_law
 from wear.chain.plate_model import untimed
-from wear.chain.records import ImpactRecord, RepeatResult, yield_strain
+from wear.chain.records import RepeatResult
+from wear.chain.repeat_loop import SiteImpact, repeat_at_site
 from wear.chain.solid import check_solid_case, solid_case, solid_settings, solid_wear
-from wear.chain.wear_accumulator import WearAccumulator
+from wear.integrate import WearMap
 from wear.solid_wear import solid_dent_depth
 
-__all__ = ["MAX_SOLID_IMPACTS", "check_solid_repeat", "solid_repeat"]
+__all__ = ["MAX_SOLID_IMPACTS", "SolidSite", "check_solid_repeat", "solid_repeat"]
 
 #: ``repeat`` keys that only steer the cycle jump, the elastic shortcut or the moved surface of the axisymmetric plate.
 _AXISYMMETRIC_ONLY = ("surface_fraction", "max_plastic_impacts", "elastic_after_shakedown", "wear_smoothing")
@@ -109,102 +111,99 @@ def _pressure_at_force(coupled: SolidCoupledImpact, force: float) -> float:
     return float(np.interp(force, f, solid.max_pressure[:upto]))
 
 
+class SolidSite:
+    """The 3-D plate at the site of a repetition (:class:`wear.chain.repeat_loop.RepeatSite`; module docstring):
+    one :class:`fem.solid.plate.SolidPlate` meshed as the single chain's first 3-D cycle, every impact computed."""
+
+    cycle_jump = False
+
+    def __init__(self, case: Case):
+        self.case = case
+        ball, material = case.ball.material(), case.plate.material()
+        self.settings = settings = solid_settings(case)
+        self.start = start = _first_impact(case)
+        # the mesh of the single chain's first 3-D cycle (module docstring)
+        path = impact_path(start, settings.load_steps, settings.unload_steps)
+        probe = (1.0 + settings.overshoot) * float(path.overlap[path.peak])
+        track = (float(np.min(path.centre)), float(np.max(path.centre)))
+        self.plate = SolidPlate(
+            case.ball.radius,
+            material,
+            probe,
+            track,
+            case.impact.friction,
+            None if ball.is_rigid else ball,
+            0.0,
+            settings.contact_elements,
+            settings.box_depth,
+        )
+        self.flight = math.tan(math.radians(case.impact.angle))  # V_t/V_n of the incoming ball
+        self.on_law = impact_on_law(case)
+        self.axis_x: float | None = None
+        self.coupled: SolidCoupledImpact | None = None
+        self.wear: WearMap | None = None
+        moved = "moves the plate's surface" if case.repeat.geometry_update else "is accumulated beside the plate"
+        self.about = (f"fem.model='3d': every impact computed on the 3-D plate (no cycle jump); the wear {moved}",)
+
+    def compute(self, shaken: bool, done: int) -> SiteImpact:
+        plate, case = self.plate, self.case
+        alpha_before = plate.state.alpha
+        offset = plate.first_contact_overlap(0.0) * self.flight
+        coupled = couple_solid_plate(self.on_law, self.start, plate, self.settings, offset)
+        if done + 1 < case.repeat.impacts:
+            self.start = _next_start(self.on_law, coupled)
+        wm = solid_wear(case, coupled)[1]
+        if self.axis_x is None:
+            self.axis_x = float(coupled.solid.centre[coupled.path.peak])
+        self.coupled, self.wear = coupled, wm
+        solid = coupled.solid
+        return SiteImpact(
+            impact=coupled.impact,
+            wear=wm,
+            increment=float(np.max(plate.state.alpha - alpha_before, initial=0.0)),
+            max_pressure=float(np.max(solid.max_pressure)),
+            contact_radius=float(np.max(solid.contact_radius)),
+            first_contact=coupled.first_contact,
+            plastic_work=coupled.plastic_work,
+            elastic=False,
+            surface_change=wm.max_depth_m,
+            peak_to_mean=1.0,
+            pressure_at=lambda force: _pressure_at_force(coupled, force),
+        )
+
+    def first_notes(self, first: SiteImpact) -> list[str]:
+        return []
+
+    def room(self) -> tuple[float, str]:
+        return math.inf, "the 3-D plate's surface follows any wear"
+
+    def move_surface(self, count: int) -> None:
+        xy = self.plate.surface_xy
+        self.plate.move_surface(count * self.wear.depth_at(xy[:, 0], xy[:, 1]))
+
+    def state_fields(self, total: WearMap) -> dict[str, float]:
+        plate = self.plate
+        dent = solid_dent_depth(self.coupled.field, total.x, total.y)
+        return {
+            "max_plastic_strain": float(np.max(plate.state.alpha)),
+            "dent_depth": plate.dent_depth,
+            "surface_depth": float(np.max(dent.T + total.depth)),
+            "pile_up_height": plate.pile_up_height,
+        }
+
+    def finish(self, result: RepeatResult) -> RepeatResult:
+        return replace(result, axis_x=self.axis_x)
+
+
 def solid_repeat(
     case: Case,
     progress: Callable[[int, int], None] | None = None,
     on_computed: Callable[[int, SolidPlate], None] | None = None,
 ) -> RepeatResult:
-    """Run ``case.repeat.impacts`` impacts of ``case`` at one site on the 3-D plate (module docstring).
-    ``progress(done, total)`` and ``on_computed(impact_number, plate)`` after each impact."""
+    """Run ``case.repeat.impacts`` impacts of ``case`` at one site on the 3-D plate (module docstring;
+    :func:`wear.chain.repeat_loop.repeat_at_site`). ``progress(done, total)`` and ``on_computed(impact_number,
+    plate)`` after each impact."""
     check_solid_repeat(case)
     case = solid_case(case)
     t_start = time.perf_counter()
-    ball, material = case.ball.material(), case.plate.material()
-    settings = solid_settings(case)
-    start = _first_impact(case)
-    # the mesh of the single chain's first 3-D cycle (module docstring)
-    path = impact_path(start, settings.load_steps, settings.unload_steps)
-    probe = (1.0 + settings.overshoot) * float(path.overlap[path.peak])
-    track = (float(np.min(path.centre)), float(np.max(path.centre)))
-    plate = SolidPlate(
-        case.ball.radius,
-        material,
-        probe,
-        track,
-        case.impact.friction,
-        None if ball.is_rigid else ball,
-        0.0,
-        settings.contact_elements,
-        settings.box_depth,
-    )
-    angle = math.radians(case.impact.angle)
-    flight = math.tan(angle)  # V_t/V_n of the incoming ball
-    tolerance = case.repeat.shakedown_tolerance * yield_strain(case)
-    on_law = impact_on_law(case)
-    records: list[ImpactRecord] = []
-    acc, shakedown, axis_x = None, None, 0.0
-    for n in range(1, case.repeat.impacts + 1):
-        t0 = time.perf_counter()
-        alpha_before = plate.state.alpha
-        offset = plate.first_contact_overlap(0.0) * flight
-        coupled = couple_solid_plate(on_law, start, plate, settings, offset)
-        imp = coupled.impact
-        if n < case.repeat.impacts:
-            start = _next_start(on_law, coupled)
-        wm = solid_wear(case, coupled)[1]
-        if case.repeat.geometry_update:
-            xy = plate.surface_xy
-            plate.move_surface(wm.depth_at(xy[:, 0], xy[:, 1]))
-        if acc is None:
-            acc = WearAccumulator(wm)
-            axis_x = float(coupled.solid.centre[coupled.path.peak])
-        acc.add(wm, 1)
-        total = acc.map()
-        increment = float(np.max(plate.state.alpha - alpha_before, initial=0.0))
-        shaken = increment <= tolerance
-        if shaken and shakedown is None:
-            shakedown = n
-        dent = solid_dent_depth(coupled.field, total.x, total.y)
-        solid = coupled.solid
-        records.append(
-            ImpactRecord(
-                first=n,
-                last=n,
-                count=1,
-                kind="computed",
-                normal_restitution=imp.normal_restitution,
-                max_force=imp.max_force,
-                max_pressure=float(np.max(solid.max_pressure)),
-                contact_radius=float(np.max(solid.contact_radius)),
-                max_overlap=imp.max_overlap,
-                first_contact_overlap=coupled.first_contact,
-                plastic_strain_increment=increment,
-                wear_volume=wm.volume_m3,
-                wear_max_depth=wm.max_depth_m,
-                max_plastic_strain=float(np.max(plate.state.alpha)),
-                dent_depth=plate.dent_depth,
-                total_wear_volume=total.volume_m3,
-                total_wear_max_depth=total.max_depth_m,
-                surface_depth=float(np.max(dent.T + total.depth)),
-                wear_peak_to_mean=1.0,
-                shaken_down=bool(shaken),
-                max_pressure_at_first_force=_pressure_at_force(
-                    coupled, records[0].max_force if records else imp.max_force
-                ),
-                pile_up_height=plate.pile_up_height,
-                plastic_work=coupled.plastic_work,
-                tangential_restitution=imp.tangential_restitution,
-                wall_time=time.perf_counter() - t0,
-            )
-        )
-        if on_computed is not None:
-            on_computed(n, plate)
-        if progress is not None:
-            progress(n, case.repeat.impacts)
-    moved = "moves the plate's surface" if case.repeat.geometry_update else "is accumulated beside the plate"
-    notes = [f"fem.model='3d': every impact computed on the 3-D plate (no cycle jump); the wear {moved}"]
-    if shakedown is None:
-        notes.append(f"no impact without new plastic strain (tolerance Δᾱ <= {tolerance:.3g})")
-    return RepeatResult(
-        case, records, plate, acc.map(), shakedown, case.repeat.impacts, time.perf_counter() - t_start, notes, axis_x
-    )
+    return repeat_at_site(SolidSite(case), case, t_start, progress, on_computed)

@@ -77,13 +77,13 @@ class SolidRun:
     def regime(self, info: dict) -> str:
         return "elastic" if np.max(self.coupled.solid.max_equivalent_plastic_strain) == 0.0 else SOLID_PLASTIC_REGIME
 
-    def peak_pressure(self) -> tuple[float | None, str]:
+    def peak_pressure(self) -> tuple[float, str]:
         return float(np.max(self.coupled.solid.max_pressure)), "3-D FE plate"
 
-    def coupling_summary(self, estimate: ImpactResult) -> dict | None:
+    def summary_blocks(self, estimate: ImpactResult) -> dict[str, object]:
         # the coupling of the plate the impact ran on; the axisymmetric one it started from is kept inside
         s = self.coupled
-        return {
+        coupling = {
             "plate": "3d",
             "iterations": s.iterations,
             "final_change": s.change,
@@ -91,11 +91,13 @@ class SolidRun:
             "max_overlaps_m": list(s.max_overlaps),
             "start": "the axisymmetric coupled impact",
             "start_max_overlap_m": s.max_overlaps[0],
-            "axisymmetric_start": self.start.coupling_summary(estimate),
+            "axisymmetric_start": self.start.summary_blocks(estimate).get("coupling"),
         }
-
-    def summary_blocks(self) -> dict:
-        return {"axisymmetric_start_regime": worst_regime(self.start.fe.regime), "plate_3d": self._summary()}
+        return {
+            "axisymmetric_start_regime": worst_regime(self.start.fe.regime),
+            "coupling": coupling,
+            "plate_3d": self._summary(),
+        }
 
     def _summary(self) -> dict:
         """The 3-D plate's block of summary.json (SI units)."""
@@ -135,8 +137,8 @@ class SolidRun:
             "fe3d_slip_m": s.slip,
         }
 
-    def fe_mesh(self, case: Case, pressure: PressureHistory) -> meshio.Mesh | None:
-        return self.coupled.solid.to_meshio()
+    def meshes(self, case: Case, pressure: PressureHistory) -> dict[str, meshio.Mesh]:
+        return {"plate_fe": self.coupled.solid.to_meshio()}
 
     def force_steps(self) -> list[tuple[np.ndarray, np.ndarray, str]]:
         steps = self.coupled.solid

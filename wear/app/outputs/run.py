@@ -123,9 +123,8 @@ def write_run(
             write_mesh(tmp / "plate.vtu", deform_plate_mesh(user, result.surface))
         else:
             write_mesh(tmp / "plate.vtu", plate_block_mesh(result.surface, case.output.block_thickness))
-        plate_fe = result.plate.fe_mesh(case, result.pressure)
-        if plate_fe is not None:
-            write_mesh(tmp / "plate_fe.vtu", plate_fe)
+        for name, mesh in result.plate.meshes(case, result.pressure).items():
+            write_mesh(tmp / f"{name}.vtu", mesh)
         times["meshes"] = time.perf_counter() - t0
         if case.output.figures:
             notify("figures")
