@@ -77,7 +77,7 @@ BYTES_PER_WEAR_CELL = 620.0
 SOLID_ELEMENTS = 640.0
 #: 3-D plate wall time per element and planned increment of one plate cycle (s): the default oblique impact (μ 0.3,
 #: 30°, k = 4: 10196 elements, 10 + 6 increments) took 528 s on idle cores for two cycles, 1.6e-3 s
-#: (docs/benchmarks.md); its repeated impacts 391 s each (1.2e-3 s). With μ = 0.5 a cycle took 3–7 times as long
+#: (docs/benchmarks-record.md); its repeated impacts 391 s each (1.2e-3 s). With μ = 0.5 a cycle took 3–7 times as long
 #: (docs/fem-record.md).
 SOLID_SECONDS_PER_ELEMENT_STEP = 1.6e-3
 #: 3-D plate cycles counted per impact: the most measured over 0/30/60° × μ 0/0.3/0.5 (docs/fem-record.md), whatever
