@@ -16,7 +16,7 @@ from matplotlib.ticker import MaxNLocator
 from matplotlib.tri import CubicTriInterpolator, Triangulation, UniformTriRefiner
 
 from contact.theory import hertz_pressure, mesarovic_johnson_pressure, thornton_restitution
-from wear.app.figures.common import place_legends, save_figure, subplots
+from wear.app.figures.common import place_legends, plain_log_ticks, save_figure, subplots
 from wear.app.figures.field import cell_field_on_nodes, refine_grid
 
 __all__ = [
@@ -169,6 +169,9 @@ def restitution_comparison(speed_ratio, coupled_restitution, path, thornton=None
     axd.axhline(0.0, color="k", lw=0.5)
     axd.set_xlabel("V_n / V_y")
     axd.set_ylabel("FE − Thornton (%)")
+    # the axes share x; under a decade matplotlib would label every minor tick (1.6×10⁰, 1.7×10⁰, ... on top of
+    # each other): the ratios themselves then, else 1, 2, 5 × 10ⁿ (ratios close on a wide axis would collide)
+    plain_log_ticks(axd.xaxis, x, few=8 if np.log10(x.max() / x.min()) < 1.0 else 0)
     fig.tight_layout()
     return save_figure(fig, path)
 
