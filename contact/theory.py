@@ -251,6 +251,19 @@ def yield_velocity(radius: float, ball: Material, plate: Material, limiting_pres
 
     for a ball of ``radius`` (m) and mass m = 4/3 π R³ ρ_ball. ``limiting_pressure`` p_y (Pa)
     defaults to C(ν)·Y of the body that yields first.
+
+    Examples
+    --------
+    A 5 mm steel ball (E = 210 GPa, ν = 0.3, Y = 1 GPa) on a rigid plate: E* = E/(1 − ν²), p_y = C(ν)·Y with
+    C(0.3) = 1.613 (Johnson 1985, §6.2); the closed form above, evaluated by hand:
+
+    >>> import math
+    >>> from contact import Material
+    >>> steel = Material(E=210e9, nu=0.3, density=7800.0, yield_strength=1e9)
+    >>> v_y = yield_velocity(5e-3, steel, Material.rigid())
+    >>> p_y, e_star = yield_coefficient(0.3) * 1e9, 210e9 / (1 - 0.3**2)
+    >>> bool(abs(v_y / (1.56 * math.sqrt(p_y**5 / (e_star**4 * 7800.0))) - 1) < 1e-3)
+    True
     """
     radius = check_number("radius", radius, low=0.0, low_open=True, high=10.0, units="m", what="ball radius")
     if limiting_pressure is None:
@@ -272,6 +285,16 @@ def thornton_restitution(speed_ratio):
             \left[\frac{V_y/V_i}{V_y/V_i + 2\sqrt{\tfrac65 - \tfrac15 (V_y/V_i)^2}}\right]^{1/4}
 
     Returns 1 for ratios ≤ 1 (elastic impact).
+
+    Examples
+    --------
+    Elastic up to V_y; at V_i = 10 V_y (V_y/V_i = 0.1) the formula above by hand gives 0.659, and for V_i ≫ V_y it
+    tends to (6√3/5)^½ (V_y/(2√1.2 V_i))^¼ = 1.185 (V_y/V_i)^¼ (Thornton 1997):
+
+    >>> [round(float(e), 3) for e in thornton_restitution([0.5, 1.0, 10.0])]
+    [1.0, 1.0, 0.659]
+    >>> round(float(thornton_restitution(1e6) / (1.185 * 1e-6**0.25)), 2)
+    1.0
     """
     x = np.asarray(speed_ratio, dtype=float)
     y = 1.0 / np.maximum(x, 1.0)
