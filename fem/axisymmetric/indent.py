@@ -325,6 +325,29 @@ def indent(
     hardening of the plate (0 = perfectly plastic). ``keep_states`` keeps every converged state so
     :meth:`IndentationResult.unload_from` can restart from them. ``rtol``: Newton stops when the
     free residual is below ``rtol`` × the contact reactions (2-norms, N).
+
+    Examples
+    --------
+    A rigid 10 mm ball pressed to 3 times the closed-form first-yield overlap into a steel plate (Y = 1 GPa), on a
+    coarse mesh (16 elements across the largest contact radius): elastic at first, with Hertz's force
+    F = 4/3 E* √R δ^(3/2) (Johnson 1985, Eq. 4.23), then yield starts within 2 % of the force of
+    :func:`contact.theory.first_yield` (errata Eq. 18) and the plastic zone stays below the surface:
+
+    >>> import numpy as np
+    >>> from contact import Material, effective_modulus
+    >>> from contact.theory import first_yield, hertz_force
+    >>> plate = Material(E=210e9, nu=0.3, density=7850.0, yield_strength=1e9)
+    >>> e_star = effective_modulus(Material.rigid(), plate)
+    >>> fy = first_yield(10e-3, e_star, 1e9, 0.3)
+    >>> path = fy.overlap * np.linspace(0.25, 3.0, 12)  # m
+    >>> mesh = plate_mesh(10e-3, plate, float(path.max()), contact_elements=16, yield_elements=0)
+    >>> result = indent(10e-3, plate, path, mesh=mesh)
+    >>> bool(abs(result.force[0] / hertz_force(path[0], 10e-3, e_star) - 1) < 0.01)
+    True
+    >>> bool(abs(result.first_yield.force / fy.force - 1) < 0.02)
+    True
+    >>> result.regime[0], result.regime[-1]
+    ('elastic', 'contained')
     """
     radius = check_number("radius", radius, low=1e-6, high=10.0, units="m", what="ball radius")
     path = _check_path(overlaps)
