@@ -28,6 +28,16 @@ class Case:
     ``Case()`` is the default case of ``impactwear run`` (:mod:`wear.case.jobs` gives every job's default);
     :meth:`from_dict` lays tables of values over a base case (keys left out keep the base's values), checking every
     key; :meth:`with_` replaces some keys.
+
+    Examples
+    --------
+    Replacing one key keeps every other key of the base case; a case is frozen, so the base is unchanged:
+
+    >>> case = Case().with_(impact={"speed": 2.0, "angle": 45.0})
+    >>> case.impact.speed, case.impact.angle, case.impact.friction == Case().impact.friction, Case().impact.speed
+    (2.0, 45.0, True, 3.0)
+    >>> case.ball.material() == Case().ball.material()  # the contact.Material of [ball]
+    True
     """
 
     ball: BallSpec = field(default_factory=BallSpec)

@@ -39,8 +39,28 @@ __all__ = [
 
 
 def parse_case(text: str, job: str = "run", source: str = "case", name: str = "case") -> Case:
-    """The case in the TOML ``text`` laid over ``job``'s default case (``name``=``source`` names the text in
-    errors)."""
+    r"""The case in the TOML ``text`` laid over ``job``'s default case (``name``=``source`` names the text in
+    errors).
+
+    Examples
+    --------
+    The keys given replace those of the job's default case (``impactwear impact``'s here), the text written by
+    :func:`dump_case` reads back as the same case, and a mistyped key or a table a job needs is named:
+
+    >>> case = parse_case("[impact]\nspeed = 2.0  # m/s\n", job="impact")
+    >>> case.impact.speed, case.impact.angle == default_case("impact").impact.angle
+    (2.0, True)
+    >>> parse_case(dump_case(case), job="impact") == case
+    True
+    >>> parse_case("[impact]\nsped = 2.0\n", job="impact")
+    Traceback (most recent call last):
+    ...
+    ValueError: impact.sped is not a known key (did you mean impact.speed?): keys of [impact] are speed, ...
+    >>> parse_case("[impact]\nspeed = 2.0\n")  # job="run"
+    Traceback (most recent call last):
+    ...
+    ValueError: [ball] is missing from case='case': a run case needs [ball], [plate], [impact], [wear]
+    """
     data = read_toml(text, source, name)
     # every key is checked before a missing table is named: a mistyped table or key would otherwise be reported
     # as the table it was meant to be
@@ -89,7 +109,25 @@ def _given_twice(text: str) -> str:
 
 
 def load_case(path: str | os.PathLike | None, job: str = "run", name: str = "case") -> Case:
-    """The case in the TOML file ``path`` (None: ``job``'s default case); ``name`` names the file in errors."""
+    r"""The case in the TOML file ``path`` (None: ``job``'s default case); ``name`` names the file in errors.
+
+    Examples
+    --------
+    A case file written in a temporary folder reads back as the case it holds; no file is the job's default case:
+
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     path = Path(folder) / "case.toml"
+    ...     _ = path.write_text("[impact]\nangle = 30.0  # deg\n", encoding="utf-8")
+    ...     case = load_case(path, job="impact")
+    >>> case == default_case("impact").with_(impact={"angle": 30.0}), load_case(None) == default_case("run")
+    (True, True)
+    >>> load_case("no-such-case.toml")
+    Traceback (most recent call last):
+    ...
+    ValueError: case='no-such-case.toml': no such file
+    """
     if path is None:
         return default_case(job)
     return parse_case(read_toml_text(path, name), job, str(Path(path)), name)
