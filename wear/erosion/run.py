@@ -221,7 +221,33 @@ def erode_case(
 
 def erode_angles(case: Case, angles: list[float], progress: bool = False) -> list[ErosionRun]:
     """One erosion of ``case`` per stream angle (deg), on one patch for every angle: ``erosion.patch_size``, or the
-    grid resolving the smallest nominal contact (the most oblique stream)."""
+    grid resolving the smallest nominal contact (the most oblique stream).
+
+    Examples
+    --------
+    Silica sand (radius 150 µm) at 20 m/s on carbon steel under DNV-RP-O501's law, on a small patch (128² cells,
+    0.4 mm) for a short exposure: the plate stays nearly flat, so each angle's erosion rate (kg/kg) is the law's
+    closed form E = K U^n F(α), F(α) = 0.6 (sin α + 7.2 (sin α − sin²α))^0.6 (1 − e^(−20α)) with α the angle from
+    the surface (DNV-RP-O501, 2015), written out here:
+
+    >>> import math
+    >>> from wear.case import default_case
+    >>> case = default_case("erode").with_(
+    ...     ball={"radius": 150e-6, "E": 94e9, "nu": 0.17, "density": 2650.0, "name": "silica sand"},
+    ...     plate={"E": 200e9, "nu": 0.3, "density": 7850.0, "yield_strength": 350e6, "hardness": 1.4e9},
+    ...     impact={"speed": 20.0, "friction": 0.3},
+    ...     wear={"law": "dnv", "dnv_K": 2e-9, "dnv_n": 2.6},
+    ...     erosion={"grid": 128, "patch_size": 4e-4, "exposure_time": 1.0, "samples": 2, "frames": 1,
+    ...              "table_speeds": 3, "angle_step": 5.0, "angle_margin": 10.0},
+    ... )
+    >>> runs = erode_angles(case, [30.0, 60.0])  # deg from the normal
+    >>> def dnv(theta):
+    ...     a = math.radians(90.0 - theta)
+    ...     return 2e-9 * 20.0**2.6 * 0.6 * (math.sin(a) + 7.2 * (math.sin(a) - math.sin(a) ** 2)) ** 0.6 * (
+    ...         1.0 - math.exp(-20.0 * a))
+    >>> [bool(abs(run.result.final_erosion_rate / dnv(angle) - 1) < 5e-3) for run, angle in zip(runs, [30.0, 60.0])]
+    [True, True]
+    """
     for a in angles:
         _stream_angle(case, a)
     _check_budget(case, angles)
