@@ -245,7 +245,7 @@ def erode_angles(case: Case, angles: list[float], progress: bool = False) -> lis
     ...     a = math.radians(90.0 - theta)
     ...     return 2e-9 * 20.0**2.6 * 0.6 * (math.sin(a) + 7.2 * (math.sin(a) - math.sin(a) ** 2)) ** 0.6 * (
     ...         1.0 - math.exp(-20.0 * a))
-    >>> [bool(abs(run.result.final_erosion_rate / dnv(angle) - 1) < 5e-3) for run, angle in zip(runs, [30.0, 60.0])]
+    >>> [bool(abs(run.result.final_erosion_rate / dnv(run.result.stream.angle) - 1) < 5e-3) for run in runs]
     [True, True]
     """
     for a in angles:
