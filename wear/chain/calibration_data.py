@@ -62,8 +62,28 @@ def _number(text: str, column: str, row: int) -> float:
 
 
 def read_data(path: str | os.PathLike) -> CalibrationData:
-    """Read and check a data file (CSV with a header row; see the module docstring). Errors are one line naming
-    the file, the column and the row (rows counted from 1 after the header)."""
+    r"""Read and check a data file (CSV with a header row; see the module docstring). Errors are one line naming
+    the file, the column and the row (rows counted from 1 after the header).
+
+    Examples
+    --------
+    A table written in a temporary folder: the row without a measured value is kept, to be predicted, not fitted;
+    a cell that is not a number is named by its column and row:
+
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     path = Path(folder) / "data.csv"
+    ...     _ = path.write_text("angle_deg,speed_m_s,erosion_kg_per_kg\n30,20,1e-5\n60,20,1.2e-5\n45,30,\n")
+    ...     data = read_data(path)
+    ...     _ = path.write_text("angle_deg,speed_m_s,erosion_kg_per_kg\n30,fast,1e-5\n")
+    ...     read_data(path)
+    Traceback (most recent call last):
+    ...
+    ValueError: data='...data.csv': speed_m_s='fast' in row 1 is not a number
+    >>> data.quantity, data.angle.tolist(), data.speed.tolist(), data.fitted.tolist()
+    ('erosion_kg_per_kg', [30.0, 60.0, 45.0], [20.0, 20.0, 30.0], [True, True, False])
+    """
     p = Path(path)
     rows = _read_rows(p)
     header, body = [h.strip() for h in rows[0]], [r for r in rows[1:] if any(c.strip() for c in r)]
