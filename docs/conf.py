@@ -124,7 +124,9 @@ if not _switch("IMPACTWEAR_DOCS_INTERSPHINX", default=False):
 
 html_theme = "furo"
 html_title = f"impactwear {release}"
-html_static_path: list[str] = []
+html_static_path = ["_static"]
+# printed output wrapped on screen rather than scrolling sideways (docs/_static/impactwear.css says why)
+html_css_files = ["impactwear.css"]
 
 # ---------------------------------------------------------------------------------------------------------------
 # Generated pages: commands and case keys. An import failure stops the build: these pages must not go stale.
